@@ -1,0 +1,181 @@
+// ray-footprint: ray cones, an isotropic pixel footprint carried along a ray.
+//
+// Library module for GLSL 460 (no main): #include "ray_cone.glsl". Twin of
+// shaders/wgsl/ray_cone.wgsl and the Rust mirror src/ray_cone.rs: same functions, same order, same
+// order of operations. Formulas and sources are documented in src/ray_cone.rs; "RTG Eq. N" is
+// Ray Tracing Gems ch. 20 (Akenine-Moller et al. 2019), "JCGT 2021" is "Improved Shader and Texture
+// Level of Detail Using Ray Cones".
+//
+// width is the full footprint diameter, spread_angle the full cone angle; normals and directions are
+// unit length. Divergent cases are clamped with the RF_ constants: finite inputs give finite outputs.
+
+#ifndef RAY_FOOTPRINT_RAY_CONE_GLSL
+#define RAY_FOOTPRINT_RAY_CONE_GLSL
+
+// Smallest |cos| between a normal and a direction used as a divisor (grazing-angle clamp).
+const float RF_MIN_COS = 1.0e-4;
+// Smallest magnitude passed to log2 or used as a divisor.
+const float RF_MIN_MAGNITUDE = 1.0e-20;
+// Largest vertical field of view in radians.
+const float RF_MAX_FOV_Y = 3.1;
+// Largest finite f16; packed cone values are clamped to [-RF_F16_MAX, RF_F16_MAX].
+const float RF_F16_MAX = 65504.0;
+
+// A ray cone (8 bytes): footprint width at the ray origin and full spread angle (RTG Sec. 20.3.4).
+struct RfRayCone {
+    float width;
+    float spread_angle;
+};
+
+// Packs a cone as two f16 (width low, spread high), clamped to the f16 range.
+uint rf_pack_ray_cone(RfRayCone cone) {
+    vec2 values = vec2(cone.width, cone.spread_angle);
+    return packHalf2x16(clamp(values, vec2(-RF_F16_MAX), vec2(RF_F16_MAX)));
+}
+
+// Unpacks a cone packed by rf_pack_ray_cone.
+RfRayCone rf_unpack_ray_cone(uint packed) {
+    vec2 values = unpackHalf2x16(packed);
+    return RfRayCone(values.x, values.y);
+}
+
+// 2 tan(fov_y / 2) / H with fov_y clamped to [0, RF_MAX_FOV_Y] and H to >= 1.
+float rf_pixel_tan_ratio(float fov_y, float image_height) {
+    return 2.0 * tan(0.5 * clamp(fov_y, 0.0, RF_MAX_FOV_Y)) / max(image_height, 1.0);
+}
+
+// Exact pixel spread angle of a pinhole camera (RTG Eq. 30): atan(2 tan(fov_y / 2) / H).
+float rf_pixel_spread_angle(float fov_y, float image_height) {
+    return atan(rf_pixel_tan_ratio(fov_y, image_height));
+}
+
+// Small-angle pixel spread angle: 2 tan(fov_y / 2) / H.
+float rf_pixel_spread_angle_small(float fov_y, float image_height) {
+    return rf_pixel_tan_ratio(fov_y, image_height);
+}
+
+// Exact pixel spread angle from an inverse projection matrix: tan(fov_y / 2) = |proj_inv[1][1]|.
+float rf_pixel_spread_angle_from_proj_inv(mat4 proj_inv, float image_height) {
+    return atan(2.0 * abs(proj_inv[1][1]) / max(image_height, 1.0));
+}
+
+// Primary cone of a pinhole camera: width 0, spread = pixel spread angle.
+RfRayCone rf_pinhole_ray_cone(float pixel_spread_angle) {
+    return RfRayCone(0.0, pixel_spread_angle);
+}
+
+// Primary cone of an orthographic camera view_height world units tall: width = one pixel, spread 0.
+RfRayCone rf_orthographic_ray_cone(float view_height, float image_height) {
+    return RfRayCone(view_height / max(image_height, 1.0), 0.0);
+}
+
+// Primary cone of a thin lens: width = aperture, spread = alpha - aperture / focus_distance.
+RfRayCone rf_thin_lens_ray_cone(float pixel_spread_angle, float aperture, float focus_distance) {
+    return RfRayCone(aperture, pixel_spread_angle - aperture / max(focus_distance, RF_MIN_MAGNITUDE));
+}
+
+// Cone width after travelling t: width + spread_angle * t (RTG Eq. 35).
+float rf_width_at(RfRayCone cone, float t) {
+    return cone.width + cone.spread_angle * t;
+}
+
+// The cone leaving a hit at distance t with surface spread angle beta (RTG Eq. 35); also the
+// reflected cone (unslanted width, so a planar mirror acts as a mirror-image camera).
+RfRayCone rf_propagate(RfRayCone cone, float t, float surface_spread_angle) {
+    return RfRayCone(rf_width_at(cone, t), cone.spread_angle + surface_spread_angle);
+}
+
+// sqrt(dn_dx.dn_dx + dn_dy.dn_dy).
+float rf_normal_derivative_length(vec3 dn_dx, vec3 dn_dy) {
+    return sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy));
+}
+
+// Normal spread across a pixel (RTG Eq. 31-32): 2 atan(0.5 sqrt(dn_dx.dn_dx + dn_dy.dn_dy)).
+float rf_normal_spread_angle(vec3 dn_dx, vec3 dn_dy) {
+    return 2.0 * atan(0.5 * rf_normal_derivative_length(dn_dx, dn_dy));
+}
+
+// Small-angle normal spread: sqrt(dn_dx.dn_dx + dn_dy.dn_dy).
+float rf_normal_spread_angle_small(vec3 dn_dx, vec3 dn_dy) {
+    return rf_normal_derivative_length(dn_dx, dn_dy);
+}
+
+// Convex (1) or concave (-1) (RTG Eq. 33): sign(dp_dx.dn_dx + dp_dy.dn_dy), sign(0) = -1.
+float rf_curvature_sign(vec3 dp_dx, vec3 dp_dy, vec3 dn_dx, vec3 dn_dy) {
+    return dot(dp_dx, dn_dx) + dot(dp_dy, dn_dy) > 0.0 ? 1.0 : -1.0;
+}
+
+// Surface spread angle (RTG Eq. 32): 2 k1 s phi + k2.
+float rf_surface_spread_angle(float normal_spread_angle, float curvature_sign, float k1, float k2) {
+    return 2.0 * k1 * curvature_sign * normal_spread_angle + k2;
+}
+
+// Edge curvature from vertex normals (JCGT 2021): (n_j - n_i).(p_j - p_i) / max(|p_j - p_i|^2, min).
+float rf_edge_curvature(vec3 p_i, vec3 p_j, vec3 n_i, vec3 n_j) {
+    vec3 edge = p_j - p_i;
+    return dot(n_j - n_i, edge) / max(dot(edge, edge), RF_MIN_MAGNITUDE);
+}
+
+// Triangle curvature: mean of the three edge curvatures (JCGT 2021).
+float rf_triangle_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2) {
+    return (rf_edge_curvature(p0, p1, n0, n1) + rf_edge_curvature(p1, p2, n1, n2)
+        + rf_edge_curvature(p2, p0, n2, n0)) / 3.0;
+}
+
+// Reflection spread from curvature (JCGT 2021): 2 k |width| / max(|n.d|, RF_MIN_COS).
+float rf_curvature_spread_angle(float curvature, float width, vec3 normal, vec3 direction) {
+    return 2.0 * curvature * abs(width) / max(abs(dot(normal, direction)), RF_MIN_COS);
+}
+
+// Slant-corrected world footprint: |width + spread t| / max(|n.d|, RF_MIN_COS).
+float rf_world_footprint(RfRayCone cone, float t, vec3 normal, vec3 direction) {
+    return abs(rf_width_at(cone, t)) / max(abs(dot(normal, direction)), RF_MIN_COS);
+}
+
+// Twice the world-space triangle area: |cross(p1 - p0, p2 - p0)| (RTG Eq. 4), measured as
+// m * |c / m| with m the largest component (>= RF_MIN_MAGNITUDE) so squaring cannot overflow.
+float rf_triangle_world_area2(vec3 p0, vec3 p1, vec3 p2) {
+    vec3 c = cross(p1 - p0, p2 - p0);
+    float scale = max(max(abs(c.x), abs(c.y)), max(abs(c.z), RF_MIN_MAGNITUDE));
+    return scale * length(c / scale);
+}
+
+// Twice the UV-space triangle area: |cross(uv1 - uv0, uv2 - uv0)| (RTG Eq. 4).
+float rf_triangle_uv_area2(vec2 uv0, vec2 uv1, vec2 uv2) {
+    vec2 e1 = uv1 - uv0;
+    vec2 e2 = uv2 - uv0;
+    return abs(e1.x * e2.y - e1.y * e2.x);
+}
+
+// Texel density, UV units per world unit: sqrt(uv_area2) / sqrt(max(world_area2, min)).
+float rf_texel_density(vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec2 uv2) {
+    return sqrt(rf_triangle_uv_area2(uv0, uv1, uv2))
+        / sqrt(max(rf_triangle_world_area2(p0, p1, p2), RF_MIN_MAGNITUDE));
+}
+
+// Base LOD in UV units (RTG Eq. 4): 0.5 (log2(uv_area2) - log2(world_area2)), areas clamped.
+float rf_triangle_base_lod(vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec2 uv2) {
+    float uv_area2 = max(rf_triangle_uv_area2(uv0, uv1, uv2), RF_MIN_MAGNITUDE);
+    float world_area2 = max(rf_triangle_world_area2(p0, p1, p2), RF_MIN_MAGNITUDE);
+    return 0.5 * (log2(uv_area2) - log2(world_area2));
+}
+
+// Texture LOD (RTG Eq. 34): base_lod + log2|width| + 0.5 (log2 W + log2 H) - log2|n.d|, clamped.
+float rf_texture_lod(float base_lod, float width, vec2 texture_size, vec3 normal, vec3 direction) {
+    vec2 size = max(texture_size, vec2(1.0));
+    return base_lod + log2(max(abs(width), RF_MIN_MAGNITUDE)) + 0.5 * (log2(size.x) + log2(size.y))
+        - log2(max(abs(dot(normal, direction)), RF_MIN_COS));
+}
+
+// Isotropic textureGrad gradient: |uv_footprint| * max(tex_grad_scale, 0);
+// use dPdx = vec2(g, 0), dPdy = vec2(0, g).
+float rf_texture_gradient(float uv_footprint, float tex_grad_scale) {
+    return abs(uv_footprint) * max(tex_grad_scale, 0.0);
+}
+
+// Lat-long environment map LOD (RTG ch. 21): log2(max(|spread| H / pi, RF_MIN_MAGNITUDE)).
+float rf_environment_lod(float spread_angle, float map_height) {
+    return log2(max(abs(spread_angle) * max(map_height, 1.0) / 3.14159265358979, RF_MIN_MAGNITUDE));
+}
+
+#endif // RAY_FOOTPRINT_RAY_CONE_GLSL

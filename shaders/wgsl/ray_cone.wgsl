@@ -1,0 +1,186 @@
+// ray-footprint: ray cones, an isotropic pixel footprint carried along a ray.
+//
+// Library module (no entry points). Twin of shaders/glsl/ray_cone.glsl and the Rust mirror
+// src/ray_cone.rs: same functions, same order, same order of operations. Formulas and sources are
+// documented in src/ray_cone.rs; "RTG Eq. N" is Ray Tracing Gems ch. 20 (Akenine-Moller et al. 2019),
+// "JCGT 2021" is "Improved Shader and Texture Level of Detail Using Ray Cones".
+//
+// width is the full footprint diameter, spread_angle the full cone angle; normals and directions are
+// unit length. Divergent cases are clamped with the RF_ constants: finite inputs give finite outputs.
+
+// Smallest |cos| between a normal and a direction used as a divisor (grazing-angle clamp).
+const RF_MIN_COS: f32 = 1.0e-4;
+// Smallest magnitude passed to log2 or used as a divisor.
+const RF_MIN_MAGNITUDE: f32 = 1.0e-20;
+// Largest vertical field of view in radians.
+const RF_MAX_FOV_Y: f32 = 3.1;
+// Largest finite f16; packed cone values are clamped to [-RF_F16_MAX, RF_F16_MAX].
+const RF_F16_MAX: f32 = 65504.0;
+
+// A ray cone (8 bytes): footprint width at the ray origin and full spread angle (RTG Sec. 20.3.4).
+struct RfRayCone {
+    width: f32,
+    spread_angle: f32,
+}
+
+// Packs a cone as two f16 (width low, spread high), clamped to the f16 range.
+fn rf_pack_ray_cone(cone: RfRayCone) -> u32 {
+    let values = vec2<f32>(cone.width, cone.spread_angle);
+    return pack2x16float(clamp(values, vec2<f32>(-RF_F16_MAX), vec2<f32>(RF_F16_MAX)));
+}
+
+// Unpacks a cone packed by rf_pack_ray_cone.
+fn rf_unpack_ray_cone(packed: u32) -> RfRayCone {
+    let values = unpack2x16float(packed);
+    return RfRayCone(values.x, values.y);
+}
+
+// 2 tan(fov_y / 2) / H with fov_y clamped to [0, RF_MAX_FOV_Y] and H to >= 1.
+fn rf_pixel_tan_ratio(fov_y: f32, image_height: f32) -> f32 {
+    return 2.0 * tan(0.5 * clamp(fov_y, 0.0, RF_MAX_FOV_Y)) / max(image_height, 1.0);
+}
+
+// Exact pixel spread angle of a pinhole camera (RTG Eq. 30): atan(2 tan(fov_y / 2) / H).
+fn rf_pixel_spread_angle(fov_y: f32, image_height: f32) -> f32 {
+    return atan(rf_pixel_tan_ratio(fov_y, image_height));
+}
+
+// Small-angle pixel spread angle: 2 tan(fov_y / 2) / H.
+fn rf_pixel_spread_angle_small(fov_y: f32, image_height: f32) -> f32 {
+    return rf_pixel_tan_ratio(fov_y, image_height);
+}
+
+// Exact pixel spread angle from an inverse projection matrix: tan(fov_y / 2) = |proj_inv[1][1]|.
+fn rf_pixel_spread_angle_from_proj_inv(proj_inv: mat4x4<f32>, image_height: f32) -> f32 {
+    return atan(2.0 * abs(proj_inv[1][1]) / max(image_height, 1.0));
+}
+
+// Primary cone of a pinhole camera: width 0, spread = pixel spread angle.
+fn rf_pinhole_ray_cone(pixel_spread_angle: f32) -> RfRayCone {
+    return RfRayCone(0.0, pixel_spread_angle);
+}
+
+// Primary cone of an orthographic camera view_height world units tall: width = one pixel, spread 0.
+fn rf_orthographic_ray_cone(view_height: f32, image_height: f32) -> RfRayCone {
+    return RfRayCone(view_height / max(image_height, 1.0), 0.0);
+}
+
+// Primary cone of a thin lens: width = aperture, spread = alpha - aperture / focus_distance.
+fn rf_thin_lens_ray_cone(pixel_spread_angle: f32, aperture: f32, focus_distance: f32) -> RfRayCone {
+    return RfRayCone(aperture, pixel_spread_angle - aperture / max(focus_distance, RF_MIN_MAGNITUDE));
+}
+
+// Cone width after travelling t: width + spread_angle * t (RTG Eq. 35).
+fn rf_width_at(cone: RfRayCone, t: f32) -> f32 {
+    return cone.width + cone.spread_angle * t;
+}
+
+// The cone leaving a hit at distance t with surface spread angle beta (RTG Eq. 35); also the
+// reflected cone (unslanted width, so a planar mirror acts as a mirror-image camera).
+fn rf_propagate(cone: RfRayCone, t: f32, surface_spread_angle: f32) -> RfRayCone {
+    return RfRayCone(rf_width_at(cone, t), cone.spread_angle + surface_spread_angle);
+}
+
+// sqrt(dn_dx.dn_dx + dn_dy.dn_dy).
+fn rf_normal_derivative_length(dn_dx: vec3<f32>, dn_dy: vec3<f32>) -> f32 {
+    return sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy));
+}
+
+// Normal spread across a pixel (RTG Eq. 31-32): 2 atan(0.5 sqrt(dn_dx.dn_dx + dn_dy.dn_dy)).
+fn rf_normal_spread_angle(dn_dx: vec3<f32>, dn_dy: vec3<f32>) -> f32 {
+    return 2.0 * atan(0.5 * rf_normal_derivative_length(dn_dx, dn_dy));
+}
+
+// Small-angle normal spread: sqrt(dn_dx.dn_dx + dn_dy.dn_dy).
+fn rf_normal_spread_angle_small(dn_dx: vec3<f32>, dn_dy: vec3<f32>) -> f32 {
+    return rf_normal_derivative_length(dn_dx, dn_dy);
+}
+
+// Convex (1) or concave (-1) (RTG Eq. 33): sign(dp_dx.dn_dx + dp_dy.dn_dy), sign(0) = -1.
+fn rf_curvature_sign(dp_dx: vec3<f32>, dp_dy: vec3<f32>, dn_dx: vec3<f32>, dn_dy: vec3<f32>) -> f32 {
+    return select(-1.0, 1.0, dot(dp_dx, dn_dx) + dot(dp_dy, dn_dy) > 0.0);
+}
+
+// Surface spread angle (RTG Eq. 32): 2 k1 s phi + k2.
+fn rf_surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f32, k2: f32) -> f32 {
+    return 2.0 * k1 * curvature_sign * normal_spread_angle + k2;
+}
+
+// Edge curvature from vertex normals (JCGT 2021): (n_j - n_i).(p_j - p_i) / max(|p_j - p_i|^2, min).
+fn rf_edge_curvature(p_i: vec3<f32>, p_j: vec3<f32>, n_i: vec3<f32>, n_j: vec3<f32>) -> f32 {
+    let edge = p_j - p_i;
+    return dot(n_j - n_i, edge) / max(dot(edge, edge), RF_MIN_MAGNITUDE);
+}
+
+// Triangle curvature: mean of the three edge curvatures (JCGT 2021).
+fn rf_triangle_curvature(
+    p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>,
+    n0: vec3<f32>, n1: vec3<f32>, n2: vec3<f32>,
+) -> f32 {
+    return (rf_edge_curvature(p0, p1, n0, n1) + rf_edge_curvature(p1, p2, n1, n2)
+        + rf_edge_curvature(p2, p0, n2, n0)) / 3.0;
+}
+
+// Reflection spread from curvature (JCGT 2021): 2 k |width| / max(|n.d|, RF_MIN_COS).
+fn rf_curvature_spread_angle(curvature: f32, width: f32, normal: vec3<f32>, direction: vec3<f32>) -> f32 {
+    return 2.0 * curvature * abs(width) / max(abs(dot(normal, direction)), RF_MIN_COS);
+}
+
+// Slant-corrected world footprint: |width + spread t| / max(|n.d|, RF_MIN_COS).
+fn rf_world_footprint(cone: RfRayCone, t: f32, normal: vec3<f32>, direction: vec3<f32>) -> f32 {
+    return abs(rf_width_at(cone, t)) / max(abs(dot(normal, direction)), RF_MIN_COS);
+}
+
+// Twice the world-space triangle area: |cross(p1 - p0, p2 - p0)| (RTG Eq. 4), measured as
+// m * |c / m| with m the largest component (>= RF_MIN_MAGNITUDE) so squaring cannot overflow.
+fn rf_triangle_world_area2(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>) -> f32 {
+    let c = cross(p1 - p0, p2 - p0);
+    let scale = max(max(abs(c.x), abs(c.y)), max(abs(c.z), RF_MIN_MAGNITUDE));
+    return scale * length(c / scale);
+}
+
+// Twice the UV-space triangle area: |cross(uv1 - uv0, uv2 - uv0)| (RTG Eq. 4).
+fn rf_triangle_uv_area2(uv0: vec2<f32>, uv1: vec2<f32>, uv2: vec2<f32>) -> f32 {
+    let e1 = uv1 - uv0;
+    let e2 = uv2 - uv0;
+    return abs(e1.x * e2.y - e1.y * e2.x);
+}
+
+// Texel density, UV units per world unit: sqrt(uv_area2) / sqrt(max(world_area2, min)).
+fn rf_texel_density(
+    p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>,
+    uv0: vec2<f32>, uv1: vec2<f32>, uv2: vec2<f32>,
+) -> f32 {
+    return sqrt(rf_triangle_uv_area2(uv0, uv1, uv2))
+        / sqrt(max(rf_triangle_world_area2(p0, p1, p2), RF_MIN_MAGNITUDE));
+}
+
+// Base LOD in UV units (RTG Eq. 4): 0.5 (log2(uv_area2) - log2(world_area2)), areas clamped.
+fn rf_triangle_base_lod(
+    p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>,
+    uv0: vec2<f32>, uv1: vec2<f32>, uv2: vec2<f32>,
+) -> f32 {
+    let uv_area2 = max(rf_triangle_uv_area2(uv0, uv1, uv2), RF_MIN_MAGNITUDE);
+    let world_area2 = max(rf_triangle_world_area2(p0, p1, p2), RF_MIN_MAGNITUDE);
+    return 0.5 * (log2(uv_area2) - log2(world_area2));
+}
+
+// Texture LOD (RTG Eq. 34): base_lod + log2|width| + 0.5 (log2 W + log2 H) - log2|n.d|, clamped.
+fn rf_texture_lod(
+    base_lod: f32, width: f32, texture_size: vec2<f32>, normal: vec3<f32>, direction: vec3<f32>,
+) -> f32 {
+    let size = max(texture_size, vec2<f32>(1.0));
+    return base_lod + log2(max(abs(width), RF_MIN_MAGNITUDE)) + 0.5 * (log2(size.x) + log2(size.y))
+        - log2(max(abs(dot(normal, direction)), RF_MIN_COS));
+}
+
+// Isotropic textureSampleGrad gradient: |uv_footprint| * max(tex_grad_scale, 0);
+// use ddx = vec2(g, 0), ddy = vec2(0, g).
+fn rf_texture_gradient(uv_footprint: f32, tex_grad_scale: f32) -> f32 {
+    return abs(uv_footprint) * max(tex_grad_scale, 0.0);
+}
+
+// Lat-long environment map LOD (RTG ch. 21): log2(max(|spread| H / pi, RF_MIN_MAGNITUDE)).
+fn rf_environment_lod(spread_angle: f32, map_height: f32) -> f32 {
+    return log2(max(abs(spread_angle) * max(map_height, 1.0) / 3.14159265358979, RF_MIN_MAGNITUDE));
+}

@@ -1,0 +1,296 @@
+//! Generated compute kernels: one entry point that calls one shader function per invocation.
+//!
+//! The kernel reads each case's arguments from a word array (binding 0), calls the function, and
+//! writes the result's words to a second array (binding 1). WGSL kernels are the module text followed
+//! by the wrapper and are compiled by naga; GLSL kernels `#include` the module, exactly as users do,
+//! and are compiled by glslang (`glslangValidator`).
+
+use super::device::{GpuError, WORKGROUP_SIZE};
+use super::value::ShaderType;
+use crate::shaders::{Module, GLSL_INCLUDE_DIR};
+use std::fmt::Write as _;
+use std::process::Command;
+
+/// A shader language of the modules.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Language {
+    /// WGSL, compiled to SPIR-V by naga.
+    Wgsl,
+    /// GLSL 460, compiled to SPIR-V by glslang.
+    Glsl,
+}
+
+impl Language {
+    /// Both languages.
+    pub const ALL: [Language; 2] = [Language::Wgsl, Language::Glsl];
+
+    /// `"WGSL"` or `"GLSL"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Language::Wgsl => "WGSL",
+            Language::Glsl => "GLSL",
+        }
+    }
+}
+
+/// The source of a kernel that calls `rf_<function>` of `module` once per case.
+pub fn kernel_source(
+    language: Language,
+    module: Module,
+    function: &str,
+    parameters: &[ShaderType],
+    result: ShaderType,
+) -> String {
+    let syntax = Syntax::of(language);
+    let mut offset = 0;
+    let arguments: Vec<String> = parameters
+        .iter()
+        .map(|&ty| syntax.load(ty, &mut offset))
+        .collect();
+    let mut stores = String::new();
+    syntax.store(result, "result", &mut 0, &mut stores);
+    let call = format!("rf_{function}({})", arguments.join(", "));
+    let (in_words, out_words) = (offset, result.words());
+    match language {
+        Language::Wgsl => format!(
+            "{module_source}
+@group(0) @binding(0) var<storage, read> kernel_inputs: array<u32>;
+@group(0) @binding(1) var<storage, read_write> kernel_outputs: array<u32>;
+
+fn kernel_f32(word: u32) -> f32 {{
+    return bitcast<f32>(kernel_inputs[word]);
+}}
+
+@compute @workgroup_size({WORKGROUP_SIZE})
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {{
+    if id.x >= arrayLength(&kernel_outputs) / {out_words}u {{
+        return;
+    }}
+    let i = id.x * {in_words}u;
+    let o = id.x * {out_words}u;
+    let result = {call};
+{stores}}}
+",
+            module_source = module.wgsl()
+        ),
+        Language::Glsl => format!(
+            "#version 460
+#extension GL_GOOGLE_include_directive : require
+#include \"{stem}.glsl\"
+
+layout(local_size_x = {WORKGROUP_SIZE}) in;
+layout(std430, set = 0, binding = 0) readonly buffer KernelInputs {{ uint kernel_inputs[]; }};
+layout(std430, set = 0, binding = 1) writeonly buffer KernelOutputs {{ uint kernel_outputs[]; }};
+
+float kernel_f32(uint word) {{
+    return uintBitsToFloat(kernel_inputs[word]);
+}}
+
+void main() {{
+    if (gl_GlobalInvocationID.x >= uint(kernel_outputs.length()) / {out_words}u) {{
+        return;
+    }}
+    uint i = gl_GlobalInvocationID.x * {in_words}u;
+    uint o = gl_GlobalInvocationID.x * {out_words}u;
+    {result_type} result = {call};
+{stores}}}
+",
+            stem = module.stem(),
+            result_type = syntax.type_name(result),
+        ),
+    }
+}
+
+/// Compiles a kernel to SPIR-V words.
+pub fn compile(language: Language, source: &str) -> Result<Vec<u32>, GpuError> {
+    match language {
+        Language::Wgsl => compile_wgsl(source),
+        Language::Glsl => compile_glsl(source),
+    }
+}
+
+/// The naga capabilities the modules need: the defaults plus `pack2x16float` / `unpack2x16float`.
+pub fn naga_capabilities() -> naga::valid::Capabilities {
+    naga::valid::Capabilities::default() | naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32
+}
+
+fn compile_wgsl(source: &str) -> Result<Vec<u32>, GpuError> {
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "kernel.wgsl")))?;
+    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga_capabilities())
+        .validate(&module)
+        .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "kernel.wgsl")))?;
+    let options = naga::back::spv::Options {
+        lang_version: (1, 3),
+        ..Default::default()
+    };
+    naga::back::spv::write_vec(&module, &info, &options, None)
+        .map_err(|e| GpuError::Compile(format!("naga SPIR-V output: {e}")))
+}
+
+fn compile_glsl(source: &str) -> Result<Vec<u32>, GpuError> {
+    let stem = std::env::temp_dir().join(format!(
+        "ray-footprint-{}-{}",
+        std::process::id(),
+        KERNEL_COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+    ));
+    let (input, output) = (stem.with_extension("comp"), stem.with_extension("spv"));
+    std::fs::write(&input, source)
+        .map_err(|e| GpuError::Compile(format!("writing {}: {e}", input.display())))?;
+    let result = Command::new("glslangValidator")
+        .args(["--target-env", "vulkan1.1"])
+        .arg(format!("-I{GLSL_INCLUDE_DIR}"))
+        .arg("-o")
+        .arg(&output)
+        .arg(&input)
+        .output();
+    let bytes = std::fs::read(&output);
+    let _ = std::fs::remove_file(&input);
+    let _ = std::fs::remove_file(&output);
+    let result = result.map_err(|e| {
+        GpuError::Setup(format!(
+            "cannot run glslangValidator ({e}); on Debian 12 run `{}`",
+            super::device::SETUP_COMMAND
+        ))
+    })?;
+    if !result.status.success() {
+        return Err(GpuError::Compile(format!(
+            "{}{}\n--- kernel ---\n{source}",
+            String::from_utf8_lossy(&result.stdout),
+            String::from_utf8_lossy(&result.stderr)
+        )));
+    }
+    let bytes = bytes.map_err(|e| GpuError::Compile(format!("reading glslang output: {e}")))?;
+    Ok(bytes
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect())
+}
+
+static KERNEL_COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+/// Spelling of loads, stores and type names in one language.
+struct Syntax {
+    language: Language,
+}
+
+impl Syntax {
+    fn of(language: Language) -> Syntax {
+        Syntax { language }
+    }
+
+    fn type_name(&self, ty: ShaderType) -> &'static str {
+        let wgsl = self.language == Language::Wgsl;
+        match ty {
+            ShaderType::F32 => {
+                if wgsl {
+                    "f32"
+                } else {
+                    "float"
+                }
+            }
+            ShaderType::U32 => {
+                if wgsl {
+                    "u32"
+                } else {
+                    "uint"
+                }
+            }
+            ShaderType::Bool => "bool",
+            ShaderType::Vec2 => {
+                if wgsl {
+                    "vec2<f32>"
+                } else {
+                    "vec2"
+                }
+            }
+            ShaderType::Vec3 => {
+                if wgsl {
+                    "vec3<f32>"
+                } else {
+                    "vec3"
+                }
+            }
+            ShaderType::Vec4 => {
+                if wgsl {
+                    "vec4<f32>"
+                } else {
+                    "vec4"
+                }
+            }
+            ShaderType::Mat4 => {
+                if wgsl {
+                    "mat4x4<f32>"
+                } else {
+                    "mat4"
+                }
+            }
+            ShaderType::Struct(s) => s.name,
+        }
+    }
+
+    /// An expression reading a value of type `ty` at input word `i + offset`; advances `offset`.
+    fn load(&self, ty: ShaderType, offset: &mut usize) -> String {
+        let mut next = || {
+            let word = *offset;
+            *offset += 1;
+            word
+        };
+        match ty {
+            ShaderType::F32 => format!("kernel_f32(i + {}u)", next()),
+            ShaderType::U32 => format!("kernel_inputs[i + {}u]", next()),
+            ShaderType::Bool => format!("(kernel_inputs[i + {}u] != 0u)", next()),
+            ShaderType::Vec2 | ShaderType::Vec3 | ShaderType::Vec4 | ShaderType::Mat4 => {
+                let floats: Vec<String> = (0..ty.words())
+                    .map(|_| format!("kernel_f32(i + {}u)", next()))
+                    .collect();
+                format!("{}({})", self.type_name(ty), floats.join(", "))
+            }
+            ShaderType::Struct(s) => {
+                let fields: Vec<String> = s
+                    .fields
+                    .iter()
+                    .map(|&(_, field)| self.load(field, offset))
+                    .collect();
+                format!("{}({})", s.name, fields.join(", "))
+            }
+        }
+    }
+
+    /// Statements writing `expr` of type `ty` to output words `o + offset..`; advances `offset`.
+    fn store(&self, ty: ShaderType, expr: &str, offset: &mut usize, out: &mut String) {
+        let wgsl = self.language == Language::Wgsl;
+        let mut word = |value: String| {
+            writeln!(out, "    kernel_outputs[o + {}u] = {value};", *offset).expect("writing to a String");
+            *offset += 1;
+        };
+        match ty {
+            ShaderType::F32 => word(if wgsl {
+                format!("bitcast<u32>({expr})")
+            } else {
+                format!("floatBitsToUint({expr})")
+            }),
+            ShaderType::U32 => word(expr.to_string()),
+            ShaderType::Bool => word(if wgsl {
+                format!("select(0u, 1u, {expr})")
+            } else {
+                format!("({expr} ? 1u : 0u)")
+            }),
+            ShaderType::Vec2 | ShaderType::Vec3 | ShaderType::Vec4 => {
+                for component in ["x", "y", "z", "w"].iter().take(ty.words()) {
+                    self.store(ShaderType::F32, &format!("{expr}.{component}"), offset, out);
+                }
+            }
+            ShaderType::Mat4 => {
+                for column in 0..4 {
+                    self.store(ShaderType::Vec4, &format!("{expr}[{column}]"), offset, out);
+                }
+            }
+            ShaderType::Struct(s) => {
+                for &(name, field) in s.fields {
+                    self.store(field, &format!("{expr}.{name}"), offset, out);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,146 @@
+//! Input strategies shared by the agreement checks.
+//!
+//! The tested domain: every magnitude is 0 or lies in `[1e-12, 1e12]` (scene coordinates, distances,
+//! widths, curvatures), unit vectors are unit length, angles are radians. Each strategy mixes the
+//! ordinary range with the edges of that domain: zero, tiny and huge values, grazing angles and
+//! degenerate triangles.
+
+use glam::{Vec2, Vec3};
+use proptest::prelude::*;
+use proptest::strategy::BoxedStrategy;
+
+/// Largest magnitude in the tested domain.
+pub const HUGE: f32 = 1.0e12;
+/// Smallest non-zero magnitude in the tested domain.
+pub const TINY: f32 = 1.0e-12;
+
+fn signed(magnitude: BoxedStrategy<f32>) -> BoxedStrategy<f32> {
+    (magnitude, any::<bool>())
+        .prop_map(|(m, negative)| if negative { -m } else { m })
+        .boxed()
+}
+
+/// A non-negative magnitude: mostly ordinary, sometimes 0, tiny or huge (log-uniform at the edges).
+pub fn magnitude() -> BoxedStrategy<f32> {
+    prop_oneof![
+        6 => 0.0f32..1.0e3,
+        1 => Just(0.0f32),
+        1 => (-12.0f32..-3.0).prop_map(|e| 10f32.powf(e)),
+        1 => (3.0f32..12.0).prop_map(|e| 10f32.powf(e)),
+    ]
+    .boxed()
+}
+
+/// A signed scalar over the whole domain.
+pub fn scalar() -> BoxedStrategy<f32> {
+    signed(magnitude())
+}
+
+/// A distance along a ray: non-negative, from 0 to huge.
+pub fn distance() -> BoxedStrategy<f32> {
+    magnitude()
+}
+
+/// An angle in radians: mostly small (pixel spreads), sometimes 0, large, or negative (converging).
+pub fn angle() -> BoxedStrategy<f32> {
+    prop_oneof![
+        4 => (-9.0f32..-1.0).prop_map(|e| 10f32.powf(e)),
+        2 => -3.2f32..3.2,
+        1 => Just(0.0f32),
+        1 => (-9.0f32..-1.0).prop_map(|e| -(10f32.powf(e))),
+    ]
+    .boxed()
+}
+
+/// A vertical field of view in radians, including 0, negative and wider-than-clamp values.
+pub fn fov_y() -> BoxedStrategy<f32> {
+    prop_oneof![
+        6 => 0.05f32..3.0,
+        1 => Just(0.0f32),
+        1 => (-9.0f32..-2.0).prop_map(|e| 10f32.powf(e)),
+        1 => 3.0f32..4.0,
+        1 => -3.0f32..0.0,
+    ]
+    .boxed()
+}
+
+/// An image or texture size in pixels: ordinary sizes, 0, 1, fractions and negatives (clamped).
+pub fn pixels() -> BoxedStrategy<f32> {
+    prop_oneof![
+        6 => (1u32..16384).prop_map(|h| h as f32),
+        1 => Just(0.0f32),
+        1 => Just(1.0f32),
+        1 => -100.0f32..1.0,
+    ]
+    .boxed()
+}
+
+/// A vector with components from [`scalar`].
+pub fn vec3() -> BoxedStrategy<Vec3> {
+    (scalar(), scalar(), scalar())
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
+        .boxed()
+}
+
+/// A vector with ordinary components (a position or derivative of moderate size).
+pub fn small_vec3() -> BoxedStrategy<Vec3> {
+    (-10.0f32..10.0, -10.0f32..10.0, -10.0f32..10.0)
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z))
+        .boxed()
+}
+
+/// A unit vector (axis-aligned ones included).
+pub fn unit_vec3() -> BoxedStrategy<Vec3> {
+    prop_oneof![
+        8 => (-1.0f32..1.0, 0.0f32..std::f32::consts::TAU).prop_map(|(z, phi)| {
+            let r = (1.0 - z * z).max(0.0).sqrt();
+            Vec3::new(r * phi.cos(), r * phi.sin(), z).normalize()
+        }),
+        1 => prop::sample::select(vec![Vec3::X, Vec3::Y, Vec3::Z, Vec3::NEG_X, Vec3::NEG_Y, Vec3::NEG_Z]),
+    ]
+    .boxed()
+}
+
+/// A unit normal and a unit ray direction, from head-on to grazing (|dot| down to 0).
+pub fn normal_and_direction() -> BoxedStrategy<(Vec3, Vec3)> {
+    let cosine = prop_oneof![
+        4 => 0.0f32..1.0,
+        2 => (-8.0f32..-2.0).prop_map(|e| 10f32.powf(e)),
+        1 => Just(0.0f32),
+        1 => Just(1.0f32),
+    ];
+    (unit_vec3(), unit_vec3(), cosine)
+        .prop_map(|(normal, other, cosine)| {
+            let tangent = normal
+                .cross(other)
+                .try_normalize()
+                .unwrap_or_else(|| normal.any_orthonormal_vector());
+            let sine = (1.0 - cosine * cosine).max(0.0).sqrt();
+            (normal, (tangent * sine - normal * cosine).normalize())
+        })
+        .boxed()
+}
+
+/// A triangle: ordinary, huge, tiny, a sliver, or with a repeated vertex (zero area).
+pub fn triangle() -> BoxedStrategy<[Vec3; 3]> {
+    let ordinary = (small_vec3(), small_vec3(), small_vec3()).prop_map(|(a, b, c)| [a, b, c]);
+    let scaled = (
+        ordinary.clone(),
+        prop_oneof![Just(TINY), Just(1.0e-6f32), Just(1.0e6f32), Just(1.0e11f32)],
+    )
+        .prop_map(|(t, s)| t.map(|p| p * s));
+    let sliver = (small_vec3(), small_vec3(), 0.0f32..1.0, -6.0f32..-2.0)
+        .prop_map(|(a, b, along, e)| [a, b, a.lerp(b, along) + Vec3::splat(10f32.powf(e))]);
+    let degenerate = (small_vec3(), small_vec3()).prop_map(|(a, b)| [a, b, a]);
+    prop_oneof![5 => ordinary, 1 => scaled, 1 => sliver, 1 => degenerate].boxed()
+}
+
+/// UV coordinates of a triangle: ordinary, tiny, collinear or all equal.
+pub fn uv_triangle() -> BoxedStrategy<[Vec2; 3]> {
+    let uv = || (-2.0f32..2.0, -2.0f32..2.0).prop_map(|(u, v)| Vec2::new(u, v));
+    let ordinary = (uv(), uv(), uv()).prop_map(|(a, b, c)| [a, b, c]);
+    let tiny = (uv(), uv(), uv()).prop_map(|(a, b, c)| [a, a + (b - a) * 1.0e-6, a + (c - a) * 1.0e-6]);
+    let collinear = (uv(), uv(), 0.0f32..1.0).prop_map(|(a, b, t)| [a, b, a.lerp(b, t)]);
+    let equal = uv().prop_map(|a| [a, a, a]);
+    prop_oneof![5 => ordinary, 1 => tiny, 1 => collinear, 1 => equal].boxed()
+}

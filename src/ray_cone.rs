@@ -1,0 +1,255 @@
+//! Ray cones: an isotropic pixel footprint carried along a ray.
+//!
+//! The Rust mirror of `shaders/wgsl/ray_cone.wgsl` and `shaders/glsl/ray_cone.glsl`. Every function
+//! here has a shader twin with the same name prefixed `rf_` (constants `RF_`), in the same order,
+//! computing the same expression in the same order of operations.
+//!
+//! Sources: Akenine-Möller et al., "Texture Level of Detail Strategies for Real-Time Ray Tracing",
+//! Ray Tracing Gems ch. 20 (2019), cited as "RTG Eq. N"; Akenine-Möller et al., "Improved Shader and
+//! Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021".
+//!
+//! Conventions: `width` is the full footprint diameter and `spread_angle` the full cone angle, both
+//! signed (a converging thin-lens cone has a negative spread); footprints use `|width|`. Normals and
+//! directions passed in are unit length. Where the math diverges, the functions clamp with the
+//! constants below, so finite inputs give finite outputs.
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat4, Vec2, Vec3};
+
+/// Smallest `|cos|` between a normal and a direction used as a divisor (grazing-angle clamp).
+pub const MIN_COS: f32 = 1.0e-4;
+/// Smallest magnitude passed to `log2` or used as a divisor (zero width, area, distance, spread).
+pub const MIN_MAGNITUDE: f32 = 1.0e-20;
+/// Largest vertical field of view in radians; wider values are clamped so `tan(fov_y / 2)` stays finite.
+pub const MAX_FOV_Y: f32 = 3.1;
+/// Largest finite f16; packed cone values are clamped to `[-F16_MAX, F16_MAX]`.
+pub const F16_MAX: f32 = 65504.0;
+
+/// A ray cone: footprint width at the ray origin and the cone's spread angle (RTG Sec. 20.3.4).
+///
+/// Layout: 8 bytes, two `f32`, identical in Rust, WGSL (`RfRayCone`) and GLSL (`RfRayCone`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RayCone {
+    /// Full footprint diameter at the ray origin, in world units.
+    pub width: f32,
+    /// Full cone angle in radians; negative while the cone converges.
+    pub spread_angle: f32,
+}
+
+/// A ray cone packed as two f16 in one `u32`: width in the low half, spread angle in the high half.
+///
+/// RTG ch. 20 reports this 4-byte form as visually lossless. The shader type is a plain `u32`.
+#[repr(transparent)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+pub struct PackedRayCone(pub u32);
+
+/// Packs a cone into two f16 (`packHalf2x16` / `pack2x16float`), each value first clamped to
+/// `[-F16_MAX, F16_MAX]` so that no finite value becomes infinite.
+pub fn pack_ray_cone(cone: RayCone) -> PackedRayCone {
+    let width = half::f16::from_f32(cone.width.clamp(-F16_MAX, F16_MAX));
+    let spread = half::f16::from_f32(cone.spread_angle.clamp(-F16_MAX, F16_MAX));
+    PackedRayCone(u32::from(width.to_bits()) | (u32::from(spread.to_bits()) << 16))
+}
+
+/// Unpacks a cone packed by [`pack_ray_cone`] (`unpackHalf2x16` / `unpack2x16float`).
+pub fn unpack_ray_cone(packed: PackedRayCone) -> RayCone {
+    RayCone {
+        width: half::f16::from_bits(packed.0 as u16).to_f32(),
+        spread_angle: half::f16::from_bits((packed.0 >> 16) as u16).to_f32(),
+    }
+}
+
+/// `2 * tan(fov_y / 2) / H` with the clamps of [`pixel_spread_angle`].
+fn pixel_tan_ratio(fov_y: f32, image_height: f32) -> f32 {
+    2.0 * (0.5 * fov_y.clamp(0.0, MAX_FOV_Y)).tan() / image_height.max(1.0)
+}
+
+/// Spread angle of one pixel of a pinhole camera, exact form (RTG Eq. 30):
+/// `alpha = atan(2 * tan(fov_y / 2) / H)`.
+///
+/// `fov_y` is clamped to `[0, MAX_FOV_Y]`, `image_height` to `>= 1`.
+pub fn pixel_spread_angle(fov_y: f32, image_height: f32) -> f32 {
+    (pixel_tan_ratio(fov_y, image_height)).atan()
+}
+
+/// Spread angle of one pixel, small-angle form `2 * tan(fov_y / 2) / H` (the ray-cone tutorial's
+/// approximation of RTG Eq. 30); clamps as [`pixel_spread_angle`].
+pub fn pixel_spread_angle_small(fov_y: f32, image_height: f32) -> f32 {
+    pixel_tan_ratio(fov_y, image_height)
+}
+
+/// Spread angle of one pixel from an inverse projection matrix, exact form (RTG Eq. 30) with
+/// `tan(fov_y / 2) = |proj_inv[1][1]|` (column 1, row 1; holds for y-flipped Vulkan projections too).
+pub fn pixel_spread_angle_from_proj_inv(proj_inv: Mat4, image_height: f32) -> f32 {
+    (2.0 * proj_inv.y_axis.y.abs() / image_height.max(1.0)).atan()
+}
+
+/// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30).
+pub fn pinhole_ray_cone(pixel_spread_angle: f32) -> RayCone {
+    RayCone {
+        width: 0.0,
+        spread_angle: pixel_spread_angle,
+    }
+}
+
+/// Primary cone of an orthographic camera whose view is `view_height` world units tall:
+/// width = one pixel, `view_height / H`, spread 0. `image_height` is clamped to `>= 1`.
+pub fn orthographic_ray_cone(view_height: f32, image_height: f32) -> RayCone {
+    RayCone {
+        width: view_height / image_height.max(1.0),
+        spread_angle: 0.0,
+    }
+}
+
+/// Primary cone of a thin-lens camera with aperture diameter `aperture` focused at
+/// `focus_distance`: width `aperture` at the lens, spread `pixel_spread_angle - aperture / focus_distance`
+/// (negative while the cone converges towards the focal plane). `focus_distance` is clamped to
+/// `>= MIN_MAGNITUDE`.
+pub fn thin_lens_ray_cone(pixel_spread_angle: f32, aperture: f32, focus_distance: f32) -> RayCone {
+    RayCone {
+        width: aperture,
+        spread_angle: pixel_spread_angle - aperture / focus_distance.max(MIN_MAGNITUDE),
+    }
+}
+
+/// Cone width after travelling `t` along the ray: `width + spread_angle * t` (RTG Eq. 35, first line).
+pub fn width_at(cone: RayCone, t: f32) -> f32 {
+    cone.width + cone.spread_angle * t
+}
+
+/// The cone that leaves a hit at distance `t` whose surface spreads it by `surface_spread_angle`
+/// (RTG Eq. 35): `width' = width + spread_angle * t`, `spread' = spread_angle + surface_spread_angle`.
+///
+/// This is the reflected (or transmitted) cone. Its width is the cone's cross-section at the hit,
+/// not the slanted footprint on the surface, so a planar mirror (`surface_spread_angle = 0`) behaves
+/// exactly like a mirror-image camera.
+pub fn propagate(cone: RayCone, t: f32, surface_spread_angle: f32) -> RayCone {
+    RayCone {
+        width: width_at(cone, t),
+        spread_angle: cone.spread_angle + surface_spread_angle,
+    }
+}
+
+/// `sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy))`.
+fn normal_derivative_length(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
+    (dn_dx.dot(dn_dx) + dn_dy.dot(dn_dy)).sqrt()
+}
+
+/// Angle spanned by the normal across one pixel, from G-buffer normal derivatives (RTG Eq. 31-32):
+/// `phi = 2 * atan(0.5 * sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy)))`.
+pub fn normal_spread_angle(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
+    2.0 * (0.5 * normal_derivative_length(dn_dx, dn_dy)).atan()
+}
+
+/// Small-angle form of [`normal_spread_angle`]: `sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy))` (RTG Eq. 32).
+pub fn normal_spread_angle_small(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
+    normal_derivative_length(dn_dx, dn_dy)
+}
+
+/// Whether the surface is convex (1) or concave (-1) as seen by the ray (RTG Eq. 33):
+/// `s = sign(dot(dp_dx, dn_dx) + dot(dp_dy, dn_dy))` with `sign(0) = -1`.
+pub fn curvature_sign(dp_dx: Vec3, dp_dy: Vec3, dn_dx: Vec3, dn_dy: Vec3) -> f32 {
+    if dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy) > 0.0 {
+        1.0
+    } else {
+        -1.0
+    }
+}
+
+/// Surface spread angle (RTG Eq. 32): `beta = 2 * k1 * s * phi + k2`, with `phi` from
+/// [`normal_spread_angle`] and `s` from [`curvature_sign`] (or 1 for saddle-heavy scenes).
+/// RTG uses `k1 = 1`, `k2 = 0` by default.
+pub fn surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f32, k2: f32) -> f32 {
+    2.0 * k1 * curvature_sign * normal_spread_angle + k2
+}
+
+/// Curvature along one triangle edge from its vertex normals (JCGT 2021, Sec. 3):
+/// `k = dot(n_j - n_i, p_j - p_i) / |p_j - p_i|^2`; 1/R on a sphere of radius R with outward normals.
+/// The squared length is clamped to `>= MIN_MAGNITUDE` (a zero-length edge gives 0).
+pub fn edge_curvature(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
+    let edge = p_j - p_i;
+    (n_j - n_i).dot(edge) / edge.dot(edge).max(MIN_MAGNITUDE)
+}
+
+/// Curvature estimate of a triangle: the mean of its three [`edge_curvature`] values (JCGT 2021).
+/// Zero for a flat triangle (equal vertex normals).
+pub fn triangle_curvature(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3, n2: Vec3) -> f32 {
+    (edge_curvature(p0, p1, n0, n1) + edge_curvature(p1, p2, n1, n2) + edge_curvature(p2, p0, n2, n0)) / 3.0
+}
+
+/// Surface spread angle of a reflection from a curvature estimate (JCGT 2021, "optimized" form):
+/// the normal turns by about `curvature * |width| / |dot(n, d)|` across the slanted footprint, and a
+/// reflected direction turns twice as much: `beta = 2 * curvature * |width| / max(|dot(n, d)|, MIN_COS)`.
+/// Positive (diverging) on convex surfaces, negative on concave ones.
+pub fn curvature_spread_angle(curvature: f32, width: f32, normal: Vec3, direction: Vec3) -> f32 {
+    2.0 * curvature * width.abs() / normal.dot(direction).abs().max(MIN_COS)
+}
+
+/// World-space footprint on the surface, slant-corrected (ray-cone tutorial, after RTG Eq. 34):
+/// `|width + spread_angle * t| / max(|dot(normal, direction)|, MIN_COS)`.
+pub fn world_footprint(cone: RayCone, t: f32, normal: Vec3, direction: Vec3) -> f32 {
+    width_at(cone, t).abs() / normal.dot(direction).abs().max(MIN_COS)
+}
+
+/// Twice the world-space area of a triangle: `|cross(p1 - p0, p2 - p0)|` (RTG Eq. 4, `p_a`).
+///
+/// The cross product `c` is measured as `m * |c / m|` with `m` its largest component (at least
+/// `MIN_MAGNITUDE`), so that squaring cannot overflow for coordinates up to about 1e18.
+pub fn triangle_world_area2(p0: Vec3, p1: Vec3, p2: Vec3) -> f32 {
+    let cross = (p1 - p0).cross(p2 - p0);
+    let scale = cross
+        .x
+        .abs()
+        .max(cross.y.abs())
+        .max(cross.z.abs().max(MIN_MAGNITUDE));
+    scale * (cross / scale).length()
+}
+
+/// Twice the UV-space area of a triangle: `|cross(uv1 - uv0, uv2 - uv0)|` (RTG Eq. 4, `t_a` without
+/// the texture size).
+pub fn triangle_uv_area2(uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
+    (uv1 - uv0).perp_dot(uv2 - uv0).abs()
+}
+
+/// Texel density of a triangle, UV units per world unit: `sqrt(uv_area2) / sqrt(world_area2)`
+/// (ray-cone tutorial), with `world_area2` clamped to `>= MIN_MAGNITUDE`.
+pub fn texel_density(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
+    triangle_uv_area2(uv0, uv1, uv2).sqrt() / triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE).sqrt()
+}
+
+/// Base level of detail of a triangle in UV units (RTG Eq. 4):
+/// `Delta = 0.5 * (log2(uv_area2) - log2(world_area2))`, both areas clamped to `>= MIN_MAGNITUDE`.
+/// Add `0.5 * log2(W * H)` for a W x H texture (see [`texture_lod`]).
+pub fn triangle_base_lod(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
+    let uv_area2 = triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
+    let world_area2 = triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
+    0.5 * (uv_area2.log2() - world_area2.log2())
+}
+
+/// Texture level of detail of a ray-cone hit (RTG Eq. 34 with the texture-size term of its listing):
+/// `lambda = base_lod + log2(|width|) + 0.5 * (log2(W) + log2(H)) - log2(|dot(normal, direction)|)`,
+/// with `|width| >= MIN_MAGNITUDE`, `W, H >= 1` and `|dot| >= MIN_COS`.
+///
+/// `width` is the cone width at the hit ([`width_at`]). For a square texture this equals
+/// `log2(world_footprint * texel_density * W)`.
+pub fn texture_lod(base_lod: f32, width: f32, texture_size: Vec2, normal: Vec3, direction: Vec3) -> f32 {
+    let size = texture_size.max(Vec2::ONE);
+    base_lod + width.abs().max(MIN_MAGNITUDE).log2() + 0.5 * (size.x.log2() + size.y.log2())
+        - normal.dot(direction).abs().max(MIN_COS).log2()
+}
+
+/// Isotropic `textureGrad` gradient length in UV units (ray-cone tutorial):
+/// `g = |uv_footprint| * max(tex_grad_scale, 0)`; sample with `ddx = (g, 0)`, `ddy = (0, g)`.
+/// `tex_grad_scale` 0 samples mip 0, 1 the matching level, above 1 blurs.
+pub fn texture_gradient(uv_footprint: f32, tex_grad_scale: f32) -> f32 {
+    uv_footprint.abs() * tex_grad_scale.max(0.0)
+}
+
+/// Level of detail for a latitude-longitude environment map `map_height` texels tall (RTG ch. 21,
+/// as in Falcor): `log2(max(|spread_angle| * H / pi, MIN_MAGNITUDE))`, `map_height` clamped to `>= 1`.
+pub fn environment_lod(spread_angle: f32, map_height: f32) -> f32 {
+    (spread_angle.abs() * map_height.max(1.0) / std::f32::consts::PI)
+        .max(MIN_MAGNITUDE)
+        .log2()
+}
