@@ -54,10 +54,17 @@ mod validate {
     }
 
     /// naga's default capabilities plus `pack2x16float`/`unpack2x16float` (wgpu's downlevel flag
-    /// `SHADER_F16_IN_F32`, present on every Vulkan, Metal and DX12 device), used by the packed ray cone.
-    fn validator() -> naga::valid::Validator {
-        let capabilities =
+    /// `SHADER_F16_IN_F32`, present on every Vulkan, Metal and DX12 device), used by the packed ray
+    /// cone; `f64` only for modules whose stem ends in `_f64`, so no other module can use it.
+    fn validator(path: &Path) -> naga::valid::Validator {
+        let mut capabilities =
             naga::valid::Capabilities::default() | naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
+        if path
+            .file_stem()
+            .is_some_and(|stem| stem.to_string_lossy().ends_with("_f64"))
+        {
+            capabilities |= naga::valid::Capabilities::FLOAT64;
+        }
         naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
     }
 
@@ -66,7 +73,7 @@ mod validate {
         let name = path.display().to_string();
         let module =
             naga::front::wgsl::parse_str(&source).map_err(|e| e.emit_to_string_with_path(&source, &name))?;
-        validator()
+        validator(path)
             .validate(&module)
             .map_err(|e| e.emit_to_string_with_path(&source, &name))?;
         Ok(())
@@ -87,7 +94,7 @@ mod validate {
                     .collect();
                 lines.join("\n")
             })?;
-        validator().validate(&module).map_err(|error| {
+        validator(path).validate(&module).map_err(|error| {
             let span = error.spans().next().map(|(span, _)| *span).unwrap_or_default();
             at(&name, &source, span, &format!("{:?}", error.as_inner()))
         })?;

@@ -8,7 +8,10 @@
 #![deny(missing_docs)]
 
 pub mod ray_cone;
+pub mod ray_diff;
+pub mod ray_diff_f64;
 pub mod shaders;
+pub mod wireframe;
 
 #[cfg(feature = "gpu")]
 pub mod gpu;

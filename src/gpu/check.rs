@@ -171,7 +171,7 @@ impl<A: GpuArgs + 'static, R: GpuValue + 'static> Check for FunctionCheck<A, R> 
     }
 
     fn run(&self, gpu: &Gpu, language: Language, config: &RunConfig) -> Result<Report, GpuError> {
-        let spirv = compile(language, &self.kernel(language))?;
+        let spirv = compile(language, self.module, &self.kernel(language))?;
         let pipeline = gpu.pipeline(&spirv)?;
         let half = (config.batch / 2).max(1);
         let batches = config.cases.div_ceil(half).max(1) as u32;

@@ -168,7 +168,13 @@ impl Gpu {
             let queue_info = [vk::DeviceQueueCreateInfo::default()
                 .queue_family_index(family)
                 .queue_priorities(&priorities)];
-            let device_info = vk::DeviceCreateInfo::default().queue_create_infos(&queue_info);
+            // f64 for the `_f64` modules, where the device has it.
+            let supported = instance.get_physical_device_features(physical);
+            let features =
+                vk::PhysicalDeviceFeatures::default().shader_float64(supported.shader_float64 == vk::TRUE);
+            let device_info = vk::DeviceCreateInfo::default()
+                .queue_create_infos(&queue_info)
+                .enabled_features(&features);
             let device = instance
                 .create_device(physical, &device_info, None)
                 .map_err(vulkan("vkCreateDevice"))?;
@@ -587,5 +593,30 @@ fn pick_device(instance: &ash::Instance) -> Result<(vk::PhysicalDevice, String, 
             None => String::from("no lavapipe device (Mesa llvmpipe Vulkan driver)"),
         };
         Err(setup(&format!("{asked}; devices found: [{}]", seen.join(", "))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A call that breaks a valid-usage rule (a zero-sized buffer) is reported, and fails the run.
+    #[test]
+    fn validation_messages_fail_the_run() {
+        let gpu = Gpu::new().unwrap_or_else(|error| panic!("{error}"));
+        gpu.check_messages().expect("a fresh device has no messages");
+        // SAFETY: an invalid create-info on purpose; lavapipe tolerates it, the layer reports it.
+        unsafe {
+            let info = vk::BufferCreateInfo::default()
+                .size(0)
+                .usage(vk::BufferUsageFlags::STORAGE_BUFFER);
+            if let Ok(buffer) = gpu.device.create_buffer(&info, None) {
+                gpu.device.destroy_buffer(buffer, None);
+            }
+        }
+        match gpu.check_messages() {
+            Err(GpuError::Validation(messages)) => assert!(messages.iter().any(|m| m.contains("size"))),
+            other => panic!("expected a validation error, got {other:?}"),
+        }
     }
 }

@@ -101,23 +101,30 @@ void main() {{
     }
 }
 
-/// Compiles a kernel to SPIR-V words.
-pub fn compile(language: Language, source: &str) -> Result<Vec<u32>, GpuError> {
+/// Compiles a kernel that uses `module` to SPIR-V words.
+pub fn compile(language: Language, module: Module, source: &str) -> Result<Vec<u32>, GpuError> {
     match language {
-        Language::Wgsl => compile_wgsl(source),
+        Language::Wgsl => compile_wgsl(module, source),
         Language::Glsl => compile_glsl(source),
     }
 }
 
-/// The naga capabilities the modules need: the defaults plus `pack2x16float` / `unpack2x16float`.
-pub fn naga_capabilities() -> naga::valid::Capabilities {
-    naga::valid::Capabilities::default() | naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32
+/// The naga capabilities a module needs: the defaults plus `pack2x16float` / `unpack2x16float`
+/// (wgpu's downlevel flag `SHADER_F16_IN_F32`), and `f64` for the `_f64` modules only.
+pub fn naga_capabilities(module: Module) -> naga::valid::Capabilities {
+    let base = naga::valid::Capabilities::default() | naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
+    if module.needs_f64() {
+        base | naga::valid::Capabilities::FLOAT64
+    } else {
+        base
+    }
 }
 
-fn compile_wgsl(source: &str) -> Result<Vec<u32>, GpuError> {
+fn compile_wgsl(module: Module, source: &str) -> Result<Vec<u32>, GpuError> {
+    let capabilities = naga_capabilities(module);
     let module = naga::front::wgsl::parse_str(source)
         .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "kernel.wgsl")))?;
-    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga_capabilities())
+    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
         .validate(&module)
         .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "kernel.wgsl")))?;
     let options = naga::back::spv::Options {
@@ -180,52 +187,20 @@ impl Syntax {
     }
 
     fn type_name(&self, ty: ShaderType) -> &'static str {
-        let wgsl = self.language == Language::Wgsl;
-        match ty {
-            ShaderType::F32 => {
-                if wgsl {
-                    "f32"
-                } else {
-                    "float"
-                }
-            }
-            ShaderType::U32 => {
-                if wgsl {
-                    "u32"
-                } else {
-                    "uint"
-                }
-            }
-            ShaderType::Bool => "bool",
-            ShaderType::Vec2 => {
-                if wgsl {
-                    "vec2<f32>"
-                } else {
-                    "vec2"
-                }
-            }
-            ShaderType::Vec3 => {
-                if wgsl {
-                    "vec3<f32>"
-                } else {
-                    "vec3"
-                }
-            }
-            ShaderType::Vec4 => {
-                if wgsl {
-                    "vec4<f32>"
-                } else {
-                    "vec4"
-                }
-            }
-            ShaderType::Mat4 => {
-                if wgsl {
-                    "mat4x4<f32>"
-                } else {
-                    "mat4"
-                }
-            }
-            ShaderType::Struct(s) => s.name,
+        let (wgsl, glsl) = match ty {
+            ShaderType::F32 => ("f32", "float"),
+            ShaderType::U32 => ("u32", "uint"),
+            ShaderType::I32 => ("i32", "int"),
+            ShaderType::Bool => ("bool", "bool"),
+            ShaderType::Vec2 => ("vec2<f32>", "vec2"),
+            ShaderType::Vec3 => ("vec3<f32>", "vec3"),
+            ShaderType::Vec4 => ("vec4<f32>", "vec4"),
+            ShaderType::Mat4 => ("mat4x4<f32>", "mat4"),
+            ShaderType::Struct(s) => (s.name, s.name),
+        };
+        match self.language {
+            Language::Wgsl => wgsl,
+            Language::Glsl => glsl,
         }
     }
 
@@ -239,6 +214,14 @@ impl Syntax {
         match ty {
             ShaderType::F32 => format!("kernel_f32(i + {}u)", next()),
             ShaderType::U32 => format!("kernel_inputs[i + {}u]", next()),
+            ShaderType::I32 => {
+                let word = format!("kernel_inputs[i + {}u]", next());
+                if self.language == Language::Wgsl {
+                    format!("bitcast<i32>({word})")
+                } else {
+                    format!("int({word})")
+                }
+            }
             ShaderType::Bool => format!("(kernel_inputs[i + {}u] != 0u)", next()),
             ShaderType::Vec2 | ShaderType::Vec3 | ShaderType::Vec4 | ShaderType::Mat4 => {
                 let floats: Vec<String> = (0..ty.words())
@@ -271,6 +254,11 @@ impl Syntax {
                 format!("floatBitsToUint({expr})")
             }),
             ShaderType::U32 => word(expr.to_string()),
+            ShaderType::I32 => word(if wgsl {
+                format!("bitcast<u32>({expr})")
+            } else {
+                format!("uint({expr})")
+            }),
             ShaderType::Bool => word(if wgsl {
                 format!("select(0u, 1u, {expr})")
             } else {

@@ -11,7 +11,7 @@
 //! use ray_footprint::gpu::{suite, Gpu, Language, RunConfig};
 //!
 //! let gpu = Gpu::new()?;
-//! for check in suite::checks() {
+//! for check in suite::all_checks() {
 //!     for language in Language::ALL {
 //!         println!("{}", check.run(&gpu, language, &RunConfig::default())?);
 //!     }

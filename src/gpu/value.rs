@@ -2,7 +2,8 @@
 //!
 //! Every value is written as words (floats by their bit pattern), read by the kernel field by field,
 //! passed to the shader function, and the result is written back as words: nothing is converted, so
-//! the comparison sees exactly what the shader computed.
+//! the comparison sees exactly what the shader computed. Outputs are compared as `f32` components,
+//! which is exact for floats, booleans and integers below 2^24.
 
 use crate::ray_cone::{PackedRayCone, RayCone};
 use glam::{Mat4, Vec2, Vec3, Vec4};
@@ -15,6 +16,8 @@ pub enum ShaderType {
     F32,
     /// `u32` / `uint`.
     U32,
+    /// `i32` / `int`.
+    I32,
     /// `bool`, carried as a word (0 = false).
     Bool,
     /// `vec2<f32>` / `vec2`.
@@ -48,7 +51,7 @@ impl ShaderType {
     /// How many 32-bit words the value takes.
     pub fn words(self) -> usize {
         match self {
-            ShaderType::F32 | ShaderType::U32 | ShaderType::Bool => 1,
+            ShaderType::F32 | ShaderType::U32 | ShaderType::I32 | ShaderType::Bool => 1,
             ShaderType::Vec2 => 2,
             ShaderType::Vec3 => 3,
             ShaderType::Vec4 => 4,
@@ -112,6 +115,22 @@ impl GpuValue for u32 {
     }
 }
 
+impl GpuValue for i32 {
+    const TYPE: ShaderType = ShaderType::I32;
+    fn write(&self, words: &mut Vec<u32>) {
+        words.push(*self as u32);
+    }
+    fn read(words: &mut &[u32]) -> Self {
+        take(words) as i32
+    }
+    fn components(&self, out: &mut Vec<f32>) {
+        out.push(*self as f32);
+    }
+    fn is_finite(&self) -> bool {
+        true
+    }
+}
+
 impl GpuValue for bool {
     const TYPE: ShaderType = ShaderType::Bool;
     fn write(&self, words: &mut Vec<u32>) {
@@ -128,7 +147,8 @@ impl GpuValue for bool {
     }
 }
 
-/// Implements [`GpuValue`] for a type made of `f32` fields, listed in shader order.
+/// Implements [`GpuValue`] for a type made of `f32` fields, listed in shader order:
+/// `float_value!(Type, shader_type, |v| [v.a, v.b], |w| Type { a: w(), b: w() })`.
 macro_rules! float_value {
     ($rust:ty, $shader:expr, |$v:ident| [$($field:expr),+], |$w:ident| $build:expr) => {
         impl GpuValue for $rust {
@@ -152,6 +172,9 @@ macro_rules! float_value {
         }
     };
 }
+
+#[allow(unused_imports)]
+pub(crate) use float_value;
 
 float_value!(Vec2, ShaderType::Vec2, |v| [v.x, v.y], |w| Vec2::new(w(), w()));
 float_value!(Vec3, ShaderType::Vec3, |v| [v.x, v.y, v.z], |w| Vec3::new(

@@ -1,0 +1,8 @@
+//! Agreement checks of the wireframe module, one per function, in the module's order.
+
+use crate::gpu::check::Check;
+
+/// Every check of the module.
+pub fn checks() -> Vec<Box<dyn Check>> {
+    vec![]
+}

@@ -1,0 +1,3 @@
+//! Anti-aliased wireframe from per-pixel barycentric deltas, with the bool-to-int settings mirror.
+//!
+//! The Rust mirror of `shaders/wgsl/wireframe.wgsl` and `shaders/glsl/wireframe.glsl`.

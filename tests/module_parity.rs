@@ -1,0 +1,94 @@
+//! Each concept is one WGSL file, one GLSL file and one Rust module with the same functions and
+//! constants in the same order: the shader names are the Rust names prefixed `rf_` / `RF_`.
+
+use ray_footprint::shaders::Module;
+
+/// Names declared at the top level, in order: functions and constants, without prefixes.
+fn shader_names(source: &str, language: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    for line in source
+        .lines()
+        .filter(|line| !line.starts_with(' ') && !line.starts_with("//"))
+    {
+        let words: Vec<&str> = line
+            .split(|c: char| c.is_whitespace() || c == '(' || c == ':')
+            .collect();
+        let name = match (language, words.as_slice()) {
+            ("wgsl", ["fn", name, ..]) => name,
+            ("wgsl", ["const", name, ..]) => name,
+            ("glsl", ["const", _, name, ..]) => name,
+            ("glsl", [_, name, ..]) if name.starts_with("rf_") && line.trim_end().ends_with('{') => name,
+            ("glsl", [_, name, ..]) if name.starts_with("rf_") && line.ends_with(',') => name,
+            _ => continue,
+        };
+        names.push(
+            name.trim_start_matches("rf_")
+                .trim_start_matches("RF_")
+                .to_string(),
+        );
+    }
+    names
+}
+
+/// Functions (public or not) and public constants of a Rust module, in order.
+fn rust_names(source: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    for line in source.lines() {
+        let words: Vec<&str> = line
+            .split(|c: char| c.is_whitespace() || c == '(' || c == ':' || c == '<')
+            .collect();
+        match words.as_slice() {
+            ["pub", "fn", name, ..] | ["fn", name, ..] | ["pub", "const", name, ..] => {
+                names.push(name.to_string())
+            }
+            _ => {}
+        }
+    }
+    names
+}
+
+fn rust_source(module: Module) -> String {
+    let path = format!("{}/src/{}.rs", env!("CARGO_MANIFEST_DIR"), module.stem());
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+#[test]
+fn every_module_declares_the_same_names_in_the_same_order() {
+    for &module in Module::ALL {
+        let rust = rust_names(&rust_source(module));
+        let wgsl = shader_names(module.wgsl(), "wgsl");
+        let glsl = shader_names(module.glsl(), "glsl");
+        assert_eq!(wgsl, rust, "{}: WGSL and Rust differ", module.stem());
+        assert_eq!(glsl, rust, "{}: GLSL and Rust differ", module.stem());
+        println!(
+            "{}: {} names agree: {}",
+            module.stem(),
+            rust.len(),
+            rust.join(" ")
+        );
+    }
+}
+
+#[test]
+fn glsl_modules_have_an_include_guard_and_no_version_or_main() {
+    for &module in Module::ALL {
+        let guard = format!("#ifndef RAY_FOOTPRINT_{}_GLSL", module.stem().to_uppercase());
+        let source = module.glsl();
+        assert!(source.contains(&guard), "{}: missing `{guard}`", module.stem());
+        assert!(
+            !source.contains("#version"),
+            "{}: a module must not declare #version",
+            module.stem()
+        );
+        assert!(
+            !source.contains("void main"),
+            "{}: a module must not declare main",
+            module.stem()
+        );
+        assert!(
+            !module.wgsl().contains('@'),
+            "{}: a WGSL module must not declare entry points or bindings",
+            module.stem()
+        );
+    }
+}
