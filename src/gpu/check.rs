@@ -113,7 +113,23 @@ impl<A: GpuArgs + 'static, R: GpuValue + 'static> FunctionCheck<A, R> {
         kernel_source(language, self.module, self.function, A::TYPES, R::TYPE)
     }
 
-    /// Runs one batch and compares it; `Ok(Err(_))` describes the first disagreement.
+    /// Compiles this check's kernel for `language` into a pipeline (destroy it with
+    /// [`Gpu::destroy_pipeline`]).
+    pub fn pipeline(&self, gpu: &Gpu, language: Language) -> Result<Pipeline, GpuError> {
+        gpu.pipeline(&compile(language, self.module, &self.kernel(language))?)
+    }
+
+    /// Runs one batch as one dispatch and compares every case with the mirror; `Ok(Err(_))`
+    /// describes the first disagreement.
+    pub fn check_batch(
+        &self,
+        gpu: &Gpu,
+        pipeline: &Pipeline,
+        batch: &[A],
+    ) -> Result<Result<(), String>, GpuError> {
+        self.compare(gpu, pipeline, batch, &mut Stats::default())
+    }
+
     fn compare(
         &self,
         gpu: &Gpu,
@@ -171,8 +187,7 @@ impl<A: GpuArgs + 'static, R: GpuValue + 'static> Check for FunctionCheck<A, R> 
     }
 
     fn run(&self, gpu: &Gpu, language: Language, config: &RunConfig) -> Result<Report, GpuError> {
-        let spirv = compile(language, self.module, &self.kernel(language))?;
-        let pipeline = gpu.pipeline(&spirv)?;
+        let pipeline = self.pipeline(gpu, language)?;
         let half = (config.batch / 2).max(1);
         let batches = config.cases.div_ceil(half).max(1) as u32;
         let mut runner = TestRunner::new(Config {

@@ -374,43 +374,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
                     + ulps(2.0, expected)
             },
         }),
-        Box::new(FunctionCheck {
-            module: Module::RayCone,
-            function: "texture_lod",
-            strategy: || {
-                (
-                    -20.0f32..20.0,
-                    scalar(),
-                    (pixels(), pixels()),
-                    normal_and_direction(),
-                )
-                    .prop_map(|(base, width, (w, h), (n, d))| (base, width, Vec2::new(w, h), n, d))
-                    .boxed()
-            },
-            mirror: |(base, width, size, normal, direction)| {
-                rc::texture_lod(base, width, size, normal, direction)
-            },
-            // Four log2 (their own errors), the dot's rounding through log2 (relative error / ln 2),
-            // and four additions (4 ULP of the sum of term magnitudes).
-            tolerance: |&(base, width, size, normal, direction), _, _| {
-                let size = size.max(Vec2::ONE);
-                let logs = [
-                    width.abs().max(MIN_MAGNITUDE).log2(),
-                    size.x.log2(),
-                    size.y.log2(),
-                ];
-                let cos = clamped_cos(normal, direction);
-                let log_cos = cos.log2();
-                log2_error(logs[0])
-                    + 0.5 * (log2_error(logs[1]) + log2_error(logs[2]))
-                    + log2_error(log_cos)
-                    + dot_error(normal, direction) / cos / std::f32::consts::LN_2
-                    + ulps(
-                        4.0,
-                        base.abs() + logs[0].abs() + 0.5 * (logs[1] + logs[2]) + log_cos.abs(),
-                    )
-            },
-        }),
+        Box::new(texture_lod()),
         Box::new(FunctionCheck {
             module: Module::RayCone,
             function: "texture_gradient",
@@ -429,4 +393,48 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             tolerance: |_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected),
         }),
     ]
+}
+
+/// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
+pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);
+
+/// The check of `rf_texture_lod` (also measured by the harness benchmark).
+pub fn texture_lod() -> FunctionCheck<TextureLodArgs, f32> {
+    FunctionCheck {
+        module: Module::RayCone,
+        function: "texture_lod",
+        strategy: || {
+            (
+                -20.0f32..20.0,
+                scalar(),
+                (pixels(), pixels()),
+                normal_and_direction(),
+            )
+                .prop_map(|(base, width, (w, h), (n, d))| (base, width, Vec2::new(w, h), n, d))
+                .boxed()
+        },
+        mirror: |(base, width, size, normal, direction)| {
+            rc::texture_lod(base, width, size, normal, direction)
+        },
+        // Four log2 (their own errors), the dot's rounding through log2 (relative error / ln 2),
+        // and four additions (4 ULP of the sum of term magnitudes).
+        tolerance: |&(base, width, size, normal, direction), _, _| {
+            let size = size.max(Vec2::ONE);
+            let logs = [
+                width.abs().max(MIN_MAGNITUDE).log2(),
+                size.x.log2(),
+                size.y.log2(),
+            ];
+            let cos = clamped_cos(normal, direction);
+            let log_cos = cos.log2();
+            log2_error(logs[0])
+                + 0.5 * (log2_error(logs[1]) + log2_error(logs[2]))
+                + log2_error(log_cos)
+                + dot_error(normal, direction) / cos / std::f32::consts::LN_2
+                + ulps(
+                    4.0,
+                    base.abs() + logs[0].abs() + 0.5 * (logs[1] + logs[2]) + log_cos.abs(),
+                )
+        },
+    }
 }

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Installs what ray-footprint's GPU tests and main job need on Debian 12 (bookworm): the Vulkan
+# loader, Mesa's lavapipe >= 24.1 from bookworm-backports (bookworm's own 22.3 lacks ray tracing),
+# the Khronos validation layer, glslang and SPIRV-Tools. Idempotent: installs only what is missing.
+# Elsewhere it prints what to install and exits non-zero.
+set -euo pipefail
+
+MIN_MESA=24.1
+PACKAGES=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools)
+
+say() { printf 'setup: %s\n' "$*"; }
+
+other_system() {
+    say "this script installs packages on Debian 12 (bookworm) only."
+    say "elsewhere, install: the Vulkan loader, Mesa lavapipe >= $MIN_MESA (VK_KHR_ray_tracing_pipeline),"
+    say "the Khronos validation layer (VK_LAYER_KHRONOS_validation), glslangValidator and SPIRV-Tools,"
+    say "and a Rust toolchain (1.87 or newer)."
+    exit 1
+}
+
+[ -r /etc/os-release ] || other_system
+. /etc/os-release
+[ "${ID:-}" = debian ] && [ "${VERSION_CODENAME:-}" = bookworm ] || other_system
+
+if [ "$(id -u)" -eq 0 ]; then SUDO=(); elif command -v sudo >/dev/null; then SUDO=(sudo); else
+    say "need root (or sudo) to install packages"; exit 1
+fi
+
+mesa_version() { dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true; }
+
+missing=()
+for package in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed' || missing+=("$package")
+done
+mesa=$(mesa_version)
+if [ -n "$mesa" ] && dpkg --compare-versions "$mesa" lt "$MIN_MESA"; then
+    say "mesa-vulkan-drivers $mesa is older than $MIN_MESA"
+    missing+=(mesa-vulkan-drivers)
+fi
+
+if [ ${#missing[@]} -eq 0 ]; then
+    say "everything is installed (mesa-vulkan-drivers $mesa)"
+    exit 0
+fi
+
+if ! grep -rqs '^[^#]*bookworm-backports' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+    say "adding bookworm-backports"
+    echo 'deb http://deb.debian.org/debian bookworm-backports main' |
+        "${SUDO[@]}" tee /etc/apt/sources.list.d/bookworm-backports.list >/dev/null
+fi
+say "installing: ${missing[*]}"
+"${SUDO[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${SUDO[@]}" apt-get install -y -qq -t bookworm-backports "${PACKAGES[@]}" >/dev/null
+mesa=$(mesa_version)
+if dpkg --compare-versions "$mesa" lt "$MIN_MESA"; then
+    say "mesa-vulkan-drivers $mesa is still older than $MIN_MESA"; exit 1
+fi
+say "installed; mesa-vulkan-drivers $mesa"
