@@ -56,7 +56,7 @@ impl Xorshift {
 }
 
 enum Generator {
-    Proptest(TestRunner),
+    Proptest(Box<TestRunner>),
     Xorshift(Xorshift),
 }
 
@@ -117,7 +117,7 @@ fn main() {
         );
         for batch in [1024, 16 * 1024, 64 * 1024, 256 * 1024] {
             for generator in [
-                &mut Generator::Proptest(TestRunner::deterministic()),
+                &mut Generator::Proptest(Box::new(TestRunner::deterministic())),
                 &mut xorshift,
             ] {
                 let batches = EVALUATIONS.div_ceil(batch);

@@ -161,7 +161,7 @@ impl<A: GpuArgs + 'static, R: GpuValue + 'static> FunctionCheck<A, R> {
                     (got - expected).abs()
                 };
                 let tolerance = (self.tolerance)(args, index, expected);
-                if !(error <= tolerance) {
+                if error.is_nan() || error > tolerance {
                     return Ok(Err(format!(
                         "component {index} differs by {error:e} (tolerance {tolerance:e})\n  input:  {args:?}\n  mirror: {mirror_value:?}\n  shader: {shader_value:?}"
                     )));
