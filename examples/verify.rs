@@ -1,5 +1,6 @@
-//! The main job: runs the whole agreement suite on the local Vulkan device (lavapipe unless
-//! `RAY_FOOTPRINT_DEVICE` names another) and prints one line per function and language.
+//! The main job: prints the layout of every struct shared between Rust and the shaders (Rust,
+//! WGSL, GLSL std430, GLSL scalar), then runs the whole agreement suite on the local Vulkan device
+//! (lavapipe unless `RAY_FOOTPRINT_DEVICE` names another), one line per function and language.
 //!
 //! `cargo run --release --all-features --example verify [-- --cases N]`
 
@@ -14,6 +15,14 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    println!("layouts of the shared structs (offset/size in bytes):");
+    match ray_footprint::abi::verify_shared_layouts() {
+        Ok(tables) => println!("{tables}\nall layouts equal\n"),
+        Err(error) => {
+            eprintln!("error: {error}");
+            return ExitCode::FAILURE;
+        }
+    }
     let gpu = match Gpu::new() {
         Ok(gpu) => gpu,
         Err(error) => {

@@ -7,6 +7,9 @@
 //! mirror, function by function.
 #![deny(missing_docs)]
 
+pub mod abi;
+#[cfg(feature = "validate")]
+pub mod layout;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;

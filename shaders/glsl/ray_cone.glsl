@@ -27,6 +27,23 @@ struct RfRayCone {
     float spread_angle;
 };
 
+// A ray payload carrying a cone (32 bytes, 16-byte aligned; the same layout in WGSL, std430 and
+// scalar): accumulated colour, path weight, the cone, and the bounce depth. pad is always 0.
+struct RfHitPayload {
+    vec3 colour;
+    float weight;
+    RfRayCone cone;
+    uint depth;
+    uint pad;
+};
+
+// Push constants of a ray-cone renderer (8 bytes): textureGrad scale (0 = mip 0, 1 = matching,
+// > 1 blurred) and the pixel spread angle of the camera.
+struct RfRayConePushConstants {
+    float tex_grad_scale;
+    float pixel_spread_angle;
+};
+
 // Packs a cone as two f16 (width low, spread high), clamped to the f16 range.
 uint rf_pack_ray_cone(RfRayCone cone) {
     vec2 values = vec2(cone.width, cone.spread_angle);

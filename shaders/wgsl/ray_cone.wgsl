@@ -23,6 +23,23 @@ struct RfRayCone {
     spread_angle: f32,
 }
 
+// A ray payload carrying a cone (32 bytes, 16-byte aligned; the same layout in WGSL, std430 and
+// scalar): accumulated colour, path weight, the cone, and the bounce depth. pad is always 0.
+struct RfHitPayload {
+    colour: vec3<f32>,
+    weight: f32,
+    cone: RfRayCone,
+    depth: u32,
+    pad: u32,
+}
+
+// Push constants of a ray-cone renderer (8 bytes): textureGrad scale (0 = mip 0, 1 = matching,
+// > 1 blurred) and the pixel spread angle of the camera.
+struct RfRayConePushConstants {
+    tex_grad_scale: f32,
+    pixel_spread_angle: f32,
+}
+
 // Packs a cone as two f16 (width low, spread high), clamped to the f16 range.
 fn rf_pack_ray_cone(cone: RfRayCone) -> u32 {
     let values = vec2<f32>(cone.width, cone.spread_angle);

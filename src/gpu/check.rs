@@ -116,7 +116,7 @@ impl<A: GpuArgs + 'static, R: GpuValue + 'static> FunctionCheck<A, R> {
     /// Compiles this check's kernel for `language` into a pipeline (destroy it with
     /// [`Gpu::destroy_pipeline`]).
     pub fn pipeline(&self, gpu: &Gpu, language: Language) -> Result<Pipeline, GpuError> {
-        gpu.pipeline(&compile(language, self.module, &self.kernel(language))?)
+        gpu.pipeline(&compile(language, self.module, &self.kernel(language))?, 0)
     }
 
     /// Runs one batch as one dispatch and compares every case with the mirror; `Ok(Err(_))`

@@ -58,11 +58,13 @@ fn vulkan(call: &'static str) -> impl FnOnce(vk::Result) -> GpuError {
     move |result| GpuError::Vulkan(call, result)
 }
 
-/// A compute pipeline for one generated kernel: binding 0 the input words, binding 1 the output words.
+/// A compute pipeline for one kernel: binding 0 the input buffer, binding 1 the output words, and
+/// optionally a push-constant block.
 pub struct Pipeline {
     pipeline: vk::Pipeline,
     layout: vk::PipelineLayout,
     set_layout: vk::DescriptorSetLayout,
+    push_constant_bytes: u32,
 }
 
 /// A Vulkan device (lavapipe unless [`DEVICE_ENV`] names another) with the validation layer on.
@@ -218,8 +220,9 @@ impl Gpu {
         }
     }
 
-    /// Creates a compute pipeline from SPIR-V words whose entry point is `main`.
-    pub fn pipeline(&self, spirv: &[u32]) -> Result<Pipeline, GpuError> {
+    /// Creates a compute pipeline from SPIR-V words whose entry point is `main`, with a
+    /// push-constant range of `push_constant_bytes` (0 for none).
+    pub fn pipeline(&self, spirv: &[u32], push_constant_bytes: u32) -> Result<Pipeline, GpuError> {
         // SAFETY: valid create-info structs; objects are destroyed by `destroy_pipeline`.
         unsafe {
             let module = self
@@ -241,12 +244,20 @@ impl Gpu {
                 )
                 .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
             let set_layouts = [set_layout];
+            let ranges = [vk::PushConstantRange::default()
+                .stage_flags(vk::ShaderStageFlags::COMPUTE)
+                .size(push_constant_bytes)];
+            let ranges = if push_constant_bytes == 0 {
+                &ranges[..0]
+            } else {
+                &ranges[..]
+            };
+            let layout_info = vk::PipelineLayoutCreateInfo::default()
+                .set_layouts(&set_layouts)
+                .push_constant_ranges(ranges);
             let layout = self
                 .device
-                .create_pipeline_layout(
-                    &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts),
-                    None,
-                )
+                .create_pipeline_layout(&layout_info, None)
                 .map_err(vulkan("vkCreatePipelineLayout"))?;
             let stage = vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::COMPUTE)
@@ -265,6 +276,7 @@ impl Gpu {
                 pipeline,
                 layout,
                 set_layout,
+                push_constant_bytes,
             };
             self.check_messages()?;
             Ok(pipeline)
@@ -292,6 +304,19 @@ impl Gpu {
         input: &[u32],
         output_words: usize,
     ) -> Result<Vec<u32>, GpuError> {
+        self.dispatch_with_push_constants(pipeline, cases, input, output_words, &[])
+    }
+
+    /// [`Gpu::dispatch`] with `push_constants` (the pipeline's push-constant range is filled from
+    /// the start; missing bytes are zero).
+    pub fn dispatch_with_push_constants(
+        &self,
+        pipeline: &Pipeline,
+        cases: usize,
+        input: &[u32],
+        output_words: usize,
+        push_constants: &[u8],
+    ) -> Result<Vec<u32>, GpuError> {
         let groups = cases.div_ceil(WORKGROUP_SIZE as usize);
         if groups > self.max_groups as usize {
             return Err(GpuError::BatchTooLarge(cases));
@@ -305,8 +330,14 @@ impl Gpu {
             }
         };
         let result = self.write(&input_buffer, input).and_then(|()| {
-            self.record_and_submit(pipeline, groups as u32, &input_buffer, &output_buffer)
-                .and_then(|()| self.read(&output_buffer, output_words))
+            self.record_and_submit(
+                pipeline,
+                groups as u32,
+                &input_buffer,
+                &output_buffer,
+                push_constants,
+            )
+            .and_then(|()| self.read(&output_buffer, output_words))
         });
         self.free(input_buffer);
         self.free(output_buffer);
@@ -404,6 +435,7 @@ impl Gpu {
         groups: u32,
         input: &HostBuffer,
         output: &HostBuffer,
+        push_constants: &[u8],
     ) -> Result<(), GpuError> {
         // SAFETY: every handle belongs to this device; the submission is waited for before return,
         // after which the descriptor pool, fence and command buffer are freed.
@@ -435,7 +467,15 @@ impl Gpu {
             let result = command_buffers
                 .map_err(vulkan("vkAllocateCommandBuffers"))
                 .and_then(|buffers| {
-                    let submitted = self.submit(pipeline, pool, buffers[0], fence, groups, input, output);
+                    let submitted = self.submit(
+                        pipeline,
+                        pool,
+                        buffers[0],
+                        fence,
+                        groups,
+                        [input, output],
+                        push_constants,
+                    );
                     self.device.free_command_buffers(self.pool, &buffers);
                     submitted
                 });
@@ -453,8 +493,8 @@ impl Gpu {
         command_buffer: vk::CommandBuffer,
         fence: vk::Fence,
         groups: u32,
-        input: &HostBuffer,
-        output: &HostBuffer,
+        buffers: [&HostBuffer; 2],
+        push_constants: &[u8],
     ) -> Result<(), GpuError> {
         // SAFETY: see `record_and_submit`.
         unsafe {
@@ -467,7 +507,7 @@ impl Gpu {
                         .set_layouts(&set_layouts),
                 )
                 .map_err(vulkan("vkAllocateDescriptorSets"))?[0];
-            let infos = [input, output].map(|host| {
+            let infos = buffers.map(|host| {
                 [vk::DescriptorBufferInfo::default()
                     .buffer(host.buffer)
                     .range(host.size)]
@@ -495,6 +535,18 @@ impl Gpu {
                 &[set],
                 &[],
             );
+            if pipeline.push_constant_bytes > 0 {
+                let mut bytes = vec![0u8; pipeline.push_constant_bytes as usize];
+                let used = push_constants.len().min(bytes.len());
+                bytes[..used].copy_from_slice(&push_constants[..used]);
+                self.device.cmd_push_constants(
+                    command_buffer,
+                    pipeline.layout,
+                    vk::ShaderStageFlags::COMPUTE,
+                    0,
+                    &bytes,
+                );
+            }
             self.device.cmd_dispatch(command_buffer, groups, 1, 1);
             let barrier = vk::MemoryBarrier::default()
                 .src_access_mask(vk::AccessFlags::SHADER_WRITE)

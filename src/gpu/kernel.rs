@@ -6,7 +6,8 @@
 //! and are compiled by glslang (`glslangValidator`).
 
 use super::device::{GpuError, WORKGROUP_SIZE};
-use super::value::ShaderType;
+use super::value::{ShaderType, StructType};
+use crate::layout::GlslPacking;
 use crate::shaders::{Module, GLSL_INCLUDE_DIR};
 use std::fmt::Write as _;
 use std::process::Command;
@@ -101,6 +102,68 @@ void main() {{
     }
 }
 
+/// The source of an echo kernel for the struct `ty` declared by `module`: invocation `i` reads
+/// element `i` of a storage buffer of `ty` (binding 0) and the push-constant block (a `ty`), and
+/// writes every field of both, by name and in declaration order, as words to binding 1 (the
+/// element first, then the push constants). GLSL blocks use `packing`; WGSL has its own rules.
+pub fn echo_kernel_source(
+    language: Language,
+    packing: GlslPacking,
+    module: Module,
+    ty: &'static StructType,
+) -> String {
+    let syntax = Syntax::of(language);
+    let words = ShaderType::Struct(ty).words();
+    let mut stores = String::new();
+    syntax.store(ShaderType::Struct(ty), "stored", &mut 0, &mut stores);
+    syntax.store(ShaderType::Struct(ty), "pushed", &mut { words }, &mut stores);
+    let name = ty.name;
+    let out_words = 2 * words;
+    match language {
+        Language::Wgsl => format!(
+            "{module_source}
+@group(0) @binding(0) var<storage, read> echo_values: array<{name}>;
+@group(0) @binding(1) var<storage, read_write> kernel_outputs: array<u32>;
+var<immediate> echo_push: {name};
+
+@compute @workgroup_size({WORKGROUP_SIZE})
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {{
+    if id.x >= arrayLength(&echo_values) {{
+        return;
+    }}
+    let o = id.x * {out_words}u;
+    let stored = echo_values[id.x];
+    let pushed = echo_push;
+{stores}}}
+",
+            module_source = module.wgsl()
+        ),
+        Language::Glsl => format!(
+            "#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+#include \"{stem}.glsl\"
+
+layout(local_size_x = {WORKGROUP_SIZE}) in;
+layout({packing}, set = 0, binding = 0) readonly buffer EchoValues {{ {name} echo_values[]; }};
+layout(std430, set = 0, binding = 1) writeonly buffer KernelOutputs {{ uint kernel_outputs[]; }};
+layout({packing}, push_constant) uniform EchoPush {{ {name} echo_push; }};
+
+void main() {{
+    if (gl_GlobalInvocationID.x >= uint(echo_values.length())) {{
+        return;
+    }}
+    uint o = gl_GlobalInvocationID.x * {out_words}u;
+    {name} stored = echo_values[gl_GlobalInvocationID.x];
+    {name} pushed = echo_push;
+{stores}}}
+",
+            stem = module.stem(),
+            packing = packing.qualifier(),
+        ),
+    }
+}
+
 /// Compiles a kernel that uses `module` to SPIR-V words.
 pub fn compile(language: Language, module: Module, source: &str) -> Result<Vec<u32>, GpuError> {
     match language {
@@ -121,7 +184,8 @@ pub fn naga_capabilities(module: Module) -> naga::valid::Capabilities {
 }
 
 fn compile_wgsl(module: Module, source: &str) -> Result<Vec<u32>, GpuError> {
-    let capabilities = naga_capabilities(module);
+    // Kernels may declare push constants (`var<immediate>`).
+    let capabilities = naga_capabilities(module) | naga::valid::Capabilities::IMMEDIATES;
     let module = naga::front::wgsl::parse_str(source)
         .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "kernel.wgsl")))?;
     let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)

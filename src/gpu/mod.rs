@@ -29,5 +29,5 @@ mod value;
 
 pub use check::{Check, FunctionCheck, Report, RunConfig};
 pub use device::{Gpu, GpuError, Pipeline, DEVICE_ENV, SETUP_COMMAND};
-pub use kernel::{compile, kernel_source, naga_capabilities, Language};
-pub use value::{GpuArgs, GpuValue, ShaderType, StructType, RAY_CONE};
+pub use kernel::{compile, echo_kernel_source, kernel_source, naga_capabilities, Language};
+pub use value::{GpuArgs, GpuValue, ShaderType, StructType, HIT_PAYLOAD, RAY_CONE, RAY_CONE_PUSH_CONSTANTS};

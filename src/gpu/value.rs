@@ -47,6 +47,27 @@ pub const RAY_CONE: StructType = StructType {
     fields: &[("width", ShaderType::F32), ("spread_angle", ShaderType::F32)],
 };
 
+/// The hit payload as the shaders declare it.
+pub const HIT_PAYLOAD: StructType = StructType {
+    name: "RfHitPayload",
+    fields: &[
+        ("colour", ShaderType::Vec3),
+        ("weight", ShaderType::F32),
+        ("cone", ShaderType::Struct(&RAY_CONE)),
+        ("depth", ShaderType::U32),
+        ("pad", ShaderType::U32),
+    ],
+};
+
+/// The ray-cone push constants as the shaders declare them.
+pub const RAY_CONE_PUSH_CONSTANTS: StructType = StructType {
+    name: "RfRayConePushConstants",
+    fields: &[
+        ("tex_grad_scale", ShaderType::F32),
+        ("pixel_spread_angle", ShaderType::F32),
+    ],
+};
+
 impl ShaderType {
     /// How many 32-bit words the value takes.
     pub fn words(self) -> usize {
