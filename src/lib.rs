@@ -10,6 +10,8 @@
 pub mod abi;
 #[cfg(feature = "validate")]
 pub mod layout;
+#[cfg(feature = "naga_oil")]
+pub mod naga_oil;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;

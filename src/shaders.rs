@@ -1,12 +1,23 @@
-//! The shader modules as source text, and where they live on disk.
+//! The shader modules as source text, and the ways to include them in your shaders.
 //!
 //! Each concept is one WGSL module and one GLSL module with the same stem. The modules declare only
-//! functions, structs and constants, all prefixed `rf_` / `Rf` / `RF_`, so they can be pasted in front
-//! of a user's shader (WGSL) or `#include`d (GLSL, with `GL_GOOGLE_include_directive` and
-//! [`GLSL_INCLUDE_DIR`] on the include path).
+//! functions, structs and constants, all prefixed `rf_` / `Rf` / `RF_`, and none depends on another,
+//! so any set of them can be combined with each other and with your code.
 //!
-//! A dependent's build script also finds the GLSL include directory in the environment variable
-//! `DEP_RAY_FOOTPRINT_GLSL_INCLUDE`.
+//! - WGSL, pasted in front of your shader: [`wgsl_prelude`].
+//! - GLSL with glslang: `#include "ray_cone.glsl"` with [`GLSL_INCLUDE_DIR`] on the include path
+//!   (`glslangValidator -I...`); a dependent's build script finds the same directory in the
+//!   environment variable `DEP_RAY_FOOTPRINT_GLSL_INCLUDE`.
+//! - GLSL with shaderc: [`resolve_glsl_include`] as the include callback.
+//! - naga_oil (Bevy): `ray_footprint::naga_oil::add_composable_modules` (feature `naga_oil`).
+//!
+//! ```
+//! use ray_footprint::shaders::{wgsl_prelude, Module};
+//!
+//! let my_shader = "fn lod_at(t: f32) -> f32 { return rf_width_at(RfRayCone(0.0, 0.001), t); }";
+//! let source = format!("{}{}", wgsl_prelude(&[Module::RayCone]), my_shader);
+//! assert!(source.contains("fn rf_width_at"));
+//! ```
 
 /// Directory holding the GLSL modules, for `glslangValidator -I` or a shaderc include callback.
 pub const GLSL_INCLUDE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/glsl");
@@ -71,4 +82,64 @@ impl Module {
     pub fn needs_f64(self) -> bool {
         self.stem().ends_with("_f64")
     }
+}
+
+/// The WGSL sources of `modules`, each once, in the order of [`Module::ALL`], ready to be
+/// pasted in front of a shader. The modules do not depend on one another, so this is every
+/// module the listed ones need.
+pub fn wgsl_prelude(modules: &[Module]) -> String {
+    Module::ALL
+        .iter()
+        .filter(|module| modules.contains(module))
+        .map(|module| format!("{}\n", module.wgsl()))
+        .collect()
+}
+
+/// An `#include` this crate does not serve.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct IncludeError {
+    /// The name that was asked for.
+    pub requested: String,
+}
+
+impl std::fmt::Display for IncludeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "ray-footprint has no GLSL module named {:?}; available: ",
+            self.requested
+        )?;
+        let names: Vec<String> = Module::ALL
+            .iter()
+            .map(|module| format!("{}.glsl", module.stem()))
+            .collect();
+        write!(f, "{}", names.join(", "))
+    }
+}
+
+impl std::error::Error for IncludeError {}
+
+/// Resolves a GLSL `#include` of one of this crate's modules by its file name (`"ray_cone.glsl"`)
+/// to `(resolved name, source)`, for a shaderc include callback or any other resolver.
+///
+/// Only the exact file names of the modules resolve, from sources embedded in the crate: the file
+/// system is never read, so no request (`..`, absolute paths, symlinks) can reach anything else.
+///
+/// ```
+/// use ray_footprint::shaders::resolve_glsl_include;
+///
+/// let (name, source) = resolve_glsl_include("ray_cone.glsl")?;
+/// assert_eq!(name, "ray_footprint/ray_cone.glsl");
+/// assert!(source.contains("rf_width_at"));
+/// assert!(resolve_glsl_include("../Cargo.toml").is_err());
+/// # Ok::<(), ray_footprint::shaders::IncludeError>(())
+/// ```
+pub fn resolve_glsl_include(requested: &str) -> Result<(String, &'static str), IncludeError> {
+    Module::ALL
+        .iter()
+        .find(|module| requested.strip_suffix(".glsl") == Some(module.stem()))
+        .map(|module| (format!("ray_footprint/{}.glsl", module.stem()), module.glsl()))
+        .ok_or_else(|| IncludeError {
+            requested: requested.to_string(),
+        })
 }
