@@ -147,10 +147,13 @@ pub fn edge_position(barycentrics: Vec3) -> f32 {
 ///
 /// `mix(x, y, a)` is spelled as GLSL defines it, `x * (1 - a) + y * a`. Clamps: `e` to `[0, 1]` (its
 /// range for barycentrics, which also keeps `sin` inside `[-pi, pi]` where its precision is
-/// specified), each `thickness_var` component to `[0, MAX_LINE_THICKNESS]`.
+/// specified); `a = 1 - sin(e * pi)` to `[0, 1]`, because `sin` of the f32 nearest pi is slightly
+/// negative (and a device's `sin` may be off by 2^-11), which would extrapolate beyond `var` (at a
+/// vertex, `var = (1e6, 0.1)` would give a negative thickness); each `thickness_var` component to
+/// `[0, MAX_LINE_THICKNESS]`. The result lies between the two clamped factors.
 pub fn edge_thickness(thickness_var: Vec2, edge_position: f32) -> f32 {
     let factors = thickness_var.clamp(Vec2::ZERO, Vec2::splat(MAX_LINE_THICKNESS));
-    let towards_vertex = 1.0 - (edge_position.clamp(0.0, 1.0) * std::f32::consts::PI).sin();
+    let towards_vertex = (1.0 - (edge_position.clamp(0.0, 1.0) * std::f32::consts::PI).sin()).clamp(0.0, 1.0);
     factors.x * (1.0 - towards_vertex) + factors.y * towards_vertex
 }
 

@@ -63,10 +63,11 @@ float rf_edge_position(vec3 barycentrics) {
 }
 
 // Thickness factor along an edge: mix(var.x, var.y, 1 - sin(e pi)), var.x at the middle, var.y at
-// the vertices; e clamped to [0, 1], var to [0, RF_MAX_LINE_THICKNESS].
+// the vertices; e and 1 - sin(e pi) clamped to [0, 1] (sin of the f32 nearest pi is negative: no
+// extrapolation beyond var), var to [0, RF_MAX_LINE_THICKNESS].
 float rf_edge_thickness(vec2 thickness_var, float edge_position) {
     vec2 factors = clamp(thickness_var, vec2(0.0), vec2(RF_MAX_LINE_THICKNESS));
-    float towards_vertex = 1.0 - sin(clamp(edge_position, 0.0, 1.0) * 3.14159265358979);
+    float towards_vertex = clamp(1.0 - sin(clamp(edge_position, 0.0, 1.0) * 3.14159265358979), 0.0, 1.0);
     return mix(factors.x, factors.y, towards_vertex);
 }
 

@@ -61,10 +61,11 @@ fn rf_edge_position(barycentrics: vec3<f32>) -> f32 {
 }
 
 // Thickness factor along an edge: mix(var.x, var.y, 1 - sin(e pi)), var.x at the middle, var.y at
-// the vertices; e clamped to [0, 1], var to [0, RF_MAX_LINE_THICKNESS].
+// the vertices; e and 1 - sin(e pi) clamped to [0, 1] (sin of the f32 nearest pi is negative: no
+// extrapolation beyond var), var to [0, RF_MAX_LINE_THICKNESS].
 fn rf_edge_thickness(thickness_var: vec2<f32>, edge_position: f32) -> f32 {
     let factors = clamp(thickness_var, vec2<f32>(0.0), vec2<f32>(RF_MAX_LINE_THICKNESS));
-    let towards_vertex = 1.0 - sin(clamp(edge_position, 0.0, 1.0) * 3.14159265358979);
+    let towards_vertex = clamp(1.0 - sin(clamp(edge_position, 0.0, 1.0) * 3.14159265358979), 0.0, 1.0);
     return mix(factors.x, factors.y, towards_vertex);
 }
 
