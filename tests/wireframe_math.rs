@@ -503,3 +503,124 @@ fn settings_io_is_32_bytes_with_the_documented_offsets() {
     assert_eq!(&bytes[24..28], &10i32.to_le_bytes(), "stipple_repeats");
     assert_eq!(&bytes[28..32], &0i32.to_le_bytes(), "screen_space flag");
 }
+
+/// The Io mirror's Rust offsets and size, for the layout comparisons.
+#[cfg(feature = "gpu")]
+fn rust_io_layout() -> (Vec<u32>, u32) {
+    use std::mem::{offset_of, size_of};
+    let offsets = [
+        offset_of!(WireframeSettingsIo, thickness_var),
+        offset_of!(WireframeSettingsIo, thickness),
+        offset_of!(WireframeSettingsIo, smoothing),
+        offset_of!(WireframeSettingsIo, stipple),
+        offset_of!(WireframeSettingsIo, stipple_length),
+        offset_of!(WireframeSettingsIo, stipple_repeats),
+        offset_of!(WireframeSettingsIo, screen_space),
+    ];
+    (
+        offsets.map(|o| o as u32).to_vec(),
+        size_of::<WireframeSettingsIo>() as u32,
+    )
+}
+
+/// naga's WGSL layout of `RfWireframeSettingsIo` equals Rust's.
+#[cfg(feature = "gpu")]
+#[test]
+fn settings_io_wgsl_layout_matches_rust() {
+    let module = naga::front::wgsl::parse_str(Module::Wireframe.wgsl()).expect("the module parses");
+    let (_, io) = module
+        .types
+        .iter()
+        .find(|(_, ty)| ty.name.as_deref() == Some("RfWireframeSettingsIo"))
+        .expect("RfWireframeSettingsIo is declared");
+    let naga::TypeInner::Struct { members, span } = &io.inner else {
+        panic!("RfWireframeSettingsIo is a struct");
+    };
+    let offsets: Vec<u32> = members.iter().map(|m| m.offset).collect();
+    println!("WGSL (naga): offsets {offsets:?}, size {span}");
+    assert_eq!((offsets, *span), rust_io_layout());
+}
+
+/// glslang's `Offset` decorations of `RfWireframeSettingsIo` in a std430 block and in a scalar
+/// block, and the offset of the next member (the size), equal Rust's layout.
+#[cfg(feature = "gpu")]
+#[test]
+fn settings_io_glsl_std430_and_scalar_layouts_match_rust() {
+    for layout in ["std430", "scalar"] {
+        let source = format!(
+            "#version 460\n#extension GL_GOOGLE_include_directive : require\n\
+             #extension GL_EXT_scalar_block_layout : require\n#include \"wireframe.glsl\"\n\
+             layout(local_size_x = 1) in;\n\
+             layout({layout}, binding = 0) buffer Block {{ RfWireframeSettingsIo io; float after; }};\n\
+             void main() {{ after = rf_process_wireframe(rf_unpack_wireframe_settings(io), vec3(0.5), vec3(0.1)); }}\n"
+        );
+        let words = glslang_spirv(&source, layout);
+        let offsets = member_offsets(&words, "RfWireframeSettingsIo");
+        let block = member_offsets(&words, "Block");
+        println!("GLSL {layout} (glslang): offsets {offsets:?}, size {}", block[1]);
+        assert_eq!((offsets, block[1]), rust_io_layout(), "{layout}");
+    }
+}
+
+/// Compiles a compute shader with glslangValidator and returns its SPIR-V words.
+#[cfg(feature = "gpu")]
+fn glslang_spirv(source: &str, tag: &str) -> Vec<u32> {
+    let stem = std::env::temp_dir().join(format!(
+        "ray-footprint-wireframe-layout-{}-{tag}",
+        std::process::id()
+    ));
+    let (input, output) = (stem.with_extension("comp"), stem.with_extension("spv"));
+    std::fs::write(&input, source).expect("writing the shader");
+    let status = std::process::Command::new("glslangValidator")
+        .args(["--target-env", "vulkan1.1"])
+        .arg(format!("-I{}", ray_footprint::shaders::GLSL_INCLUDE_DIR))
+        .arg("-o")
+        .arg(&output)
+        .arg(&input)
+        .status()
+        .expect("glslangValidator runs");
+    assert!(status.success(), "glslang failed on:\n{source}");
+    let bytes = std::fs::read(&output).expect("reading SPIR-V");
+    let _ = std::fs::remove_file(&input);
+    let _ = std::fs::remove_file(&output);
+    bytes
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect()
+}
+
+/// The `Offset` decorations (`OpMemberDecorate %id member Offset n`) of the struct named `name`.
+#[cfg(feature = "gpu")]
+fn member_offsets(words: &[u32], name: &str) -> Vec<u32> {
+    const OP_NAME: u32 = 5;
+    const OP_MEMBER_DECORATE: u32 = 72;
+    const DECORATION_OFFSET: u32 = 35;
+    let mut instructions = Vec::new();
+    let mut at = 5; // after the header
+    while at < words.len() {
+        let (count, opcode) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        instructions.push((opcode, &words[at + 1..at + count]));
+        at += count.max(1);
+    }
+    let name_bytes: Vec<u8> = name.bytes().chain([0]).collect();
+    let named = |operands: &[u32]| {
+        let bytes: Vec<u8> = operands[1..].iter().flat_map(|w| w.to_le_bytes()).collect();
+        bytes.starts_with(&name_bytes)
+    };
+    // glslang declares the struct twice when a function also uses it by value: only the copy in
+    // the block carries offsets.
+    let ids: Vec<u32> = instructions
+        .iter()
+        .filter(|(opcode, operands)| *opcode == OP_NAME && named(operands))
+        .map(|(_, operands)| operands[0])
+        .collect();
+    let mut offsets: Vec<(u32, u32)> = instructions
+        .iter()
+        .filter(|(opcode, operands)| {
+            *opcode == OP_MEMBER_DECORATE && ids.contains(&operands[0]) && operands[2] == DECORATION_OFFSET
+        })
+        .map(|(_, operands)| (operands[1], operands[3]))
+        .collect();
+    offsets.sort();
+    offsets.into_iter().map(|(_, offset)| offset).collect()
+}
