@@ -51,7 +51,8 @@ pub struct WireframeSettings {
     pub stipple: bool,
     /// Fraction of each dash period that is drawn, in `[0, 1]` (clamped).
     pub stipple_length: f32,
-    /// Dash periods per half edge (edge middle to vertex); `<= 0` draws no dashes (a solid line).
+    /// Dash periods per edge (each half, from the edge middle to a vertex, holds half of them);
+    /// `<= 0` draws no dashes (a solid line).
     pub stipple_repeats: i32,
     /// `true`: `deltas` are per-pixel barycentric deltas and `thickness` is in pixels. `false`:
     /// deltas are taken as 1 and `thickness` is in barycentric units (the tutorial declares this flag
@@ -118,7 +119,7 @@ pub const WIREFRAME_THIN: WireframeSettings =
 /// Preset "wire line": stipple on with dashes covering the whole period, so a solid half-pixel line.
 pub const WIREFRAME_WIRE_LINE: WireframeSettings =
     WireframeSettings::new(0.5, Vec2::new(1.0, 1.0), 1.0, true, 1.0, 1, true);
-/// Preset "stipple": a half-pixel line in 20 dashes per half edge, half of each period drawn.
+/// Preset "stipple": a half-pixel line in 20 dashes per edge, half of each period drawn.
 pub const WIREFRAME_STIPPLE: WireframeSettings =
     WireframeSettings::new(0.5, Vec2::new(1.0, 1.0), 1.0, true, 0.5, 20, true);
 
