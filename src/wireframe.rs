@@ -1,3 +1,452 @@
 //! Anti-aliased wireframe from per-pixel barycentric deltas, with the bool-to-int settings mirror.
 //!
-//! The Rust mirror of `shaders/wgsl/wireframe.wgsl` and `shaders/glsl/wireframe.glsl`.
+//! The Rust mirror of `shaders/wgsl/wireframe.wgsl` and `shaders/glsl/wireframe.glsl`. Every function
+//! here has a shader twin with the same name prefixed `rf_` (constants `RF_`), in the same order,
+//! computing the same expression in the same order of operations.
+//!
+//! Source: NVIDIA's ray-tracing tutorial "20 Wireframe" (nvpro-samples `vk_raytracing_tutorial_KHR`,
+//! after `nvpro_core2/nvshaders/wireframe.h.slang`), cited as "the wireframe tutorial": a hit's
+//! barycentrics `b = (w, u, v)` and their per-pixel spread `deltas` (the ray tracer's `fwidth(b)`, see
+//! SPEC 2.10-2.11) give an edge coverage in `[0, 1]` to blend a wire colour with:
+//! `color = mix(shaded, wire, process_wireframe(settings, b, deltas))`.
+//!
+//! The tutorial's styling is a smoothstep per barycentric component against `deltas`, a thickness
+//! that varies along each edge, and an optional dash pattern. Its settings carry `bool`s, which cannot
+//! cross the CPU/GPU boundary as they are (1 byte in Rust and C++, 4 bytes in GLSL and Slang blocks,
+//! not allowed at all in WGSL host-shareable memory), hence the integer mirror
+//! [`WireframeSettingsIo`] and [`unpack_wireframe_settings`] / [`WireframeSettings::pack`].
+//!
+//! Where the tutorial is undefined (a smoothstep whose two edges coincide, a dash count of zero,
+//! negative or absurd sizes), the functions clamp with the constants below or take the documented
+//! limit, so finite inputs always give a finite coverage in `[0, 1]`.
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Vec2, Vec3};
+use std::fmt;
+
+/// Largest line half-width, ramp width and `thickness_var` component the functions use; larger values
+/// are clamped (a line a million pixels wide already covers any screen). Keeps every product finite.
+pub const MAX_LINE_THICKNESS: f32 = 1.0e6;
+/// Smallest anti-aliasing ramp width (in barycentric units) evaluated as a smoothstep; narrower ramps
+/// (smoothing 0, or a zero delta) are a hard step. A normal float, so no device flushes it to zero.
+pub const MIN_LINE_RAMP: f32 = 1.0e-30;
+
+/// How a wireframe is drawn; the shader-side struct `RfWireframeSettings`, with real `bool`s.
+///
+/// Meaning of the fields after SPEC section 3 and the wireframe tutorial's settings. In WGSL this
+/// struct can only be a function value or a constant: WGSL forbids `bool` in host-shareable memory
+/// (uniform, storage and push-constant blocks), so hosts upload a [`WireframeSettingsIo`] and the
+/// shader calls `rf_unpack_wireframe_settings`. GLSL could declare it in a block, but the `bool` is
+/// 4 bytes there and 1 byte in Rust: upload the Io mirror there too.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WireframeSettings {
+    /// Thickness factors along an edge: `x` at the edge middle, `y` at the vertices.
+    pub thickness_var: Vec2,
+    /// Line width factor: the line's half-width is `0.5 * thickness * edge_thickness` pixels (in
+    /// barycentric units when `screen_space` is off). 0 disables the wireframe.
+    pub thickness: f32,
+    /// Anti-aliasing ramp width as a multiple of `thickness`; 0 is a hard (aliased) edge.
+    pub smoothing: f32,
+    /// Whether the line is dashed.
+    pub stipple: bool,
+    /// Fraction of each dash period that is drawn, in `[0, 1]` (clamped).
+    pub stipple_length: f32,
+    /// Dash periods per edge (each half, from the edge middle to a vertex, holds half of them);
+    /// `<= 0` draws no dashes (a solid line).
+    pub stipple_repeats: i32,
+    /// `true`: `deltas` are per-pixel barycentric deltas and `thickness` is in pixels. `false`:
+    /// deltas are taken as 1 and `thickness` is in barycentric units (the tutorial declares this flag
+    /// but never reads it; SPEC 3 gives it this meaning).
+    pub screen_space: bool,
+}
+
+/// The host-shareable mirror of [`WireframeSettings`] (`RfWireframeSettingsIo`): every `bool` is an
+/// `i32`, 0 = false and any other value true (the wireframe tutorial's "bool as int" push-constant
+/// field, `WireframeSettingsIO`).
+///
+/// Layout: 32 bytes, no padding, identical in Rust (`#[repr(C)]`), WGSL, GLSL std430 and GLSL scalar
+/// block layout. `thickness_var` comes first because a `vec2` is 8-byte aligned in WGSL and std430;
+/// every later field is a 4-byte scalar at a multiple of 4, and 32 is a multiple of 8:
+///
+/// | field | offset |
+/// |---|---|
+/// | `thickness_var` | 0 |
+/// | `thickness` | 8 |
+/// | `smoothing` | 12 |
+/// | `stipple` | 16 |
+/// | `stipple_length` | 20 |
+/// | `stipple_repeats` | 24 |
+/// | `screen_space` | 28 |
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct WireframeSettingsIo {
+    /// As [`WireframeSettings::thickness_var`].
+    pub thickness_var: Vec2,
+    /// As [`WireframeSettings::thickness`].
+    pub thickness: f32,
+    /// As [`WireframeSettings::smoothing`].
+    pub smoothing: f32,
+    /// [`WireframeSettings::stipple`]: 0 = false, anything else true.
+    pub stipple: i32,
+    /// As [`WireframeSettings::stipple_length`].
+    pub stipple_length: f32,
+    /// As [`WireframeSettings::stipple_repeats`] (an `int` in the tutorial's settings).
+    pub stipple_repeats: i32,
+    /// [`WireframeSettings::screen_space`]: 0 = false, anything else true.
+    pub screen_space: i32,
+}
+
+const _: () = assert!(std::mem::size_of::<WireframeSettingsIo>() == 32);
+const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, thickness) == 8);
+const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, stipple) == 16);
+const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, screen_space) == 28);
+
+/// Preset "default" (wireframe tutorial): a 1-pixel anti-aliased solid line.
+pub const WIREFRAME_DEFAULT: WireframeSettings =
+    WireframeSettings::new(1.0, Vec2::new(1.0, 1.0), 1.0, false, 0.5, 5, true);
+/// Preset "wire dot": as the default with a ramp half as wide.
+pub const WIREFRAME_WIRE_DOT: WireframeSettings =
+    WireframeSettings::new(1.0, Vec2::new(1.0, 1.0), 0.5, false, 0.5, 5, true);
+/// Preset "star": thin barycentric-space lines that vanish at edge middles and grow to the vertices.
+pub const WIREFRAME_STAR: WireframeSettings =
+    WireframeSettings::new(0.1, Vec2::new(0.0, 1.0), 0.1, false, 0.5, 5, false);
+/// Preset "flake": dashed barycentric-space lines, widest at edge middles, vanishing at the vertices.
+pub const WIREFRAME_FLAKE: WireframeSettings =
+    WireframeSettings::new(0.1, Vec2::new(0.7, 0.0), 0.1, true, 0.8, 10, false);
+/// Preset "thin": a 0.3-pixel line with a wide (2x) anti-aliasing ramp.
+pub const WIREFRAME_THIN: WireframeSettings =
+    WireframeSettings::new(0.3, Vec2::new(1.0, 1.0), 2.0, false, 0.4, 8, true);
+/// Preset "wire line": stipple on with dashes covering the whole period, so a solid half-pixel line.
+pub const WIREFRAME_WIRE_LINE: WireframeSettings =
+    WireframeSettings::new(0.5, Vec2::new(1.0, 1.0), 1.0, true, 1.0, 1, true);
+/// Preset "stipple": a half-pixel line in 20 dashes per edge, half of each period drawn.
+pub const WIREFRAME_STIPPLE: WireframeSettings =
+    WireframeSettings::new(0.5, Vec2::new(1.0, 1.0), 1.0, true, 0.5, 20, true);
+
+/// Turns the host-shareable mirror back into settings: every integer flag becomes `flag != 0`
+/// (the wireframe tutorial's `unpackWireframeSettings`).
+pub fn unpack_wireframe_settings(io: WireframeSettingsIo) -> WireframeSettings {
+    WireframeSettings {
+        thickness_var: io.thickness_var,
+        thickness: io.thickness,
+        smoothing: io.smoothing,
+        stipple: io.stipple != 0,
+        stipple_length: io.stipple_length,
+        stipple_repeats: io.stipple_repeats,
+        screen_space: io.screen_space != 0,
+    }
+}
+
+/// Position along the nearest edge (wireframe tutorial, `edgePosition`):
+/// `e = max(b.x, b.y, b.z)`, 1 at a vertex and 0.5 at an edge middle (1/3 at the centroid).
+pub fn edge_position(barycentrics: Vec3) -> f32 {
+    barycentrics.x.max(barycentrics.y).max(barycentrics.z)
+}
+
+/// Thickness factor at edge position `e` (wireframe tutorial, `edgeThickness`):
+/// `mix(var.x, var.y, 1 - sin(e * pi))`, so `var.x` at an edge middle and `var.y` at a vertex.
+///
+/// `mix(x, y, a)` is spelled as GLSL defines it, `x * (1 - a) + y * a`. Clamps: `e` to `[0, 1]` (its
+/// range for barycentrics, which also keeps `sin` inside `[-pi, pi]` where its precision is
+/// specified); `a = 1 - sin(e * pi)` to `[0, 1]`, because `sin` of the f32 nearest pi is slightly
+/// negative (and a device's `sin` may be off by 2^-11), which would extrapolate beyond `var` (at a
+/// vertex, `var = (1e6, 0.1)` would give a negative thickness); each `thickness_var` component to
+/// `[0, MAX_LINE_THICKNESS]`. The result lies between the two clamped factors.
+pub fn edge_thickness(thickness_var: Vec2, edge_position: f32) -> f32 {
+    let factors = thickness_var.clamp(Vec2::ZERO, Vec2::splat(MAX_LINE_THICKNESS));
+    let towards_vertex = (1.0 - (edge_position.clamp(0.0, 1.0) * std::f32::consts::PI).sin()).clamp(0.0, 1.0);
+    factors.x * (1.0 - towards_vertex) + factors.y * towards_vertex
+}
+
+/// Dash pattern along an edge, 1 where the line is drawn and 0 in the gaps (wireframe tutorial,
+/// `stipple`): `offset = 0.5 * length / repeats`, `pattern = fract((e + offset) * repeats)`,
+/// 1 if `pattern < length`.
+///
+/// `fract(x)` is `x - floor(x)`, as in GLSL and WGSL (not Rust's `f32::fract`). Defined beyond the
+/// tutorial: `stipple_repeats <= 0` draws no dashes (returns 1); `stipple_length` is clamped to
+/// `[0, 1]` (1 = a solid line, 0 = nothing drawn) and `e` to `[0, 1]`.
+pub fn stipple(stipple_repeats: i32, stipple_length: f32, edge_position: f32) -> f32 {
+    if stipple_repeats <= 0 {
+        return 1.0;
+    }
+    let repeats = stipple_repeats as f32;
+    let drawn = stipple_length.clamp(0.0, 1.0);
+    let offset = 0.5 * drawn / repeats;
+    let period = (edge_position.clamp(0.0, 1.0) + offset) * repeats;
+    let pattern = period - period.floor();
+    if pattern < drawn {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+/// One barycentric component's distance-to-edge ramp: 0 below `start`, then the smoothstep
+/// `t * t * (3 - 2 * t)` with `t = min((x - start) / width, 1)`, reaching 1 at `start + width`.
+///
+/// This is `smoothstep(start, start + width, x)` of the wireframe tutorial's `getLineWidth`, written
+/// out so that it is defined everywhere: a ramp narrower than `MIN_LINE_RAMP` (including zero, where
+/// `smoothstep` is undefined) is the hard step `x < start ? 0 : 1`.
+pub fn edge_ramp(x: f32, start: f32, width: f32) -> f32 {
+    if x < start {
+        return 0.0;
+    }
+    if width <= MIN_LINE_RAMP {
+        return 1.0;
+    }
+    let t = ((x - start) / width).min(1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+/// Line coverage from the barycentrics and their per-pixel deltas (wireframe tutorial,
+/// `getLineWidth`): per component `s_i = smoothstep(d_i * th, d_i * (th + sm), b_i)`, coverage
+/// `1 - min(s_i)`; 1 on an edge, 0 farther than `d_i * (th + sm)` from every edge.
+///
+/// Evaluated as [`edge_ramp`]`(b_i, d_i * th, d_i * sm)` with `d = |deltas|` (deltas are magnitudes;
+/// the ramp width is the product `d_i * sm` itself, not a difference of edges, so it neither cancels
+/// nor overflows into `inf - inf`). `thickness` (`th`) and `smoothing` (`sm`) are clamped to
+/// `[0, MAX_LINE_THICKNESS]`. A zero delta or zero smoothing gives a hard step.
+pub fn line_width(deltas: Vec3, thickness: f32, smoothing: f32, barycentrics: Vec3) -> f32 {
+    let magnitude = deltas.abs();
+    let start = magnitude * thickness.clamp(0.0, MAX_LINE_THICKNESS);
+    let width = magnitude * smoothing.clamp(0.0, MAX_LINE_THICKNESS);
+    let ramp = Vec3::new(
+        edge_ramp(barycentrics.x, start.x, width.x),
+        edge_ramp(barycentrics.y, start.y, width.y),
+        edge_ramp(barycentrics.z, start.z, width.z),
+    );
+    1.0 - ramp.x.min(ramp.y).min(ramp.z)
+}
+
+/// Wireframe coverage in `[0, 1]` of a hit (wireframe tutorial, `processWireframe`):
+/// `e = edge_position(b)`, `th = 0.5 * thickness * edge_thickness(var, e)`, `sm = thickness * smoothing`,
+/// coverage `line_width(d, th, sm, b)`, times `stipple(repeats, length, e)` when `stipple` is on.
+///
+/// `d` is `deltas` when `screen_space` is on and `(1, 1, 1)` otherwise (thickness in barycentric
+/// units). A negative `thickness` is clamped to 0 (no line) before either product.
+pub fn process_wireframe(settings: WireframeSettings, barycentrics: Vec3, deltas: Vec3) -> f32 {
+    let e = edge_position(barycentrics);
+    let thickness = settings.thickness.max(0.0);
+    let half_width = 0.5 * thickness * edge_thickness(settings.thickness_var, e);
+    let ramp_width = thickness * settings.smoothing;
+    let pixel_deltas = if settings.screen_space { deltas } else { Vec3::ONE };
+    let coverage = line_width(pixel_deltas, half_width, ramp_width, barycentrics);
+    if settings.stipple {
+        coverage * stipple(settings.stipple_repeats, settings.stipple_length, e)
+    } else {
+        coverage
+    }
+}
+
+impl WireframeSettings {
+    /// Every preset with a display name for a UI, in SPEC 3's order (the wireframe tutorial's
+    /// preset table).
+    pub const PRESETS: [(&'static str, WireframeSettings); 7] = [
+        ("Default", WIREFRAME_DEFAULT),
+        ("Wire dot", WIREFRAME_WIRE_DOT),
+        ("Star", WIREFRAME_STAR),
+        ("Flake", WIREFRAME_FLAKE),
+        ("Thin", WIREFRAME_THIN),
+        ("Wire line", WIREFRAME_WIRE_LINE),
+        ("Stipple", WIREFRAME_STIPPLE),
+    ];
+
+    /// Settings in SPEC 3's column order, unchecked (the shader functions clamp as documented;
+    /// use [`WireframeSettings::try_new`] for values that come from a user).
+    pub const fn new(
+        thickness: f32,
+        thickness_var: Vec2,
+        smoothing: f32,
+        stipple: bool,
+        stipple_length: f32,
+        stipple_repeats: i32,
+        screen_space: bool,
+    ) -> WireframeSettings {
+        WireframeSettings {
+            thickness_var,
+            thickness,
+            smoothing,
+            stipple,
+            stipple_length,
+            stipple_repeats,
+            screen_space,
+        }
+    }
+
+    /// As [`WireframeSettings::new`], rejecting what [`WireframeSettings::validate`] rejects.
+    pub fn try_new(
+        thickness: f32,
+        thickness_var: Vec2,
+        smoothing: f32,
+        stipple: bool,
+        stipple_length: f32,
+        stipple_repeats: i32,
+        screen_space: bool,
+    ) -> Result<WireframeSettings, WireframeSettingsError> {
+        let settings = WireframeSettings::new(
+            thickness,
+            thickness_var,
+            smoothing,
+            stipple,
+            stipple_length,
+            stipple_repeats,
+            screen_space,
+        );
+        settings.validate().map(|()| settings)
+    }
+
+    /// Checks the values a UI should never send, naming the first offending field in declaration
+    /// order: every float finite; `thickness`, both `thickness_var` components and `smoothing` in
+    /// `[0, MAX_LINE_THICKNESS]`; `stipple_length` in `[0, 1]`; `stipple_repeats >= 0`.
+    ///
+    /// The shader functions accept anything finite and clamp; this is for catching mistakes early.
+    pub fn validate(&self) -> Result<(), WireframeSettingsError> {
+        let sizes = [
+            ("thickness_var.x", self.thickness_var.x),
+            ("thickness_var.y", self.thickness_var.y),
+            ("thickness", self.thickness),
+            ("smoothing", self.smoothing),
+        ];
+        for (field, value) in sizes {
+            WireframeSettingsError::check_range(field, value, 0.0, MAX_LINE_THICKNESS)?;
+        }
+        WireframeSettingsError::check_range("stipple_length", self.stipple_length, 0.0, 1.0)?;
+        if self.stipple_repeats < 0 {
+            return Err(WireframeSettingsError::NegativeRepeats {
+                value: self.stipple_repeats,
+            });
+        }
+        Ok(())
+    }
+
+    /// The host-shareable mirror; every `bool` becomes exactly 0 or 1.
+    pub fn pack(self) -> WireframeSettingsIo {
+        WireframeSettingsIo {
+            thickness_var: self.thickness_var,
+            thickness: self.thickness,
+            smoothing: self.smoothing,
+            stipple: i32::from(self.stipple),
+            stipple_length: self.stipple_length,
+            stipple_repeats: self.stipple_repeats,
+            screen_space: i32::from(self.screen_space),
+        }
+    }
+}
+
+impl Default for WireframeSettings {
+    /// [`WIREFRAME_DEFAULT`].
+    fn default() -> Self {
+        WIREFRAME_DEFAULT
+    }
+}
+
+impl WireframeSettingsIo {
+    /// The settings, as [`unpack_wireframe_settings`].
+    pub fn unpack(self) -> WireframeSettings {
+        unpack_wireframe_settings(self)
+    }
+}
+
+impl Default for WireframeSettingsIo {
+    /// [`WIREFRAME_DEFAULT`], packed.
+    fn default() -> Self {
+        WIREFRAME_DEFAULT.pack()
+    }
+}
+
+impl From<WireframeSettings> for WireframeSettingsIo {
+    fn from(settings: WireframeSettings) -> Self {
+        settings.pack()
+    }
+}
+
+impl From<WireframeSettingsIo> for WireframeSettings {
+    fn from(io: WireframeSettingsIo) -> Self {
+        unpack_wireframe_settings(io)
+    }
+}
+
+/// A settings value a UI should never send; returned by [`WireframeSettings::validate`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WireframeSettingsError {
+    /// A float field is NaN or infinite.
+    NotFinite {
+        /// The field, e.g. `"thickness"` or `"thickness_var.y"`.
+        field: &'static str,
+        /// The value received.
+        value: f32,
+    },
+    /// A float field lies outside its range.
+    OutOfRange {
+        /// The field, e.g. `"stipple_length"`.
+        field: &'static str,
+        /// The value received.
+        value: f32,
+        /// Smallest accepted value.
+        min: f32,
+        /// Largest accepted value.
+        max: f32,
+    },
+    /// `stipple_repeats` is negative (0 is accepted and means a solid line).
+    NegativeRepeats {
+        /// The value received.
+        value: i32,
+    },
+}
+
+impl WireframeSettingsError {
+    /// `Ok` when `value` is finite and in `[min, max]`, else the error naming `field`.
+    fn check_range(
+        field: &'static str,
+        value: f32,
+        min: f32,
+        max: f32,
+    ) -> Result<(), WireframeSettingsError> {
+        if !value.is_finite() {
+            Err(WireframeSettingsError::NotFinite { field, value })
+        } else if !(min..=max).contains(&value) {
+            Err(WireframeSettingsError::OutOfRange {
+                field,
+                value,
+                min,
+                max,
+            })
+        } else {
+            Ok(())
+        }
+    }
+
+    /// The name of the offending field.
+    pub fn field(&self) -> &'static str {
+        match self {
+            WireframeSettingsError::NotFinite { field, .. }
+            | WireframeSettingsError::OutOfRange { field, .. } => field,
+            WireframeSettingsError::NegativeRepeats { .. } => "stipple_repeats",
+        }
+    }
+}
+
+impl fmt::Display for WireframeSettingsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            WireframeSettingsError::NotFinite { field, value } => {
+                write!(f, "wireframe setting `{field}` must be finite, got {value}")
+            }
+            WireframeSettingsError::OutOfRange {
+                field,
+                value,
+                min,
+                max,
+            } => write!(
+                f,
+                "wireframe setting `{field}` must lie in [{min}, {max}], got {value}"
+            ),
+            WireframeSettingsError::NegativeRepeats { value } => write!(
+                f,
+                "wireframe setting `stipple_repeats` must be >= 0 (0 = solid line), got {value}"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for WireframeSettingsError {}

@@ -72,3 +72,13 @@ fn harness_reports_a_wrong_mirror() {
         assert!(failure.contains("differs by"), "{failure}");
     }
 }
+
+#[test]
+fn wireframe_wgsl() {
+    agree(Module::Wireframe, Language::Wgsl);
+}
+
+#[test]
+fn wireframe_glsl() {
+    agree(Module::Wireframe, Language::Glsl);
+}
