@@ -42,14 +42,13 @@ mod layouts {
     use std::path::Path;
 
     /// Shared structs: WGSL module stem, WGSL struct name, Rust path.
+    #[rustfmt::skip]
     const SHARED: &[(&str, &str, &str)] = &[
         ("ray_cone", "RfRayCone", "crate::ray_cone::RayCone"),
         ("ray_cone", "RfHitPayload", "crate::abi::HitPayload"),
-        (
-            "ray_cone",
-            "RfRayConePushConstants",
-            "crate::abi::RayConePushConstants",
-        ),
+        ("ray_cone", "RfRayConePushConstants", "crate::abi::RayConePushConstants"),
+        ("wireframe", "RfWireframeSettingsIo", "crate::wireframe::WireframeSettingsIo"),
+        ("wireframe", "RfWireframePushConstants", "crate::abi::WireframePushConstants"),
     ];
 
     /// Writes `layout_asserts.rs`: one `const` block per shared struct asserting the Rust size,

@@ -65,7 +65,8 @@ pub struct WireframeSettings {
 /// field, `WireframeSettingsIO`).
 ///
 /// Layout: 32 bytes, no padding, identical in Rust (`#[repr(C)]`), WGSL, GLSL std430 and GLSL scalar
-/// block layout. `thickness_var` comes first because a `vec2` is 8-byte aligned in WGSL and std430;
+/// block layout. `thickness_var` comes first because a `vec2` is 8-byte aligned in WGSL and std430
+/// (the struct is 8-byte aligned in Rust too, so it sits at the same offset inside other structs);
 /// every later field is a 4-byte scalar at a multiple of 4, and 32 is a multiple of 8:
 ///
 /// | field | offset |
@@ -77,7 +78,7 @@ pub struct WireframeSettings {
 /// | `stipple_length` | 20 |
 /// | `stipple_repeats` | 24 |
 /// | `screen_space` | 28 |
-#[repr(C)]
+#[repr(C, align(8))]
 #[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
 pub struct WireframeSettingsIo {
     /// As [`WireframeSettings::thickness_var`].

@@ -5,7 +5,10 @@ use bytemuck::{Pod, Zeroable};
 use proptest::collection::vec;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
-use ray_footprint::abi::{self, HitPayload, RayConePushConstants, PUSH_CONSTANT_LIMIT};
+use ray_footprint::abi::{
+    self, HitPayload, RayConePushConstants, WireframePushConstants, WireframeSettingsIo, PUSH_CONSTANT_LIMIT,
+};
+use ray_footprint::gpu::suite::wireframe;
 use ray_footprint::gpu::{self, compile, echo_kernel_source, Gpu, Language, ShaderType, StructType};
 use ray_footprint::layout::{self, GlslPacking, LayoutError};
 use ray_footprint::ray_cone::RayCone;
@@ -256,6 +259,16 @@ fn hit_payload_echoes() {
 #[test]
 fn ray_cone_push_constants_echo() {
     echo::<RayConePushConstants>(Module::RayCone, &gpu::RAY_CONE_PUSH_CONSTANTS);
+}
+
+#[test]
+fn wireframe_settings_io_echoes() {
+    echo::<WireframeSettingsIo>(Module::Wireframe, &wireframe::WIREFRAME_SETTINGS_IO);
+}
+
+#[test]
+fn wireframe_push_constants_echo() {
+    echo::<WireframePushConstants>(Module::Wireframe, &wireframe::WIREFRAME_PUSH_CONSTANTS);
 }
 
 /// Wireframe-style settings with Rust bools: 1-byte bools and 3 bytes of padding.

@@ -42,6 +42,13 @@ struct RfWireframeSettingsIo {
     int screen_space;
 };
 
+// Push constants of a wireframe overlay (48 bytes, 16-byte aligned): line colour (rgba) and the
+// host-shareable settings.
+struct RfWireframePushConstants {
+    vec4 colour;
+    RfWireframeSettingsIo settings;
+};
+
 // Presets of the wireframe tutorial (SPEC 3), fields in declaration order.
 const RfWireframeSettings RF_WIREFRAME_DEFAULT = RfWireframeSettings(vec2(1.0, 1.0), 1.0, 1.0, false, 0.5, 5, true);
 const RfWireframeSettings RF_WIREFRAME_WIRE_DOT = RfWireframeSettings(vec2(1.0, 1.0), 1.0, 0.5, false, 0.5, 5, true);

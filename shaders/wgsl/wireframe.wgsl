@@ -40,6 +40,13 @@ struct RfWireframeSettingsIo {
     screen_space: i32,
 }
 
+// Push constants of a wireframe overlay (48 bytes, 16-byte aligned): line colour (rgba) and the
+// host-shareable settings.
+struct RfWireframePushConstants {
+    colour: vec4<f32>,
+    settings: RfWireframeSettingsIo,
+}
+
 // Presets of the wireframe tutorial (SPEC 3), fields in declaration order.
 const RF_WIREFRAME_DEFAULT: RfWireframeSettings = RfWireframeSettings(vec2<f32>(1.0, 1.0), 1.0, 1.0, false, 0.5, 5, true);
 const RF_WIREFRAME_WIRE_DOT: RfWireframeSettings = RfWireframeSettings(vec2<f32>(1.0, 1.0), 1.0, 0.5, false, 0.5, 5, true);

@@ -46,6 +46,15 @@ pub const WIREFRAME_SETTINGS_IO: StructType = StructType {
     ],
 };
 
+/// `RfWireframePushConstants` as the shaders declare it.
+pub const WIREFRAME_PUSH_CONSTANTS: StructType = StructType {
+    name: "RfWireframePushConstants",
+    fields: &[
+        ("colour", ShaderType::Vec4),
+        ("settings", ShaderType::Struct(&WIREFRAME_SETTINGS_IO)),
+    ],
+};
+
 /// Removes and returns the first word.
 fn next_word(words: &mut &[u32]) -> u32 {
     let (first, rest) = words
