@@ -39,6 +39,8 @@ pub fn capabilities(modules: &[Module]) -> naga::valid::Capabilities {
 }
 
 /// Registers `modules` with `composer` under their [`import_path`]s.
+// The composer's own error type, passed through unchanged so callers can report it as usual.
+#[allow(clippy::result_large_err)]
 pub fn add_composable_modules(composer: &mut Composer, modules: &[Module]) -> Result<(), ComposerError> {
     for &module in modules {
         composer.add_composable_module(ComposableModuleDescriptor {

@@ -1,0 +1,56 @@
+//! The inclusion paths, proven by downstream crates in `examples/downstream/`: each is built and run
+//! as a user would (`cargo run`), with a path dependency on this crate, and checks its own results.
+
+use std::process::Command;
+
+/// Builds and runs the downstream crate `name`; it must succeed and print `expected`.
+fn run_downstream(name: &str, expected: &str) {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let manifest = format!("{root}/examples/downstream/{name}/Cargo.toml");
+    let output = Command::new(env!("CARGO"))
+        .args([
+            "run",
+            "--release",
+            "--quiet",
+            "--manifest-path",
+            &manifest,
+            "--target-dir",
+        ])
+        .arg(format!("{root}/target/downstream"))
+        .output()
+        .unwrap_or_else(|error| panic!("{name}: cannot run cargo: {error}"));
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    println!("{name}:\n{stdout}");
+    assert!(output.status.success(), "{name} failed:\n{stdout}\n{stderr}");
+    assert!(
+        stdout.contains(expected),
+        "{name} did not print {expected:?}:\n{stdout}"
+    );
+}
+
+/// A wgpu user: the WGSL prelude in a compute shader, validated by wgpu and run through its Vulkan
+/// backend on lavapipe, compared with the Rust mirror.
+#[test]
+fn wgpu_compute_shader_agrees_with_the_mirror() {
+    run_downstream("wgpu-compute", "LODs computed by wgpu");
+}
+
+/// A Bevy user: `#import ray_footprint::ray_cone::...` through naga_oil, validated by naga.
+#[test]
+fn naga_oil_composes_the_modules() {
+    run_downstream("naga-oil", "composed with naga_oil, validated by naga");
+}
+
+/// A Vulkan user: a closest-hit shader `#include`s the GLSL modules through the include directory
+/// the crate exports to dependents' build scripts, compiled by glslang, accepted by spirv-val.
+#[test]
+fn glsl_build_script_compiles_a_closest_hit_shader() {
+    run_downstream("glsl-build-script", "accepted by spirv-val");
+}
+
+/// A CPU path tracer: the Rust mirror alone, default features, no Vulkan.
+#[test]
+fn cpu_path_tracer_uses_the_mirror_alone() {
+    run_downstream("cpu-path-tracer", "ground rows");
+}
