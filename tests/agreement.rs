@@ -72,3 +72,23 @@ fn harness_reports_a_wrong_mirror() {
         assert!(failure.contains("differs by"), "{failure}");
     }
 }
+
+#[test]
+fn ray_diff_wgsl() {
+    agree(Module::RayDiff, Language::Wgsl);
+}
+
+#[test]
+fn ray_diff_glsl() {
+    agree(Module::RayDiff, Language::Glsl);
+}
+
+#[test]
+fn ray_diff_f64_wgsl() {
+    agree(Module::RayDiffF64, Language::Wgsl);
+}
+
+#[test]
+fn ray_diff_f64_glsl() {
+    agree(Module::RayDiffF64, Language::Glsl);
+}
