@@ -557,7 +557,8 @@ fn gbuffer_differentials_follow_the_exact_ones() {
 
 /// Isotropic LOD of a primary hit from ray differentials (RTG Eq. 1-2) and from a ray cone
 /// (RTG Eq. 34), for a square texture mapped with a uniform texel density.
-fn lods(camera: &Camera, pixel: DVec2, normal: DVec3, texture: f32) -> (f32, f32) {
+/// Also returns the LOD of the footprint's short axis, `log2(min(|ddx|, |ddy|))` in texels.
+fn lods(camera: &Camera, pixel: DVec2, normal: DVec3, texture: f32) -> (f32, f32, f32) {
     let direction = camera.direction(pixel);
     let t = 10.0;
     let mut rng = Rng(7);
@@ -578,6 +579,7 @@ fn lods(camera: &Camera, pixel: DVec2, normal: DVec3, texture: f32) -> (f32, f32
     );
     let texels = rd::texel_derivatives(bary, uv[0], uv[1], uv[2], Vec2::splat(texture));
     let diff_lod = rd::lod_isotropic(texels);
+    let short_axis_lod = texels.dx.length().min(texels.dy.length()).log2();
     let cone = rc::pinhole_ray_cone(rc::pixel_spread_angle(camera.fov_y as f32, camera.size.y as f32));
     let base = rc::triangle_base_lod(p[0], p[1], p[2], uv[0], uv[1], uv[2]);
     let cone_lod = rc::texture_lod(
@@ -587,7 +589,7 @@ fn lods(camera: &Camera, pixel: DVec2, normal: DVec3, texture: f32) -> (f32, f32
         normal.as_vec3(),
         direction.as_vec3(),
     );
-    (diff_lod, cone_lod)
+    (diff_lod, cone_lod, short_axis_lod)
 }
 
 /// Ray differentials and ray cones agree on the LOD of surfaces facing the camera, within the
@@ -598,6 +600,7 @@ fn lod_from_differentials_and_cones_agree_on_facing_surfaces() {
     let mut rng = Rng(0x4242_4242_1717_2323);
     let mut worst_excess: f32 = f32::NEG_INFINITY;
     let mut centre_gap: f32 = 0.0;
+    let (mut gap_range, mut min_cos) = ((f32::INFINITY, f32::NEG_INFINITY), 1.0f32);
     for i in 0..300 {
         let camera = Camera::random(&mut rng, DVec3::ZERO);
         let pixel = if i % 3 == 0 {
@@ -606,7 +609,7 @@ fn lod_from_differentials_and_cones_agree_on_facing_surfaces() {
             random_pixel(&camera, &mut rng)
         };
         let direction = camera.direction(pixel);
-        let (diff_lod, cone_lod) = lods(&camera, pixel, -direction, 512.0);
+        let (diff_lod, cone_lod, _) = lods(&camera, pixel, -direction, 512.0);
         // Bound: a cone spreads by the same angle for every pixel, while the pixel's true angular
         // size shrinks off axis by cos(theta) across and cos^2(theta) along the radial direction
         // (theta: angle to the optical axis); the isotropic LOD takes the larger axis, so the
@@ -614,6 +617,8 @@ fn lod_from_differentials_and_cones_agree_on_facing_surfaces() {
         // pixel-centre discretisation of the exact/small-angle spread adds < 0.01.
         let cos_theta = direction.dot(-camera.view) as f32;
         let gap = diff_lod - cone_lod;
+        gap_range = (gap_range.0.min(gap), gap_range.1.max(gap));
+        min_cos = min_cos.min(cos_theta);
         let excess = gap.abs() - (-2.0 * cos_theta.log2() + 0.01);
         worst_excess = worst_excess.max(excess);
         if i % 3 == 0 {
@@ -621,7 +626,16 @@ fn lod_from_differentials_and_cones_agree_on_facing_surfaces() {
         }
         assert!(excess <= 0.0, "LOD gap {gap} at cos(theta) {cos_theta}");
     }
-    println!("facing surfaces: |lod_diff - lod_cone| at the image centre <= {centre_gap:.4}; worst excess over the cos^2 bound {worst_excess:.4}");
+    println!(
+        "facing surfaces: |lod_diff - lod_cone| at the image centre <= {centre_gap:.4}; off axis \
+         lod_diff - lod_cone in [{:.4}, {:.4}] for cos(theta) >= {min_cos:.3} (bound -2 log2 cos = {:.4}); \
+         worst excess over the bound {worst_excess:.4}",
+        gap_range.0,
+        gap_range.1,
+        -2.0 * min_cos.log2()
+    );
+    // A cone never sees less than the differentials on a facing surface.
+    assert!(gap_range.1 <= 0.01, "{gap_range:?}");
     assert!(centre_gap < 0.01, "{centre_gap}");
 
     // Grazing angles at the image centre: print how the two differ.
@@ -638,11 +652,13 @@ fn lod_from_differentials_and_cones_agree_on_facing_surfaces() {
     for cos in [1.0f64, 0.5, 0.2, 0.1, 0.01] {
         let sin = (1.0 - cos * cos).sqrt();
         let normal = -cos * direction + sin * DVec3::Y;
-        let (diff_lod, cone_lod) = lods(&camera, pixel, normal.normalize(), 512.0);
+        let (diff_lod, cone_lod, short_axis_lod) = lods(&camera, pixel, normal.normalize(), 512.0);
         println!(
             "grazing cos = {cos:<5}: lod from differentials {diff_lod:7.3}, from the cone {cone_lod:7.3}, \
-             difference {:+.3}",
-            diff_lod - cone_lod
+             difference {:+.3}; the differentials' short axis stays at {short_axis_lod:7.3} \
+             (anisotropy {:.1}:1, which a cone cannot express)",
+            diff_lod - cone_lod,
+            (diff_lod - short_axis_lod).exp2()
         );
         // The footprint's long axis grows as 1/cos for both; the isotropic LOD follows it in both.
         assert!((diff_lod - cone_lod).abs() < 0.05, "cos {cos}");
