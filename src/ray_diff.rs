@@ -1,3 +1,773 @@
 //! Ray differentials (Igehy 1999; RTG ch. 20 Eq. 1-24): how a ray's origin and direction change from pixel to pixel, carried to hits, barycentrics and texture coordinates.
 //!
-//! The Rust mirror of `shaders/wgsl/ray_diff.wgsl` and `shaders/glsl/ray_diff.glsl`.
+//! The Rust mirror of `shaders/wgsl/ray_diff.wgsl` and `shaders/glsl/ray_diff.glsl`. Every function
+//! here has a shader twin with the same name prefixed `rf_` (constants `RF_`, structs `Rf`), in the
+//! same order, computing the same expression in the same order of operations.
+//!
+//! Sources: Igehy, "Tracing Ray Differentials", SIGGRAPH 1999 (cited as "Igehy"); Akenine-Möller et
+//! al., "Texture Level of Detail Strategies for Real-Time Ray Tracing", Ray Tracing Gems ch. 20 (2019),
+//! cited as "RTG Eq. N"; Quilez, "ray differentials and texturing" (2015), cited as "Quilez"; the
+//! nvpro ray-tracing tutorial "20 Wireframe" (`computeDifferentials`, `computeDerivative` and its
+//! "Going Further" section), cited as "wireframe tutorial".
+//!
+//! Conventions (SPEC section 0): camera space is right-handed and looks down -Z; pixel (0, 0) is the
+//! top-left pixel and pixel y grows downwards, so every `dy` below is the change for one pixel step
+//! *down*. Normals and directions passed in are unit length unless a function says otherwise. A
+//! "differential" is the change per one-pixel step: `dx` for a step to the right neighbour, `dy` for a
+//! step to the lower neighbour.
+//!
+//! Robustness: where the math diverges (grazing angle, zero-area triangle, zero-length vector, ray
+//! parallel to a plane) the functions clamp with the constants below, so finite inputs give finite
+//! outputs. The constants are named `DIFF_*` (shader `RF_DIFF_*`) so that this module can be pasted
+//! next to the ray-cone module without redeclaring its constants.
+
+use bytemuck::{Pod, Zeroable};
+use glam::{Mat4, Vec2, Vec3, Vec3Swizzles, Vec4, Vec4Swizzles};
+
+/// Largest vertical field of view in radians; wider values are clamped so `tan(fov_y / 2)` stays finite.
+pub const DIFF_MAX_FOV_Y: f32 = 3.1;
+/// Smallest `|cos|` between two unit vectors used as a divisor (grazing-angle clamp), keeping its sign.
+pub const DIFF_MIN_COS: f32 = 1.0e-4;
+/// Smallest magnitude used as a divisor (squared lengths, triangle determinants) or passed to `log2`.
+pub const DIFF_MIN_MAGNITUDE: f32 = 1.0e-30;
+/// Largest magnitude of a barycentric coordinate or barycentric differential: a ray (nearly) parallel
+/// to the triangle's plane gives this instead of infinity.
+pub const DIFF_MAX_VALUE: f32 = 1.0e30;
+/// Largest triplanar blend sharpness; larger exponents are clamped so the weights cannot all underflow.
+pub const DIFF_MAX_SHARPNESS: f32 = 64.0;
+
+/// A ray differential (Igehy; RTG Eq. 7): the change of a ray's origin and direction for a one-pixel
+/// step right (`dx`) and down (`dy`).
+///
+/// Layout: 64 bytes, identical in Rust, WGSL (`RfRayDiff`), GLSL std430 and GLSL scalar layout. Each
+/// vec3 is followed by an explicit `f32` pad (vec3 is 16-byte aligned in WGSL and std430), at offsets
+/// 0 (`d_origin_dx`), 12 (`pad0`), 16 (`d_origin_dy`), 28 (`pad1`), 32 (`d_direction_dx`), 44 (`pad2`),
+/// 48 (`d_direction_dy`), 60 (`pad3`). Functions returning a `RayDiff` set the pads to 0.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RayDiff {
+    /// Change of the ray origin per pixel step right.
+    pub d_origin_dx: Vec3,
+    /// Padding, always 0.
+    pub pad0: f32,
+    /// Change of the ray origin per pixel step down.
+    pub d_origin_dy: Vec3,
+    /// Padding, always 0.
+    pub pad1: f32,
+    /// Change of the (unit) ray direction per pixel step right.
+    pub d_direction_dx: Vec3,
+    /// Padding, always 0.
+    pub pad2: f32,
+    /// Change of the (unit) ray direction per pixel step down.
+    pub d_direction_dy: Vec3,
+    /// Padding, always 0.
+    pub pad3: f32,
+}
+
+impl RayDiff {
+    /// The differential of a ray that does not change from pixel to pixel.
+    pub const ZERO: RayDiff = RayDiff::new(Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
+
+    /// A differential from its four vectors, pads 0.
+    pub const fn new(
+        d_origin_dx: Vec3,
+        d_origin_dy: Vec3,
+        d_direction_dx: Vec3,
+        d_direction_dy: Vec3,
+    ) -> Self {
+        RayDiff {
+            d_origin_dx,
+            pad0: 0.0,
+            d_origin_dy,
+            pad1: 0.0,
+            d_direction_dx,
+            pad2: 0.0,
+            d_direction_dy,
+            pad3: 0.0,
+        }
+    }
+
+    /// The origin differentials, `(d_origin_dx, d_origin_dy)`.
+    pub fn d_origin(&self) -> Derivatives3 {
+        Derivatives3::new(self.d_origin_dx, self.d_origin_dy)
+    }
+
+    /// The direction differentials, `(d_direction_dx, d_direction_dy)`.
+    pub fn d_direction(&self) -> Derivatives3 {
+        Derivatives3::new(self.d_direction_dx, self.d_direction_dy)
+    }
+}
+
+/// The change of a 2-vector (barycentrics `(u, v)`, texture coordinates) per pixel step right (`dx`)
+/// and down (`dy`). For texture coordinates these are the `ddx` / `ddy` gradients of `SampleGrad`.
+///
+/// A function result (shader `RfDerivatives2`), not laid out for host-shareable buffers.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Derivatives2 {
+    /// Change per pixel step right.
+    pub dx: Vec2,
+    /// Change per pixel step down.
+    pub dy: Vec2,
+}
+
+impl Derivatives2 {
+    /// Both derivatives.
+    pub const fn new(dx: Vec2, dy: Vec2) -> Self {
+        Derivatives2 { dx, dy }
+    }
+}
+
+/// The change of a 3-vector (position, normal, barycentrics `(w, u, v)`) per pixel step right (`dx`)
+/// and down (`dy`).
+///
+/// A function result (shader `RfDerivatives3`), not laid out for host-shareable buffers.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Derivatives3 {
+    /// Change per pixel step right.
+    pub dx: Vec3,
+    /// Change per pixel step down.
+    pub dy: Vec3,
+}
+
+impl Derivatives3 {
+    /// Both derivatives.
+    pub const fn new(dx: Vec3, dy: Vec3) -> Self {
+        Derivatives3 { dx, dy }
+    }
+}
+
+/// World-space unit directions of the rays through the centres of the right and the lower neighbour
+/// pixel (wireframe tutorial, `computeDifferentials`). Shader `RfNeighbourDirections`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NeighbourDirections {
+    /// Direction through the centre of pixel `(x + 1, y)`.
+    pub right: Vec3,
+    /// Direction through the centre of pixel `(x, y + 1)`.
+    pub below: Vec3,
+}
+
+/// A refracted ray differential and whether the ray was totally internally reflected instead
+/// (shader `RfRefractedRayDiff`). On total internal reflection `diff` is the *reflected* differential.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RefractedRayDiff {
+    /// The differential of the transmitted ray, or of the reflected ray on total internal reflection.
+    pub diff: RayDiff,
+    /// True when `1 - eta^2 (1 - dot(D, N)^2) < 0`: no transmitted ray exists.
+    pub total_internal_reflection: bool,
+}
+
+/// One G-buffer pixel as the G-buffer ray differentials read it (RTG Sec. 20.3.3; shader
+/// `RfGBufferSample`): the unit eye-ray direction through the pixel, the distance to its first hit
+/// and the unit surface normal there. A function argument, not laid out for host-shareable buffers.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct GBufferSample {
+    /// Unit direction of the eye ray through the pixel centre.
+    pub eye_direction: Vec3,
+    /// Distance from the camera to the first hit.
+    pub distance: f32,
+    /// Unit surface normal at the first hit.
+    pub normal: Vec3,
+}
+
+/// Texture-coordinate gradients of the three projections of triplanar mapping (Quilez; shader
+/// `RfTriplanarGradients`): the projection onto the yz plane samples with `p.yz`, and so on.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TriplanarGradients {
+    /// Gradients of the projection along x, sampled with `p.yz`.
+    pub yz: Derivatives2,
+    /// Gradients of the projection along y, sampled with `p.zx`.
+    pub zx: Derivatives2,
+    /// Gradients of the projection along z, sampled with `p.xy`.
+    pub xy: Derivatives2,
+}
+
+/// Half extents of the image plane at distance 1 from a pinhole (RTG Eq. 9): `(a * f, f)` with
+/// `f = tan(fov_y / 2)` and aspect `a = W / H`; `fov_y` is clamped to `[0, DIFF_MAX_FOV_Y]`, W and H
+/// to `>= 1`.
+fn eye_ray_extent(image_size: Vec2, fov_y: f32) -> Vec2 {
+    let size = image_size.max(Vec2::ONE);
+    let f = (0.5 * fov_y.clamp(0.0, DIFF_MAX_FOV_Y)).tan();
+    Vec2::new(size.x / size.y * f, f)
+}
+
+/// Normalized device coordinates of a pixel centre (RTG Eq. 8 `c = 2p - 1`; wireframe tutorial):
+/// `((pixel + 0.5) / size) * 2 - 1`, image size clamped to `>= 1`.
+fn pixel_ndc(pixel: Vec2, image_size: Vec2) -> Vec2 {
+    (pixel + 0.5) / image_size.max(Vec2::ONE) * 2.0 - 1.0
+}
+
+/// Non-normalized eye-ray direction through pixel `pixel` of a pinhole camera (RTG Eq. 8-9):
+/// `d = c.x * a * f * right - c.y * f * up - view`, with `c = 2 (pixel + 0.5) / size - 1`,
+/// `a = W / H`, `f = tan(fov_y / 2)`.
+///
+/// `right`, `up` and `view` are the camera's orthonormal basis; `view` points *towards* the camera
+/// (the camera looks down `-view`). Clamps as [`eye_ray_extent`].
+pub fn eye_ray_direction(
+    pixel: Vec2,
+    image_size: Vec2,
+    fov_y: f32,
+    right: Vec3,
+    up: Vec3,
+    view: Vec3,
+) -> Vec3 {
+    let c = pixel_ndc(pixel, image_size);
+    let extent = eye_ray_extent(image_size, fov_y);
+    c.x * extent.x * right - c.y * extent.y * up - view
+}
+
+/// Derivative of the normalized vector `v / |v|` when `v` changes by `dv` (Igehy; RTG Eq. 10):
+/// `((v.v) dv - (v.dv) v) / (v.v)^1.5`, evaluated as `(dv - v * ((v.dv) / (v.v))) / sqrt(v.v)` so
+/// that no power of `v.v` can overflow or underflow; `v.v` is clamped to `>= DIFF_MIN_MAGNITUDE`.
+pub fn normalized_derivative(v: Vec3, dv: Vec3) -> Vec3 {
+    let length2 = v.dot(v).max(DIFF_MIN_MAGNITUDE);
+    (dv - v * (v.dot(dv) / length2)) / length2.sqrt()
+}
+
+/// Differential of the eye ray of a pinhole camera (Igehy; RTG Eq. 8-11): `dO = 0`,
+/// `dD/dx = normalized_derivative(d, (2 a f / W) * right)`,
+/// `dD/dy = normalized_derivative(d, -(2 f / H) * up)` with `d` from [`eye_ray_direction`].
+/// The direction differentials are those of the *unit* direction `d / |d|`.
+pub fn eye_ray_diff(pixel: Vec2, image_size: Vec2, fov_y: f32, right: Vec3, up: Vec3, view: Vec3) -> RayDiff {
+    let d = eye_ray_direction(pixel, image_size, fov_y, right, up, view);
+    let size = image_size.max(Vec2::ONE);
+    let extent = eye_ray_extent(image_size, fov_y);
+    let dd_dx = 2.0 * extent.x / size.x * right;
+    let dd_dy = -(2.0 * extent.y / size.y) * up;
+    RayDiff::new(
+        Vec3::ZERO,
+        Vec3::ZERO,
+        normalized_derivative(d, dd_dx),
+        normalized_derivative(d, dd_dy),
+    )
+}
+
+/// `v / sqrt(max(v.v, DIFF_MIN_MAGNITUDE))`: `v` normalized, or a short vector when `v` is (nearly) 0.
+fn safe_normalize(v: Vec3) -> Vec3 {
+    v / v.dot(v).max(DIFF_MIN_MAGNITUDE).sqrt()
+}
+
+/// World direction of the ray through normalized device coordinates `ndc` (wireframe tutorial's
+/// primary-ray generator): `view_inv * (normalize((proj_inv * (ndc, 1, 1)).xyz), 0)`.
+fn matrix_ray_direction(ndc: Vec2, view_inv: Mat4, proj_inv: Mat4) -> Vec3 {
+    let far_point = proj_inv * Vec4::new(ndc.x, ndc.y, 1.0, 1.0);
+    (view_inv * safe_normalize(far_point.xyz()).extend(0.0)).xyz()
+}
+
+/// Eye-ray direction through pixel `pixel` from the inverse view and projection matrices (wireframe
+/// tutorial): `view_inv * (normalize((proj_inv * (ndc, 1, 1)).xyz), 0)` with
+/// `ndc = ((pixel + 0.5) / size) * 2 - 1`. Unit length when `view_inv` is a rigid transform. The ray
+/// origin is `view_inv * (0, 0, 0, 1)`. The projection's y flip (Vulkan) is simply applied.
+pub fn eye_ray_direction_from_matrices(
+    pixel: Vec2,
+    image_size: Vec2,
+    view_inv: Mat4,
+    proj_inv: Mat4,
+) -> Vec3 {
+    matrix_ray_direction(pixel_ndc(pixel, image_size), view_inv, proj_inv)
+}
+
+/// Differential of the eye ray of [`eye_ray_direction_from_matrices`] (Igehy; RTG Eq. 10 applied to the
+/// matrix generator): with `h = (proj_inv * (ndc, 1, 1)).xyz`, `dh/dx = proj_inv[0].xyz * 2 / W` and
+/// `dh/dy = proj_inv[1].xyz * 2 / H`, `dD/dx = view_inv * (normalized_derivative(h, dh/dx), 0)` (same
+/// for y); `dO = 0`.
+pub fn eye_ray_diff_from_matrices(pixel: Vec2, image_size: Vec2, view_inv: Mat4, proj_inv: Mat4) -> RayDiff {
+    let size = image_size.max(Vec2::ONE);
+    let ndc = pixel_ndc(pixel, image_size);
+    let far_point = (proj_inv * Vec4::new(ndc.x, ndc.y, 1.0, 1.0)).xyz();
+    let dfar_dx = proj_inv.x_axis.xyz() * (2.0 / size.x);
+    let dfar_dy = proj_inv.y_axis.xyz() * (2.0 / size.y);
+    let dd_dx = (view_inv * normalized_derivative(far_point, dfar_dx).extend(0.0)).xyz();
+    let dd_dy = (view_inv * normalized_derivative(far_point, dfar_dy).extend(0.0)).xyz();
+    RayDiff::new(Vec3::ZERO, Vec3::ZERO, dd_dx, dd_dy)
+}
+
+/// Pixel differentials from the inverse matrices (wireframe tutorial, `computeDifferentials`): the
+/// world directions of the rays through the centres of the right and the lower neighbour pixel, as
+/// [`eye_ray_direction_from_matrices`] of `pixel + (1, 0)` and `pixel + (0, 1)`
+/// (`ndc_offset = ((pixel + 1.5) / size) * 2 - 1`).
+pub fn pixel_directions(
+    pixel: Vec2,
+    image_size: Vec2,
+    view_inv: Mat4,
+    proj_inv: Mat4,
+) -> NeighbourDirections {
+    let ndc = pixel_ndc(pixel, image_size);
+    let next = pixel_ndc(pixel + 1.0, image_size);
+    NeighbourDirections {
+        right: matrix_ray_direction(Vec2::new(next.x, ndc.y), view_inv, proj_inv),
+        below: matrix_ray_direction(Vec2::new(ndc.x, next.y), view_inv, proj_inv),
+    }
+}
+
+/// `value`, or `min_magnitude` with the sign of `value` (+ for 0) when `|value| < min_magnitude`.
+fn clamp_away_from_zero(value: f32, min_magnitude: f32) -> f32 {
+    if value.abs() < min_magnitude {
+        if value >= 0.0 {
+            min_magnitude
+        } else {
+            -min_magnitude
+        }
+    } else {
+        value
+    }
+}
+
+/// Change of the hit point on a plane for one pixel step (Igehy's transfer): with
+/// `q = dO + t * dD`, `dt = -dot(q, N) / dot(D, N)` and `dP = q + dt * D`. `cosine` is `dot(D, N)`,
+/// already clamped.
+fn transferred_origin(
+    d_origin: Vec3,
+    d_direction: Vec3,
+    direction: Vec3,
+    t: f32,
+    normal: Vec3,
+    cosine: f32,
+) -> Vec3 {
+    let q = d_origin + t * d_direction;
+    let dt = -q.dot(normal) / cosine;
+    q + dt * direction
+}
+
+/// Transfers a differential over a distance `t` to a hit on a surface with unit normal `normal`
+/// (Igehy, transfer): `dt/dx = -dot(dO/dx + t dD/dx, N) / dot(D, N)`,
+/// `dP/dx = dO/dx + t dD/dx + (dt/dx) D`, same for y.
+///
+/// Returns the differential of the ray leaving the hit: origin differentials `dP`, direction
+/// differentials unchanged (replace them with [`reflect_ray_diff`] / [`refract_ray_diff`]).
+/// `direction` is the unit ray direction that `t` measures; `dot(D, N)` is clamped away from 0 to
+/// `|cos| >= DIFF_MIN_COS`.
+pub fn transfer(diff: RayDiff, direction: Vec3, t: f32, normal: Vec3) -> RayDiff {
+    let cosine = clamp_away_from_zero(direction.dot(normal), DIFF_MIN_COS);
+    RayDiff::new(
+        transferred_origin(
+            diff.d_origin_dx,
+            diff.d_direction_dx,
+            direction,
+            t,
+            normal,
+            cosine,
+        ),
+        transferred_origin(
+            diff.d_origin_dy,
+            diff.d_direction_dy,
+            direction,
+            t,
+            normal,
+            cosine,
+        ),
+        diff.d_direction_dx,
+        diff.d_direction_dy,
+    )
+}
+
+/// Barycentric differentials of a hit, optimized form (RTG Eq. 12-19): with `e1 = p1 - p0`,
+/// `e2 = p2 - p0`, `k = dot(cross(e1, e2), d)`, `q = dO/dx + t dD/dx`, `r = dO/dy + t dD/dy`:
+/// `du/dx = dot(cross(e2, d), q) / k`, `dv/dx = dot(cross(d, e1), q) / k`, and with `r` for y.
+///
+/// Returns `(du/dx, dv/dx)` in `dx` and `(du/dy, dv/dy)` in `dy`; `dw = -du - dv`
+/// ([`barycentric_w_derivatives`]). `direction` need not be unit length, but `t` must measure it
+/// (hit = origin + t * direction). `k` is clamped away from 0 to `|k| >= DIFF_MIN_MAGNITUDE` and the
+/// results to `[-DIFF_MAX_VALUE, DIFF_MAX_VALUE]` (a ray in the triangle's plane).
+pub fn barycentric_derivatives(
+    diff: RayDiff,
+    direction: Vec3,
+    t: f32,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+) -> Derivatives2 {
+    let e1 = p1 - p0;
+    let e2 = p2 - p0;
+    let k = clamp_away_from_zero(e1.cross(e2).dot(direction), DIFF_MIN_MAGNITUDE);
+    let cu = e2.cross(direction);
+    let cv = direction.cross(e1);
+    let q = diff.d_origin_dx + t * diff.d_direction_dx;
+    let r = diff.d_origin_dy + t * diff.d_direction_dy;
+    let limit = Vec2::splat(DIFF_MAX_VALUE);
+    Derivatives2::new(
+        (Vec2::new(cu.dot(q), cv.dot(q)) / k).clamp(-limit, limit),
+        (Vec2::new(cu.dot(r), cv.dot(r)) / k).clamp(-limit, limit),
+    )
+}
+
+/// Differentials of the third barycentric coordinate `w = 1 - u - v` (RTG Eq. 20):
+/// `(dw/dx, dw/dy) = (-du/dx - dv/dx, -du/dy - dv/dy)`.
+pub fn barycentric_w_derivatives(barycentric: Derivatives2) -> Vec2 {
+    Vec2::new(
+        -barycentric.dx.x - barycentric.dx.y,
+        -barycentric.dy.x - barycentric.dy.y,
+    )
+}
+
+/// Texture-coordinate differentials in UV units (RTG Eq. 21 without the texture size): with
+/// `g1 = T1 - T0`, `g2 = T2 - T0`: `d(uv)/dx = du/dx * g1 + dv/dx * g2`, same for y. These are the
+/// anisotropic `ddx` / `ddy` gradients for `SampleGrad` / `textureGrad`.
+pub fn texture_derivatives(barycentric: Derivatives2, t0: Vec2, t1: Vec2, t2: Vec2) -> Derivatives2 {
+    let g1 = t1 - t0;
+    let g2 = t2 - t0;
+    Derivatives2::new(
+        barycentric.dx.x * g1 + barycentric.dx.y * g2,
+        barycentric.dy.x * g1 + barycentric.dy.y * g2,
+    )
+}
+
+/// Texture-space differentials in texels (RTG Eq. 21): [`texture_derivatives`] times the texture size
+/// `(W, H)`, clamped to `>= 1`: `ds/dx = W * (du/dx g1.x + dv/dx g2.x)`, `dt/dx = H * (...)`.
+pub fn texel_derivatives(
+    barycentric: Derivatives2,
+    t0: Vec2,
+    t1: Vec2,
+    t2: Vec2,
+    texture_size: Vec2,
+) -> Derivatives2 {
+    let size = texture_size.max(Vec2::ONE);
+    let uv = texture_derivatives(barycentric, t0, t1, t2);
+    Derivatives2::new(uv.dx * size, uv.dy * size)
+}
+
+/// Origin differentials of a secondary (reflected or refracted) ray from the barycentric
+/// differentials (RTG Eq. 22): `dO'/dx = du/dx * e1 + dv/dx * e2`, same for y. Equal to the `dP` of
+/// [`transfer`] for a hit on the triangle.
+pub fn secondary_origin_derivatives(barycentric: Derivatives2, p0: Vec3, p1: Vec3, p2: Vec3) -> Derivatives3 {
+    let e1 = p1 - p0;
+    let e2 = p2 - p0;
+    Derivatives3::new(
+        barycentric.dx.x * e1 + barycentric.dx.y * e2,
+        barycentric.dy.x * e1 + barycentric.dy.y * e2,
+    )
+}
+
+/// Isotropic level of detail from texel gradients (RTG Eq. 1-2):
+/// `rho = max(|(ds/dx, dt/dx)|, |(ds/dy, dt/dy)|)`, `lambda = log2(rho)`, evaluated as
+/// `0.5 * log2(max(rho^2, DIFF_MIN_MAGNITUDE))`.
+pub fn lod_isotropic(texel_gradients: Derivatives2) -> f32 {
+    let rho2 = texel_gradients
+        .dx
+        .dot(texel_gradients.dx)
+        .max(texel_gradients.dy.dot(texel_gradients.dy));
+    0.5 * rho2.max(DIFF_MIN_MAGNITUDE).log2()
+}
+
+/// Conservative level of detail from texel gradients (RTG Sec. 20.1): the side of the box around the
+/// footprint, `rho = max(|ds/dx| + |ds/dy|, |dt/dx| + |dt/dy|)`, `lambda = log2(max(rho,
+/// DIFF_MIN_MAGNITUDE))`.
+pub fn lod_box(texel_gradients: Derivatives2) -> f32 {
+    let extent = texel_gradients.dx.abs() + texel_gradients.dy.abs();
+    extent.x.max(extent.y).max(DIFF_MIN_MAGNITUDE).log2()
+}
+
+/// Anisotropic `SampleGrad` / `textureGrad` gradients: the UV differentials of
+/// [`texture_derivatives`] scaled by `max(tex_grad_scale, 0)` (0 samples mip 0, 1 the matching level,
+/// above 1 blurs), as the ray-cone tutorial's `texGradScale`.
+pub fn sample_grad_gradients(uv_gradients: Derivatives2, tex_grad_scale: f32) -> Derivatives2 {
+    let scale = tex_grad_scale.max(0.0);
+    Derivatives2::new(uv_gradients.dx * scale, uv_gradients.dy * scale)
+}
+
+/// Differentials of the unit shading normal interpolated from vertex normals (Igehy):
+/// `n = (1 - u - v) n0 + u n1 + v n2`, `dn/dx = du/dx (n1 - n0) + dv/dx (n2 - n0)` and
+/// `dN/dx = normalized_derivative(n, dn/dx)`, same for y. `barycentrics` is the hit's `(u, v)`,
+/// `barycentric` its differentials ([`barycentric_derivatives`]).
+pub fn normal_derivatives(
+    n0: Vec3,
+    n1: Vec3,
+    n2: Vec3,
+    barycentrics: Vec2,
+    barycentric: Derivatives2,
+) -> Derivatives3 {
+    let n = (1.0 - barycentrics.x - barycentrics.y) * n0 + barycentrics.x * n1 + barycentrics.y * n2;
+    let dn_dx = barycentric.dx.x * (n1 - n0) + barycentric.dx.y * (n2 - n0);
+    let dn_dy = barycentric.dy.x * (n1 - n0) + barycentric.dy.y * (n2 - n0);
+    Derivatives3::new(normalized_derivative(n, dn_dx), normalized_derivative(n, dn_dy))
+}
+
+/// Derivative of the reflected direction `R = D - 2 dot(D, N) N` (Igehy):
+/// `dR = dD - 2 (dot(D, N) dN + (dot(dD, N) + dot(D, dN)) N)`.
+fn reflected_direction(d_direction: Vec3, direction: Vec3, normal: Vec3, d_normal: Vec3) -> Vec3 {
+    let cosine = direction.dot(normal);
+    d_direction - 2.0 * (cosine * d_normal + (d_direction.dot(normal) + direction.dot(d_normal)) * normal)
+}
+
+/// The differential of the ray reflected at a hit (Igehy): origin differentials kept (pass the
+/// differential returned by [`transfer`]), direction differentials
+/// `dR/dx = dD/dx - 2 (dot(D, N) dN/dx + (dot(dD/dx, N) + dot(D, dN/dx)) N)`, same for y.
+/// `direction` and `normal` are unit; `d_normal` from [`normal_derivatives`] (zero for a flat surface).
+pub fn reflect_ray_diff(diff: RayDiff, direction: Vec3, normal: Vec3, d_normal: Derivatives3) -> RayDiff {
+    RayDiff::new(
+        diff.d_origin_dx,
+        diff.d_origin_dy,
+        reflected_direction(diff.d_direction_dx, direction, normal, d_normal.dx),
+        reflected_direction(diff.d_direction_dy, direction, normal, d_normal.dy),
+    )
+}
+
+/// Derivative of the refracted direction `T = eta D - mu N` (Igehy): with
+/// `d(dot(D, N)) = dot(dD, N) + dot(D, dN)`, `dmu = rate * d(dot(D, N))` and
+/// `dT = eta dD - (mu dN + dmu N)`.
+fn refracted_direction(
+    d_direction: Vec3,
+    direction: Vec3,
+    normal: Vec3,
+    d_normal: Vec3,
+    eta: f32,
+    mu: f32,
+    rate: f32,
+) -> Vec3 {
+    let d_cos = d_direction.dot(normal) + direction.dot(d_normal);
+    eta * d_direction - (mu * d_normal + rate * d_cos * normal)
+}
+
+/// The differential of the ray refracted at a hit with relative index `eta = n_incident /
+/// n_transmitted` (Igehy): `T = eta D - mu N` with `mu = eta dot(D, N) - dot(T, N)`,
+/// `dot(T, N) = -sign(dot(D, N)) sqrt(1 - eta^2 (1 - dot(D, N)^2))` (sign(0) = -1; for the usual
+/// `dot(D, N) < 0` this is GLSL's `refract(D, N, eta)`),
+/// `dmu/dx = (eta - eta^2 dot(D, N) / dot(T, N)) d(dot(D, N))/dx` and
+/// `dT/dx = eta dD/dx - (mu dN/dx + dmu/dx N)`, same for y. Origin differentials are kept.
+///
+/// Total internal reflection (`1 - eta^2 (1 - dot(D, N)^2) < 0`) is reported in the flag, and `diff`
+/// is then the reflected differential ([`reflect_ray_diff`]). `dot(T, N)` is clamped away from 0 to
+/// `|dot(T, N)| >= DIFF_MIN_COS` (the critical angle, where `dmu` diverges).
+pub fn refract_ray_diff(
+    diff: RayDiff,
+    direction: Vec3,
+    normal: Vec3,
+    d_normal: Derivatives3,
+    eta: f32,
+) -> RefractedRayDiff {
+    let cosine = direction.dot(normal);
+    let k = 1.0 - eta * eta * (1.0 - cosine * cosine);
+    if k < 0.0 {
+        return RefractedRayDiff {
+            diff: reflect_ray_diff(diff, direction, normal, d_normal),
+            total_internal_reflection: true,
+        };
+    }
+    let root = k.sqrt();
+    let transmitted_cos = if cosine <= 0.0 { -root } else { root };
+    let mu = eta * cosine - transmitted_cos;
+    let rate = eta - eta * eta * cosine / clamp_away_from_zero(transmitted_cos, DIFF_MIN_COS);
+    RefractedRayDiff {
+        diff: RayDiff::new(
+            diff.d_origin_dx,
+            diff.d_origin_dy,
+            refracted_direction(diff.d_direction_dx, direction, normal, d_normal.dx, eta, mu, rate),
+            refracted_direction(diff.d_direction_dy, direction, normal, d_normal.dy, eta, mu, rate),
+        ),
+        total_internal_reflection: false,
+    }
+}
+
+/// Whether the G-buffer differential uses the backward (left / upper) neighbour (RTG Sec. 20.3.3):
+/// when `|t(+1) - t(0)| > depth_epsilon` and `|t(-1) - t(0)| < |t(+1) - t(0)|`.
+fn gbuffer_use_backward(
+    center: GBufferSample,
+    forward: GBufferSample,
+    backward: GBufferSample,
+    depth_epsilon: f32,
+) -> bool {
+    let forward_step = (forward.distance - center.distance).abs();
+    let backward_step = (backward.distance - center.distance).abs();
+    forward_step > depth_epsilon && backward_step < forward_step
+}
+
+/// Change of the G-buffer hit position from `start` to `end` (RTG Eq. 23):
+/// `t(end) e(end) - t(start) e(start)`.
+fn gbuffer_position_step(start: GBufferSample, end: GBufferSample) -> Vec3 {
+    end.distance * end.eye_direction - start.distance * start.eye_direction
+}
+
+/// Change of the reflected eye direction from `start` to `end` (RTG Eq. 24):
+/// `reflect(e(end), n(end)) - reflect(e(start), n(start))`, with `reflect(e, n) = e - 2 dot(n, e) n`.
+fn gbuffer_direction_step(start: GBufferSample, end: GBufferSample) -> Vec3 {
+    let reflected_end = end.eye_direction - 2.0 * end.normal.dot(end.eye_direction) * end.normal;
+    let reflected_start = start.eye_direction - 2.0 * start.normal.dot(start.eye_direction) * start.normal;
+    reflected_end - reflected_start
+}
+
+/// G-buffer ray differentials of the first reflected ray (RTG Eq. 23-24): along x,
+/// `dO/dx = t(+1) e(+1) - t(0) e(0)` and `dD/dx = reflect(e(+1), n(+1)) - reflect(e(0), n(0))` from
+/// the right neighbour; when `|t(+1) - t(0)| > depth_epsilon` and the left neighbour's distance step is
+/// smaller, the left neighbour is used instead, sign-flipped (`t(0) e(0) - t(-1) e(-1)`, ...). The same
+/// along y with the lower (forward) and upper (backward) neighbours. `e` are unit eye directions.
+pub fn gbuffer_ray_diff(
+    center: GBufferSample,
+    right: GBufferSample,
+    left: GBufferSample,
+    below: GBufferSample,
+    above: GBufferSample,
+    depth_epsilon: f32,
+) -> RayDiff {
+    let (start_x, end_x) = if gbuffer_use_backward(center, right, left, depth_epsilon) {
+        (left, center)
+    } else {
+        (center, right)
+    };
+    let (start_y, end_y) = if gbuffer_use_backward(center, below, above, depth_epsilon) {
+        (above, center)
+    } else {
+        (center, below)
+    };
+    RayDiff::new(
+        gbuffer_position_step(start_x, end_x),
+        gbuffer_position_step(start_y, end_y),
+        gbuffer_direction_step(start_x, end_x),
+        gbuffer_direction_step(start_y, end_y),
+    )
+}
+
+/// Offset between the hit of the neighbour ray `rd_neighbour` on the tangent plane and the hit at
+/// distance `t` (Quilez, `calcDpDxy`): `t * (rd_neighbour * dot(rd, n) / dot(rd_neighbour, n) - rd)`,
+/// with `dot(rd_neighbour, n)` clamped away from 0 to `|cos| >= DIFF_MIN_COS`.
+fn tangent_plane_offset(rd: Vec3, rd_neighbour: Vec3, t: f32, normal: Vec3) -> Vec3 {
+    let cosine = clamp_away_from_zero(rd_neighbour.dot(normal), DIFF_MIN_COS);
+    t * (rd_neighbour * (rd.dot(normal) / cosine) - rd)
+}
+
+/// Position differentials of a raymarched hit from the neighbour rays (Quilez): the rays through the
+/// right (`rdx`) and lower (`rdy`) neighbour pixels, all from the same origin, are intersected with the
+/// tangent plane at the hit `ro + t rd` with unit normal `normal`:
+/// `dp/dx = t (rdx dot(rd, n) / dot(rdx, n) - rd)`, same for y.
+pub fn tangent_plane_offsets(rd: Vec3, rdx: Vec3, rdy: Vec3, t: f32, normal: Vec3) -> Derivatives3 {
+    Derivatives3::new(
+        tangent_plane_offset(rd, rdx, t, normal),
+        tangent_plane_offset(rd, rdy, t, normal),
+    )
+}
+
+/// Texture gradients of the planar mapping `uv = p.xz * scale` (Quilez): `duv/dx = dp/dx.xz * scale`,
+/// same for y.
+pub fn planar_mapping_gradients(d_position: Derivatives3, scale: Vec2) -> Derivatives2 {
+    Derivatives2::new(d_position.dx.xz() * scale, d_position.dy.xz() * scale)
+}
+
+/// Triplanar blend weights (Quilez): `m = |n|^k / (m.x + m.y + m.z)` with `k = sharpness` clamped to
+/// `[0, DIFF_MAX_SHARPNESS]`, `|n|` to `>= DIFF_MIN_MAGNITUDE` (so `0^0` never occurs) and the sum to
+/// `>= DIFF_MIN_MAGNITUDE`. The weights of the yz, zx and xy projections, summing to 1.
+pub fn triplanar_weights(normal: Vec3, sharpness: f32) -> Vec3 {
+    let k = sharpness.clamp(0.0, DIFF_MAX_SHARPNESS);
+    let m = normal.abs().max(Vec3::splat(DIFF_MIN_MAGNITUDE)).powf(k);
+    m / (m.x + m.y + m.z).max(DIFF_MIN_MAGNITUDE)
+}
+
+/// Gradients of the three triplanar projections `p.yz * scale`, `p.zx * scale`, `p.xy * scale`
+/// (Quilez): each projection is sampled with its own two components of the position differentials.
+pub fn triplanar_gradients(d_position: Derivatives3, scale: f32) -> TriplanarGradients {
+    let (dx, dy) = (d_position.dx * scale, d_position.dy * scale);
+    TriplanarGradients {
+        yz: Derivatives2::new(dx.yz(), dy.yz()),
+        zx: Derivatives2::new(dx.zx(), dy.zx()),
+        xy: Derivatives2::new(dx.xy(), dy.xy()),
+    }
+}
+
+/// `|v|` measured as `m * |v / m|` with `m` the largest `|component|` (at least `DIFF_MIN_MAGNITUDE`),
+/// so that squaring cannot overflow.
+fn scaled_length(v: Vec3) -> f32 {
+    let m = v.x.abs().max(v.y.abs()).max(v.z.abs().max(DIFF_MIN_MAGNITUDE));
+    m * (v / m).length()
+}
+
+/// Barycentrics `(w, u, v)` of the point where the ray `origin + s * direction` meets the unbounded
+/// plane of the triangle (RTG Eq. 13 with `g = d`; Cramer's rule): with `e1 = p1 - p0`,
+/// `e2 = p2 - p0`, `k = dot(cross(e1, e2), d)` and `s0 = origin - p0`:
+/// `u = dot(cross(e2, d), s0) / k`, `v = dot(cross(d, e1), s0) / k`, `w = 1 - u - v`.
+///
+/// The parallel case (the wireframe tutorial's intersection divides by zero there) is clamped: `k`
+/// to `|k| >= DIFF_MIN_MAGNITUDE`, keeping its sign, and `u`, `v` to
+/// `[-DIFF_MAX_VALUE, DIFF_MAX_VALUE]`. The hit may lie behind the origin or outside the triangle.
+pub fn intersect_triangle_plane(origin: Vec3, direction: Vec3, p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
+    let e1 = p1 - p0;
+    let e2 = p2 - p0;
+    let s0 = origin - p0;
+    let k = clamp_away_from_zero(e1.cross(e2).dot(direction), DIFF_MIN_MAGNITUDE);
+    let limit = Vec2::splat(DIFF_MAX_VALUE);
+    let uv = (Vec2::new(e2.cross(direction).dot(s0), direction.cross(e1).dot(s0)) / k).clamp(-limit, limit);
+    Vec3::new(1.0 - uv.x - uv.y, uv.x, uv.y)
+}
+
+/// `(matrix * (point, 1)).xyz`: a point through the 4x3 part of `matrix` (its fourth row is ignored).
+fn transform_point(matrix: Mat4, point: Vec3) -> Vec3 {
+    (matrix * point.extend(1.0)).xyz()
+}
+
+/// Signed barycentric differences to the neighbour pixels by re-intersection (wireframe tutorial,
+/// `computeDerivative` and "Going Further"): the world ray origin `O` is moved by each neighbour
+/// direction ([`pixel_directions`]); `O` and both moved points go to object space with
+/// `world_to_object`; each neighbour ray (object origin, moved point - object origin) is intersected
+/// with the unbounded plane of the object-space triangle ([`intersect_triangle_plane`]); the result is
+/// `(b_x - b, b_y - b)` with `b = hit_barycentrics = (w, u, v)`.
+///
+/// `world_to_object` is the 4x3 world-to-object matrix passed as a `mat4` whose fourth row is ignored
+/// (GLSL `mat4(gl_WorldToObjectEXT)`); the object ray origin is computed from it. In f32 the moved
+/// points lose the low bits of `O + direction` when `|O|` is large; see [`crate::ray_diff_f64`].
+#[allow(clippy::too_many_arguments)]
+pub fn barycentric_offsets(
+    world_to_object: Mat4,
+    world_origin: Vec3,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    direction_x: Vec3,
+    direction_y: Vec3,
+    hit_barycentrics: Vec3,
+) -> Derivatives3 {
+    let origin = transform_point(world_to_object, world_origin);
+    let object_x = transform_point(world_to_object, world_origin + direction_x) - origin;
+    let object_y = transform_point(world_to_object, world_origin + direction_y) - origin;
+    Derivatives3::new(
+        intersect_triangle_plane(origin, object_x, p0, p1, p2) - hit_barycentrics,
+        intersect_triangle_plane(origin, object_y, p0, p1, p2) - hit_barycentrics,
+    )
+}
+
+/// Per-pixel barycentric deltas by re-intersection, the ray-tracing analogue of `fwidth(barycentrics)`
+/// (wireframe tutorial, `computeDerivative`): `|b_x - b| + |b_y - b|` per component, from
+/// [`barycentric_offsets`] (same arguments and clamps).
+#[allow(clippy::too_many_arguments)]
+pub fn barycentric_deltas(
+    world_to_object: Mat4,
+    world_origin: Vec3,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    direction_x: Vec3,
+    direction_y: Vec3,
+    hit_barycentrics: Vec3,
+) -> Vec3 {
+    let offsets = barycentric_offsets(
+        world_to_object,
+        world_origin,
+        p0,
+        p1,
+        p2,
+        direction_x,
+        direction_y,
+        hit_barycentrics,
+    );
+    offsets.dx.abs() + offsets.dy.abs()
+}
+
+/// Anisotropic UV gradients of a primary hit from the signed barycentric differences (wireframe
+/// tutorial, "Going Further"): `ddx_uv = sum_i (b_x - b)_i * uv_i`, same for y, with `b = (w, u, v)`
+/// matching `(uv0, uv1, uv2)`.
+pub fn uv_gradients_from_offsets(offsets: Derivatives3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> Derivatives2 {
+    Derivatives2::new(
+        offsets.dx.x * uv0 + offsets.dx.y * uv1 + offsets.dx.z * uv2,
+        offsets.dy.x * uv0 + offsets.dy.y * uv1 + offsets.dy.z * uv2,
+    )
+}
+
+/// Closed-form barycentric deltas from a ray cone, without re-intersection (as in nvpro's glTF
+/// renderer): `delta_i = |world_footprint| * |edge opposite vertex i| / |cross(e1, e2)|`, i.e. the
+/// footprint divided by the distance from vertex i to its opposite edge. The edges are
+/// `p2 - p1`, `p2 - p0`, `p1 - p0` for `(w, u, v)`; `|cross|` is clamped to `>= DIFF_MIN_MAGNITUDE` and
+/// the deltas to `<= DIFF_MAX_VALUE`. `world_footprint` is the slant-corrected cone footprint.
+pub fn cone_barycentric_deltas(world_footprint: f32, p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
+    let area2 = scaled_length((p1 - p0).cross(p2 - p0)).max(DIFF_MIN_MAGNITUDE);
+    let edges = Vec3::new(
+        scaled_length(p2 - p1),
+        scaled_length(p2 - p0),
+        scaled_length(p1 - p0),
+    );
+    (world_footprint.abs() * edges / area2).min(Vec3::splat(DIFF_MAX_VALUE))
+}

@@ -1,3 +1,137 @@
 //! Ray differentials in double precision, for scenes whose coordinate range defeats f32. Needs f64 in shaders (naga FLOAT64 / wgpu SHADER_F64; GLSL double with shaderFloat64).
 //!
-//! The Rust mirror of `shaders/wgsl/ray_diff_f64.wgsl` and `shaders/glsl/ray_diff_f64.glsl`.
+//! The Rust mirror of `shaders/wgsl/ray_diff_f64.wgsl` and `shaders/glsl/ray_diff_f64.glsl`: the
+//! barycentric re-intersection of [`crate::ray_diff`] (SPEC 2.10) computed in f64, as the wireframe
+//! tutorial's `computeDerivativeHighp`. The public functions take and return `f32` exactly like their
+//! f32 twins in [`crate::ray_diff`] (drop-in replacements with the suffix `_f64`); every intermediate
+//! is `f64`, in the shaders as here, in the same order of operations.
+//!
+//! Why: [`crate::ray_diff::barycentric_offsets`] moves the world ray origin `O` by a unit neighbour
+//! direction and subtracts again. In f32, `O + direction` keeps only `24 - log2|O|` bits of the
+//! direction: at `|O| = 1e4` the neighbour direction is off by about `1e-3`, as much as a pixel's
+//! angular step, and the barycentric deltas of a far-away triangle become noise (thin wireframe lines
+//! flicker). In f64 the same steps lose nothing that matters for any f32 scene.
+//!
+//! The module is independent of [`crate::ray_diff`] (its shaders can be included alone or next to
+//! it); names carry `_f64` / `F64_` so that both can be included together.
+
+use glam::{DVec2, DVec3, Mat4, Vec3, Vec4Swizzles};
+
+/// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane),
+/// as `DIFF_MIN_MAGNITUDE` in [`crate::ray_diff`]: the f32 value `1e-30` widened, the same in all three
+/// languages (naga's GLSL front end reads no double literals, so the shaders convert a float literal).
+pub const F64_MIN_MAGNITUDE: f64 = 1.0e-30_f32 as f64;
+/// Largest magnitude of a barycentric coordinate, as `DIFF_MAX_VALUE` in [`crate::ray_diff`] (the f32
+/// value `1e30` widened); it also keeps the conversion to f32 finite.
+pub const F64_MAX_VALUE: f64 = 1.0e30_f32 as f64;
+
+/// Signed barycentric differences to the neighbour pixels, `(b_x - b, b_y - b)` (shader
+/// `RfBarycentricOffsets`; the same values as [`crate::ray_diff::Derivatives3`] from
+/// [`crate::ray_diff::barycentric_offsets`]). A function result, not laid out for host-shareable buffers.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BarycentricOffsets {
+    /// `b_x - b`: towards the right neighbour pixel.
+    pub dx: Vec3,
+    /// `b_y - b`: towards the lower neighbour pixel.
+    pub dy: Vec3,
+}
+
+/// `value`, or `min_magnitude` with the sign of `value` (+ for 0) when `|value| < min_magnitude`.
+fn clamp_away_from_zero_f64(value: f64, min_magnitude: f64) -> f64 {
+    if value.abs() < min_magnitude {
+        if value >= 0.0 {
+            min_magnitude
+        } else {
+            -min_magnitude
+        }
+    } else {
+        value
+    }
+}
+
+/// Barycentrics `(w, u, v)` of the ray's hit on the unbounded triangle plane, in f64 (RTG Eq. 13 with
+/// `g = d`): `u = dot(cross(e2, d), s0) / k`, `v = dot(cross(d, e1), s0) / k`, `w = 1 - u - v`,
+/// `k = dot(cross(e1, e2), d)` clamped away from 0 to `|k| >= F64_MIN_MAGNITUDE`, `u`, `v` clamped to
+/// `[-F64_MAX_VALUE, F64_MAX_VALUE]`.
+fn plane_barycentrics_f64(origin: DVec3, direction: DVec3, p0: DVec3, p1: DVec3, p2: DVec3) -> DVec3 {
+    let e1 = p1 - p0;
+    let e2 = p2 - p0;
+    let s0 = origin - p0;
+    let k = clamp_away_from_zero_f64(e1.cross(e2).dot(direction), F64_MIN_MAGNITUDE);
+    let limit = DVec2::splat(F64_MAX_VALUE);
+    let uv = (DVec2::new(e2.cross(direction).dot(s0), direction.cross(e1).dot(s0)) / k).clamp(-limit, limit);
+    DVec3::new(1.0 - uv.x - uv.y, uv.x, uv.y)
+}
+
+/// [`crate::ray_diff::intersect_triangle_plane`] computed in f64: f32 in, f32 out.
+pub fn intersect_triangle_plane_f64(origin: Vec3, direction: Vec3, p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
+    plane_barycentrics_f64(
+        origin.as_dvec3(),
+        direction.as_dvec3(),
+        p0.as_dvec3(),
+        p1.as_dvec3(),
+        p2.as_dvec3(),
+    )
+    .as_vec3()
+}
+
+/// `(matrix * (point, 1)).xyz` in f64, column by column: `c0 x + c1 y + c2 z + c3` (the 4x3 part; the
+/// fourth row is ignored).
+fn transform_point_f64(matrix: Mat4, point: DVec3) -> DVec3 {
+    matrix.x_axis.xyz().as_dvec3() * point.x
+        + matrix.y_axis.xyz().as_dvec3() * point.y
+        + matrix.z_axis.xyz().as_dvec3() * point.z
+        + matrix.w_axis.xyz().as_dvec3()
+}
+
+/// [`crate::ray_diff::barycentric_offsets`] computed in f64 (wireframe tutorial,
+/// `computeDerivativeHighp`): the moved origins `O + direction`, their object-space images and the
+/// plane intersections are f64; the differences `b_x - b`, `b_y - b` are rounded to f32 once.
+#[allow(clippy::too_many_arguments)]
+pub fn barycentric_offsets_f64(
+    world_to_object: Mat4,
+    world_origin: Vec3,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    direction_x: Vec3,
+    direction_y: Vec3,
+    hit_barycentrics: Vec3,
+) -> BarycentricOffsets {
+    let world = world_origin.as_dvec3();
+    let origin = transform_point_f64(world_to_object, world);
+    let object_x = transform_point_f64(world_to_object, world + direction_x.as_dvec3()) - origin;
+    let object_y = transform_point_f64(world_to_object, world + direction_y.as_dvec3()) - origin;
+    let (q0, q1, q2) = (p0.as_dvec3(), p1.as_dvec3(), p2.as_dvec3());
+    let hit = hit_barycentrics.as_dvec3();
+    BarycentricOffsets {
+        dx: (plane_barycentrics_f64(origin, object_x, q0, q1, q2) - hit).as_vec3(),
+        dy: (plane_barycentrics_f64(origin, object_y, q0, q1, q2) - hit).as_vec3(),
+    }
+}
+
+/// [`crate::ray_diff::barycentric_deltas`] from [`barycentric_offsets_f64`]: `|b_x - b| + |b_y - b|`
+/// (the final sum in f32).
+#[allow(clippy::too_many_arguments)]
+pub fn barycentric_deltas_f64(
+    world_to_object: Mat4,
+    world_origin: Vec3,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    direction_x: Vec3,
+    direction_y: Vec3,
+    hit_barycentrics: Vec3,
+) -> Vec3 {
+    let offsets = barycentric_offsets_f64(
+        world_to_object,
+        world_origin,
+        p0,
+        p1,
+        p2,
+        direction_x,
+        direction_y,
+        hit_barycentrics,
+    );
+    offsets.dx.abs() + offsets.dy.abs()
+}

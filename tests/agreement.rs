@@ -82,3 +82,23 @@ fn wireframe_wgsl() {
 fn wireframe_glsl() {
     agree(Module::Wireframe, Language::Glsl);
 }
+
+#[test]
+fn ray_diff_wgsl() {
+    agree(Module::RayDiff, Language::Wgsl);
+}
+
+#[test]
+fn ray_diff_glsl() {
+    agree(Module::RayDiff, Language::Glsl);
+}
+
+#[test]
+fn ray_diff_f64_wgsl() {
+    agree(Module::RayDiffF64, Language::Wgsl);
+}
+
+#[test]
+fn ray_diff_f64_glsl() {
+    agree(Module::RayDiffF64, Language::Glsl);
+}

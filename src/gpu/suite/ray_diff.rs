@@ -1,8 +1,1046 @@
 //! Agreement checks of the ray_diff module, one per function, in the module's order.
+//!
+//! Every tolerance is the width of an enclosure ([`bound`]): the check re-evaluates its function in
+//! interval arithmetic on the same inputs, widening after each operation by the rounding error that
+//! Vulkan's precision rules allow the device (and that the mirror makes), so both results lie inside.
+//! The `b_*` functions below are those re-evaluations, one per shader function, in the module's
+//! order of operations.
 
-use crate::gpu::check::Check;
+pub(crate) mod bound;
+
+use self::bound::{mat_vec, v2, v3, F32, I, V, V2, V3};
+use crate::gpu::check::{Check, FunctionCheck};
+use crate::gpu::strategy::{
+    distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle, unit_vec3,
+    uv_triangle, vec3,
+};
+use crate::gpu::value::{float_value, GpuValue, ShaderType, StructType};
+use crate::ray_diff::{
+    self as rd, Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, RefractedRayDiff,
+    TriplanarGradients, DIFF_MAX_FOV_Y, DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
+};
+use crate::shaders::Module;
+use glam::{Mat4, Quat, Vec2, Vec3, Vec4Swizzles};
+use proptest::prelude::*;
+
+/// `RfRayDiff` as the shaders declare it (pads included).
+pub const RAY_DIFF: StructType = StructType {
+    name: "RfRayDiff",
+    fields: &[
+        ("d_origin_dx", ShaderType::Vec3),
+        ("pad0", ShaderType::F32),
+        ("d_origin_dy", ShaderType::Vec3),
+        ("pad1", ShaderType::F32),
+        ("d_direction_dx", ShaderType::Vec3),
+        ("pad2", ShaderType::F32),
+        ("d_direction_dy", ShaderType::Vec3),
+        ("pad3", ShaderType::F32),
+    ],
+};
+
+/// `RfDerivatives2`.
+pub const DERIVATIVES2: StructType = StructType {
+    name: "RfDerivatives2",
+    fields: &[("dx", ShaderType::Vec2), ("dy", ShaderType::Vec2)],
+};
+
+/// `RfDerivatives3`.
+pub const DERIVATIVES3: StructType = StructType {
+    name: "RfDerivatives3",
+    fields: &[("dx", ShaderType::Vec3), ("dy", ShaderType::Vec3)],
+};
+
+/// `RfNeighbourDirections`.
+pub const NEIGHBOUR_DIRECTIONS: StructType = StructType {
+    name: "RfNeighbourDirections",
+    fields: &[("right", ShaderType::Vec3), ("below", ShaderType::Vec3)],
+};
+
+/// `RfRefractedRayDiff`.
+pub const REFRACTED_RAY_DIFF: StructType = StructType {
+    name: "RfRefractedRayDiff",
+    fields: &[
+        ("diff", ShaderType::Struct(&RAY_DIFF)),
+        ("total_internal_reflection", ShaderType::Bool),
+    ],
+};
+
+/// `RfGBufferSample`.
+pub const G_BUFFER_SAMPLE: StructType = StructType {
+    name: "RfGBufferSample",
+    fields: &[
+        ("eye_direction", ShaderType::Vec3),
+        ("distance", ShaderType::F32),
+        ("normal", ShaderType::Vec3),
+    ],
+};
+
+/// `RfTriplanarGradients`.
+pub const TRIPLANAR_GRADIENTS: StructType = StructType {
+    name: "RfTriplanarGradients",
+    fields: &[
+        ("yz", ShaderType::Struct(&DERIVATIVES2)),
+        ("zx", ShaderType::Struct(&DERIVATIVES2)),
+        ("xy", ShaderType::Struct(&DERIVATIVES2)),
+    ],
+};
+
+/// The next word (used by `float_value!`).
+fn take(words: &mut &[u32]) -> u32 {
+    let (first, rest) = words
+        .split_first()
+        .expect("kernel output has the expected length");
+    *words = rest;
+    *first
+}
+
+#[rustfmt::skip]
+float_value!(
+    RayDiff,
+    ShaderType::Struct(&RAY_DIFF),
+    |v| [
+        v.d_origin_dx.x, v.d_origin_dx.y, v.d_origin_dx.z, v.pad0,
+        v.d_origin_dy.x, v.d_origin_dy.y, v.d_origin_dy.z, v.pad1,
+        v.d_direction_dx.x, v.d_direction_dx.y, v.d_direction_dx.z, v.pad2,
+        v.d_direction_dy.x, v.d_direction_dy.y, v.d_direction_dy.z, v.pad3
+    ],
+    |w| RayDiff {
+        d_origin_dx: Vec3::new(w(), w(), w()), pad0: w(),
+        d_origin_dy: Vec3::new(w(), w(), w()), pad1: w(),
+        d_direction_dx: Vec3::new(w(), w(), w()), pad2: w(),
+        d_direction_dy: Vec3::new(w(), w(), w()), pad3: w(),
+    }
+);
+
+#[rustfmt::skip]
+float_value!(
+    Derivatives2,
+    ShaderType::Struct(&DERIVATIVES2),
+    |v| [v.dx.x, v.dx.y, v.dy.x, v.dy.y],
+    |w| Derivatives2::new(Vec2::new(w(), w()), Vec2::new(w(), w()))
+);
+
+#[rustfmt::skip]
+float_value!(
+    Derivatives3,
+    ShaderType::Struct(&DERIVATIVES3),
+    |v| [v.dx.x, v.dx.y, v.dx.z, v.dy.x, v.dy.y, v.dy.z],
+    |w| Derivatives3::new(Vec3::new(w(), w(), w()), Vec3::new(w(), w(), w()))
+);
+
+#[rustfmt::skip]
+float_value!(
+    NeighbourDirections,
+    ShaderType::Struct(&NEIGHBOUR_DIRECTIONS),
+    |v| [v.right.x, v.right.y, v.right.z, v.below.x, v.below.y, v.below.z],
+    |w| NeighbourDirections { right: Vec3::new(w(), w(), w()), below: Vec3::new(w(), w(), w()) }
+);
+
+#[rustfmt::skip]
+float_value!(
+    GBufferSample,
+    ShaderType::Struct(&G_BUFFER_SAMPLE),
+    |v| [v.eye_direction.x, v.eye_direction.y, v.eye_direction.z, v.distance, v.normal.x, v.normal.y, v.normal.z],
+    |w| GBufferSample {
+        eye_direction: Vec3::new(w(), w(), w()),
+        distance: w(),
+        normal: Vec3::new(w(), w(), w()),
+    }
+);
+
+#[rustfmt::skip]
+float_value!(
+    TriplanarGradients,
+    ShaderType::Struct(&TRIPLANAR_GRADIENTS),
+    |v| [
+        v.yz.dx.x, v.yz.dx.y, v.yz.dy.x, v.yz.dy.y,
+        v.zx.dx.x, v.zx.dx.y, v.zx.dy.x, v.zx.dy.y,
+        v.xy.dx.x, v.xy.dx.y, v.xy.dy.x, v.xy.dy.y
+    ],
+    |w| TriplanarGradients {
+        yz: Derivatives2::new(Vec2::new(w(), w()), Vec2::new(w(), w())),
+        zx: Derivatives2::new(Vec2::new(w(), w()), Vec2::new(w(), w())),
+        xy: Derivatives2::new(Vec2::new(w(), w()), Vec2::new(w(), w())),
+    }
+);
+
+/// A struct with a bool: written field by field.
+impl GpuValue for RefractedRayDiff {
+    const TYPE: ShaderType = ShaderType::Struct(&REFRACTED_RAY_DIFF);
+    fn write(&self, words: &mut Vec<u32>) {
+        self.diff.write(words);
+        self.total_internal_reflection.write(words);
+    }
+    fn read(words: &mut &[u32]) -> Self {
+        let diff = RayDiff::read(words);
+        RefractedRayDiff {
+            diff,
+            total_internal_reflection: bool::read(words),
+        }
+    }
+    fn components(&self, out: &mut Vec<f32>) {
+        self.diff.components(out);
+        self.total_internal_reflection.components(out);
+    }
+    fn is_finite(&self) -> bool {
+        self.diff.is_finite()
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Strategies
+// ---------------------------------------------------------------------------------------------
+
+/// A pixel inside an image (or, sometimes, outside it) and the image size (from [`pixels`]).
+pub fn pixel_and_size() -> BoxedStrategy<(Vec2, Vec2)> {
+    ((pixels(), pixels()), (0.0f32..1.0, 0.0f32..1.0), any::<bool>())
+        .prop_map(|((w, h), (fx, fy), outside)| {
+            let size = Vec2::new(w, h);
+            let pixel = if outside {
+                Vec2::new(fx, fy) * 40000.0 - 20000.0
+            } else {
+                (Vec2::new(fx, fy) * size.max(Vec2::ONE)).floor()
+            };
+            (pixel, size)
+        })
+        .boxed()
+}
+
+/// A rotation (axis-aligned ones included).
+fn rotation() -> BoxedStrategy<Quat> {
+    (unit_vec3(), 0.0f32..std::f32::consts::TAU)
+        .prop_map(|(axis, angle)| Quat::from_axis_angle(axis, angle))
+        .boxed()
+}
+
+/// A camera basis: right, up and view (towards the eye), orthonormal up to rounding.
+pub fn camera_basis() -> BoxedStrategy<(Vec3, Vec3, Vec3)> {
+    rotation()
+        .prop_map(|q| (q * Vec3::X, q * Vec3::Y, q * Vec3::Z))
+        .boxed()
+}
+
+/// A rigid transform with a translation from [`vec3`] (a camera-to-world matrix).
+pub fn rigid() -> BoxedStrategy<Mat4> {
+    (rotation(), vec3())
+        .prop_map(|(q, t)| Mat4::from_rotation_translation(q, t))
+        .boxed()
+}
+
+/// An inverse projection matrix: perspective (OpenGL or Vulkan, y-flipped), or arbitrary with
+/// moderate entries.
+pub fn proj_inv() -> BoxedStrategy<Mat4> {
+    let perspective =
+        (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>()).prop_map(|(fov, aspect, near, vulkan)| {
+            let projection = if vulkan {
+                glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)
+            } else {
+                glam::camera::rh::proj::opengl::perspective(fov, aspect, near, near * 1000.0)
+            };
+            projection.inverse()
+        });
+    let arbitrary = prop::array::uniform16(-10.0f32..10.0).prop_map(|cols| Mat4::from_cols_array(&cols));
+    prop_oneof![3 => perspective, 1 => arbitrary].boxed()
+}
+
+/// A differential vector: ordinary, small (pixel-sized), or anywhere in the domain.
+fn differential_vec3() -> BoxedStrategy<Vec3> {
+    prop_oneof![
+        3 => small_vec3(),
+        2 => small_vec3().prop_map(|v| v * 1.0e-4),
+        1 => vec3(),
+        1 => Just(Vec3::ZERO),
+    ]
+    .boxed()
+}
+
+/// A ray differential: origin differentials from [`differential_vec3`], direction differentials
+/// ordinary or pixel-sized.
+pub fn ray_diff() -> BoxedStrategy<RayDiff> {
+    let direction = || prop_oneof![small_vec3(), small_vec3().prop_map(|v| v * 1.0e-4)];
+    (differential_vec3(), differential_vec3(), direction(), direction())
+        .prop_map(|(a, b, c, d)| RayDiff::new(a, b, c, d))
+        .boxed()
+}
+
+/// `(du, dv)` derivatives: ordinary, tiny or huge.
+fn derivatives2() -> BoxedStrategy<Derivatives2> {
+    let component = || prop_oneof![3 => -10.0f32..10.0, 1 => scalar()];
+    (component(), component(), component(), component())
+        .prop_map(|(a, b, c, d)| Derivatives2::new(Vec2::new(a, b), Vec2::new(c, d)))
+        .boxed()
+}
+
+/// Vector derivatives from [`differential_vec3`].
+fn derivatives3() -> BoxedStrategy<Derivatives3> {
+    (differential_vec3(), differential_vec3())
+        .prop_map(|(dx, dy)| Derivatives3::new(dx, dy))
+        .boxed()
+}
+
+/// A hit's barycentrics `(w, u, v)`, inside the triangle or not, summing to 1 up to rounding.
+fn hit_barycentrics() -> BoxedStrategy<Vec3> {
+    (-1.0f32..2.0, -1.0f32..2.0)
+        .prop_map(|(u, v)| Vec3::new(1.0 - u - v, u, v))
+        .boxed()
+}
+
+/// A world-to-object matrix: rotation, uniform scale in `[1e-3, 1e3]`, translation up to 1e9; the
+/// world origins of [`world_origin`] stay within 1e12 in object space.
+fn world_to_object() -> BoxedStrategy<Mat4> {
+    (rotation(), -3.0f32..3.0, small_vec3(), -9.0f32..9.0)
+        .prop_map(|(q, scale, t, e)| {
+            Mat4::from_scale_rotation_translation(Vec3::splat(10f32.powf(scale)), q, t * 10f32.powf(e) / 10.0)
+        })
+        .boxed()
+}
+
+/// A world ray origin up to 1e9.
+fn world_origin() -> BoxedStrategy<Vec3> {
+    (small_vec3(), -12.0f32..8.0)
+        .prop_map(|(v, e)| v * 10f32.powf(e))
+        .boxed()
+}
+
+/// A unit direction or a moderately scaled one (functions that take non-normalized directions).
+fn any_direction() -> BoxedStrategy<Vec3> {
+    prop_oneof![3 => unit_vec3(), 1 => small_vec3()].boxed()
+}
+
+/// A G-buffer pixel: unit eye direction, distance, unit normal.
+fn gbuffer_sample() -> BoxedStrategy<GBufferSample> {
+    (normal_and_direction(), distance())
+        .prop_map(|((normal, eye_direction), distance)| GBufferSample {
+            eye_direction,
+            distance,
+            normal,
+        })
+        .boxed()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Enclosures of the module's functions (same order of operations as src/ray_diff.rs)
+// ---------------------------------------------------------------------------------------------
+
+fn s(x: f32) -> I {
+    I::exact(x)
+}
+
+fn zero3() -> V3 {
+    V([I::c(0.0); 3])
+}
+
+fn component(bounds: Vec<I>, index: usize) -> f32 {
+    bounds[index].tolerance()
+}
+
+/// A `RayDiff`'s 16 components, pads exactly 0.
+fn b_ray_diff(o_dx: V3, o_dy: V3, d_dx: V3, d_dy: V3) -> Vec<I> {
+    [o_dx, o_dy, d_dx, d_dy]
+        .iter()
+        .flat_map(|v| v.components().into_iter().chain([I::c(0.0)]))
+        .collect()
+}
+
+fn b_derivatives2(dx: V2, dy: V2) -> Vec<I> {
+    [dx.components(), dy.components()].concat()
+}
+
+fn b_derivatives3(dx: V3, dy: V3) -> Vec<I> {
+    [dx.components(), dy.components()].concat()
+}
+
+fn b_eye_ray_extent(image_size: Vec2, fov_y: f32) -> V2 {
+    let size = image_size.max(Vec2::ONE);
+    let f = I::tan_exact(0.5 * fov_y.clamp(0.0, DIFF_MAX_FOV_Y));
+    V([s(size.x) / s(size.y) * f, f])
+}
+
+fn b_pixel_ndc(pixel: Vec2, image_size: Vec2) -> V2 {
+    let size = image_size.max(Vec2::ONE);
+    V(std::array::from_fn(|i| {
+        (s(pixel[i]) + I::c(0.5)) / s(size[i]) * I::c(2.0) - I::c(1.0)
+    }))
+}
+
+type Camera = (Vec2, Vec2, f32, Vec3, Vec3, Vec3);
+
+fn b_eye_ray_direction(&(pixel, size, fov, right, up, view): &Camera) -> V3 {
+    let c = b_pixel_ndc(pixel, size);
+    let extent = b_eye_ray_extent(size, fov);
+    v3(right) * (c.0[0] * extent.0[0]) - v3(up) * (c.0[1] * extent.0[1]) - v3(view)
+}
+
+fn b_normalized_derivative(v: V3, dv: V3) -> V3 {
+    let length2 = v.dot(v).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    (dv - v * (v.dot(dv) / length2)) / length2.sqrt()
+}
+
+fn b_eye_ray_diff(camera: &Camera) -> Vec<I> {
+    let &(_, image_size, fov, right, up, _) = camera;
+    let d = b_eye_ray_direction(camera);
+    let size = image_size.max(Vec2::ONE);
+    let extent = b_eye_ray_extent(image_size, fov);
+    let dd_dx = v3(right) * (I::c(2.0) * extent.0[0] / s(size.x));
+    let dd_dy = v3(up) * -(I::c(2.0) * extent.0[1] / s(size.y));
+    b_ray_diff(
+        zero3(),
+        zero3(),
+        b_normalized_derivative(d, dd_dx),
+        b_normalized_derivative(d, dd_dy),
+    )
+}
+
+fn b_safe_normalize(v: V3) -> V3 {
+    v / v.dot(v).max_c(f64::from(DIFF_MIN_MAGNITUDE)).sqrt()
+}
+
+fn b_matrix_ray_direction(ndc: V2, view_inv: Mat4, proj_inv: Mat4) -> V3 {
+    let far_point = mat_vec(proj_inv, V([ndc.0[0], ndc.0[1], I::c(1.0)]), I::c(1.0), F32);
+    mat_vec(view_inv, b_safe_normalize(far_point), I::c(0.0), F32)
+}
+
+type Matrices = (Vec2, Vec2, Mat4, Mat4);
+
+fn b_eye_ray_direction_from_matrices(&(pixel, size, view_inv, proj_inv): &Matrices) -> V3 {
+    b_matrix_ray_direction(b_pixel_ndc(pixel, size), view_inv, proj_inv)
+}
+
+fn b_eye_ray_diff_from_matrices(&(pixel, image_size, view_inv, proj_inv): &Matrices) -> Vec<I> {
+    let size = image_size.max(Vec2::ONE);
+    let ndc = b_pixel_ndc(pixel, image_size);
+    let far_point = mat_vec(proj_inv, V([ndc.0[0], ndc.0[1], I::c(1.0)]), I::c(1.0), F32);
+    let dfar_dx = v3(proj_inv.x_axis.xyz()) * (I::c(2.0) / s(size.x));
+    let dfar_dy = v3(proj_inv.y_axis.xyz()) * (I::c(2.0) / s(size.y));
+    let dd_dx = mat_vec(
+        view_inv,
+        b_normalized_derivative(far_point, dfar_dx),
+        I::c(0.0),
+        F32,
+    );
+    let dd_dy = mat_vec(
+        view_inv,
+        b_normalized_derivative(far_point, dfar_dy),
+        I::c(0.0),
+        F32,
+    );
+    b_ray_diff(zero3(), zero3(), dd_dx, dd_dy)
+}
+
+fn b_pixel_directions(&(pixel, size, view_inv, proj_inv): &Matrices) -> Vec<I> {
+    let ndc = b_pixel_ndc(pixel, size);
+    let next = b_pixel_ndc(pixel + 1.0, size);
+    let right = b_matrix_ray_direction(V([next.0[0], ndc.0[1]]), view_inv, proj_inv);
+    let below = b_matrix_ray_direction(V([ndc.0[0], next.0[1]]), view_inv, proj_inv);
+    b_derivatives3(right, below)
+}
+
+fn b_transferred_origin(d_origin: Vec3, d_direction: Vec3, direction: Vec3, t: f32, normal: Vec3) -> V3 {
+    let cosine = v3(direction).dot(v3(normal));
+    let q = v3(d_origin) + v3(d_direction) * s(t);
+    let dt = (-q.dot(v3(normal))).div_away(cosine, f64::from(DIFF_MIN_COS));
+    q + v3(direction) * dt
+}
+
+fn b_transfer(&(diff, direction, t, normal): &(RayDiff, Vec3, f32, Vec3)) -> Vec<I> {
+    b_ray_diff(
+        b_transferred_origin(diff.d_origin_dx, diff.d_direction_dx, direction, t, normal),
+        b_transferred_origin(diff.d_origin_dy, diff.d_direction_dy, direction, t, normal),
+        v3(diff.d_direction_dx),
+        v3(diff.d_direction_dy),
+    )
+}
+
+/// `x / k` clamped to `DIFF_MAX_VALUE`, `k` clamped away from 0 to `DIFF_MIN_MAGNITUDE`.
+fn b_barycentric_quotient(numerator: I, k: I) -> I {
+    let max = f64::from(DIFF_MAX_VALUE);
+    numerator
+        .div_away(k, f64::from(DIFF_MIN_MAGNITUDE))
+        .clamp_c(-max, max)
+}
+
+type BarycentricArgs = (RayDiff, Vec3, f32, Vec3, Vec3, Vec3);
+
+fn b_barycentric_derivatives(&(diff, direction, t, p0, p1, p2): &BarycentricArgs) -> Vec<I> {
+    let d = v3(direction);
+    let e1 = v3(p1) - v3(p0);
+    let e2 = v3(p2) - v3(p0);
+    let k = e1.cross(e2).dot(d);
+    let cu = e2.cross(d);
+    let cv = d.cross(e1);
+    let q = v3(diff.d_origin_dx) + v3(diff.d_direction_dx) * s(t);
+    let r = v3(diff.d_origin_dy) + v3(diff.d_direction_dy) * s(t);
+    let quotient = |n: I| b_barycentric_quotient(n, k);
+    b_derivatives2(
+        V([quotient(cu.dot(q)), quotient(cv.dot(q))]),
+        V([quotient(cu.dot(r)), quotient(cv.dot(r))]),
+    )
+}
+
+fn b_texture_derivatives(b: Derivatives2, t0: Vec2, t1: Vec2, t2: Vec2) -> (V2, V2) {
+    let g1 = v2(t1) - v2(t0);
+    let g2 = v2(t2) - v2(t0);
+    (g1 * s(b.dx.x) + g2 * s(b.dx.y), g1 * s(b.dy.x) + g2 * s(b.dy.y))
+}
+
+fn b_secondary_origin_derivatives(&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3)) -> Vec<I> {
+    let e1 = v3(p1) - v3(p0);
+    let e2 = v3(p2) - v3(p0);
+    b_derivatives3(e1 * s(b.dx.x) + e2 * s(b.dx.y), e1 * s(b.dy.x) + e2 * s(b.dy.y))
+}
+
+fn b_lod_isotropic(g: Derivatives2) -> I {
+    let rho2 = v2(g.dx).dot(v2(g.dx)).max(v2(g.dy).dot(v2(g.dy)));
+    I::c(0.5) * rho2.max_c(f64::from(DIFF_MIN_MAGNITUDE)).log2()
+}
+
+fn b_lod_box(g: Derivatives2) -> I {
+    let extent = v2(g.dx).abs() + v2(g.dy).abs();
+    extent.0[0]
+        .max(extent.0[1])
+        .max_c(f64::from(DIFF_MIN_MAGNITUDE))
+        .log2()
+}
+
+type NormalArgs = (Vec3, Vec3, Vec3, Vec2, Derivatives2);
+
+fn b_normal_derivatives(&(n0, n1, n2, uv, b): &NormalArgs) -> Vec<I> {
+    let (n0, n1, n2) = (v3(n0), v3(n1), v3(n2));
+    let n = n0 * (I::c(1.0) - s(uv.x) - s(uv.y)) + n1 * s(uv.x) + n2 * s(uv.y);
+    let dn_dx = (n1 - n0) * s(b.dx.x) + (n2 - n0) * s(b.dx.y);
+    let dn_dy = (n1 - n0) * s(b.dy.x) + (n2 - n0) * s(b.dy.y);
+    b_derivatives3(
+        b_normalized_derivative(n, dn_dx),
+        b_normalized_derivative(n, dn_dy),
+    )
+}
+
+fn b_reflected_direction(d_direction: Vec3, direction: Vec3, normal: Vec3, d_normal: Vec3) -> V3 {
+    let (dd, d, n, dn) = (v3(d_direction), v3(direction), v3(normal), v3(d_normal));
+    let cosine = d.dot(n);
+    dd - (dn * cosine + n * (dd.dot(n) + d.dot(dn))) * I::c(2.0)
+}
+
+type ReflectArgs = (RayDiff, Vec3, Vec3, Derivatives3);
+
+fn b_reflect_ray_diff(&(diff, direction, normal, dn): &ReflectArgs) -> Vec<I> {
+    b_ray_diff(
+        v3(diff.d_origin_dx),
+        v3(diff.d_origin_dy),
+        b_reflected_direction(diff.d_direction_dx, direction, normal, dn.dx),
+        b_reflected_direction(diff.d_direction_dy, direction, normal, dn.dy),
+    )
+}
+
+type RefractArgs = (RayDiff, Vec3, Vec3, Derivatives3, f32);
+
+/// The refracted branch, for the part of `k`'s interval that is `>= 0`.
+fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I> {
+    let (d, n, eta) = (v3(direction), v3(normal), s(eta));
+    let cosine = d.dot(n);
+    let root = I {
+        lo: k.lo.max(0.0),
+        ..k
+    }
+    .sqrt();
+    let transmitted_cos = if cosine.hi <= 0.0 {
+        -root
+    } else if cosine.lo > 0.0 {
+        root
+    } else {
+        root.hull(-root)
+    };
+    let mu = eta * cosine - transmitted_cos;
+    let rate = eta - (eta * eta * cosine).div_away(transmitted_cos, f64::from(DIFF_MIN_COS));
+    let refracted = |dd: Vec3, dnormal: Vec3| {
+        let (dd, dnormal) = (v3(dd), v3(dnormal));
+        let d_cos = dd.dot(n) + d.dot(dnormal);
+        dd * eta - (dnormal * mu + n * (rate * d_cos))
+    };
+    b_ray_diff(
+        v3(diff.d_origin_dx),
+        v3(diff.d_origin_dy),
+        refracted(diff.d_direction_dx, dn.dx),
+        refracted(diff.d_direction_dy, dn.dy),
+    )
+}
+
+/// Either branch, or the hull of both (flag `[0, 1]`) when `k`'s sign is uncertain.
+fn b_refract_ray_diff(args: &RefractArgs) -> Vec<I> {
+    let &(diff, direction, normal, dn, eta) = args;
+    let (d, n, eta_i) = (v3(direction), v3(normal), s(eta));
+    let cosine = d.dot(n);
+    let k = I::c(1.0) - eta_i * eta_i * (I::c(1.0) - cosine * cosine);
+    let reflected = || {
+        [
+            b_reflect_ray_diff(&(diff, direction, normal, dn)),
+            vec![I::c(1.0)],
+        ]
+        .concat()
+    };
+    let refracted = || [b_refracted(args, k), vec![I::c(0.0)]].concat();
+    if k.hi < 0.0 {
+        reflected()
+    } else if k.lo >= 0.0 {
+        refracted()
+    } else {
+        reflected()
+            .into_iter()
+            .zip(refracted())
+            .map(|(a, b)| a.hull(b))
+            .collect()
+    }
+}
+
+/// The neighbour choice, in f32 exactly as the device makes it (a correctly rounded subtraction and
+/// comparisons: no rounding freedom).
+fn use_backward(
+    center: GBufferSample,
+    forward: GBufferSample,
+    backward: GBufferSample,
+    epsilon: f32,
+) -> bool {
+    let forward_step = (forward.distance - center.distance).abs();
+    let backward_step = (backward.distance - center.distance).abs();
+    forward_step > epsilon && backward_step < forward_step
+}
+
+fn b_gbuffer_steps(start: GBufferSample, end: GBufferSample) -> (V3, V3) {
+    let reflect = |g: GBufferSample| {
+        let (e, n) = (v3(g.eye_direction), v3(g.normal));
+        e - n * (I::c(2.0) * n.dot(e))
+    };
+    (
+        v3(end.eye_direction) * s(end.distance) - v3(start.eye_direction) * s(start.distance),
+        reflect(end) - reflect(start),
+    )
+}
+
+type GBufferArgs = (
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    f32,
+);
+
+fn b_gbuffer_ray_diff(&(center, right, left, below, above, epsilon): &GBufferArgs) -> Vec<I> {
+    let pair = |forward, backward| {
+        if use_backward(center, forward, backward, epsilon) {
+            b_gbuffer_steps(backward, center)
+        } else {
+            b_gbuffer_steps(center, forward)
+        }
+    };
+    let (x, y) = (pair(right, left), pair(below, above));
+    b_ray_diff(x.0, y.0, x.1, y.1)
+}
+
+fn b_tangent_plane_offset(rd: Vec3, rd_neighbour: Vec3, t: f32, normal: Vec3) -> V3 {
+    let (rd, rdn, n) = (v3(rd), v3(rd_neighbour), v3(normal));
+    let ratio = rd.dot(n).div_away(rdn.dot(n), f64::from(DIFF_MIN_COS));
+    (rdn * ratio - rd) * s(t)
+}
+
+fn b_triplanar_weights(normal: Vec3, sharpness: f32) -> Vec<I> {
+    let k = sharpness.clamp(0.0, DIFF_MAX_SHARPNESS);
+    let m: [I; 3] = std::array::from_fn(|i| I::pow_exact(normal[i].abs().max(DIFF_MIN_MAGNITUDE), k));
+    let sum = (m[0] + m[1] + m[2]).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    m.iter().map(|&x| x / sum).collect()
+}
+
+fn b_scaled_length(v: V3) -> I {
+    let a = v.abs();
+    let m = a.0[0]
+        .max(a.0[1])
+        .max(a.0[2].max_c(f64::from(DIFF_MIN_MAGNITUDE)));
+    let unit = v / m;
+    m * unit.dot(unit).sqrt()
+}
+
+fn b_intersect_triangle_plane(origin: V3, direction: V3, p0: V3, p1: V3, p2: V3) -> V3 {
+    let e1 = p1 - p0;
+    let e2 = p2 - p0;
+    let s0 = origin - p0;
+    let k = e1.cross(e2).dot(direction);
+    let u = b_barycentric_quotient(e2.cross(direction).dot(s0), k);
+    let v = b_barycentric_quotient(direction.cross(e1).dot(s0), k);
+    V([I::c(1.0) - u - v, u, v])
+}
+
+/// The arguments of the re-intersection functions (here and in the f64 module).
+pub type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
+
+fn b_barycentric_offsets(&(w2o, origin, p0, p1, p2, dir_x, dir_y, hit): &OffsetArgs) -> (V3, V3) {
+    let transform = |p: V3| mat_vec(w2o, p, I::c(1.0), F32);
+    let object_origin = transform(v3(origin));
+    let object_x = transform(v3(origin) + v3(dir_x)) - object_origin;
+    let object_y = transform(v3(origin) + v3(dir_y)) - object_origin;
+    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    (
+        b_intersect_triangle_plane(object_origin, object_x, p0, p1, p2) - v3(hit),
+        b_intersect_triangle_plane(object_origin, object_y, p0, p1, p2) - v3(hit),
+    )
+}
+
+fn b_cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> Vec<I> {
+    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    let area2 = b_scaled_length((p1 - p0).cross(p2 - p0)).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    [p2 - p1, p2 - p0, p1 - p0]
+        .iter()
+        .map(|&edge| (s(footprint.abs()) * b_scaled_length(edge) / area2).min_c(f64::from(DIFF_MAX_VALUE)))
+        .collect()
+}
+
+/// Inputs of the re-intersection functions: a transform, a world origin, an object-space triangle,
+/// two unit neighbour directions and hit barycentrics.
+pub fn offset_args() -> BoxedStrategy<OffsetArgs> {
+    (
+        (world_to_object(), world_origin()),
+        triangle(),
+        (unit_vec3(), unit_vec3()),
+        hit_barycentrics(),
+    )
+        .prop_map(|((w2o, origin), p, (x, y), hit)| (w2o, origin, p[0], p[1], p[2], x, y, hit))
+        .boxed()
+}
+
+fn camera() -> BoxedStrategy<Camera> {
+    (pixel_and_size(), fov_y(), camera_basis())
+        .prop_map(|((pixel, size), fov, (r, u, v))| (pixel, size, fov, r, u, v))
+        .boxed()
+}
+
+fn matrices() -> BoxedStrategy<Matrices> {
+    (pixel_and_size(), rigid(), proj_inv())
+        .prop_map(|((pixel, size), view_inv, proj_inv)| (pixel, size, view_inv, proj_inv))
+        .boxed()
+}
 
 /// Every check of the module.
 pub fn checks() -> Vec<Box<dyn Check>> {
-    vec![]
+    vec![
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "eye_ray_direction",
+            strategy: camera,
+            mirror: |(pixel, size, fov, r, u, v)| rd::eye_ray_direction(pixel, size, fov, r, u, v),
+            tolerance: |a, i, _| component(b_eye_ray_direction(a).components(), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "normalized_derivative",
+            strategy: || (any_direction(), differential_vec3()).boxed(),
+            mirror: |(v, dv)| rd::normalized_derivative(v, dv),
+            tolerance: |&(v, dv), i, _| component(b_normalized_derivative(v3(v), v3(dv)).components(), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "eye_ray_diff",
+            strategy: camera,
+            mirror: |(pixel, size, fov, r, u, v)| rd::eye_ray_diff(pixel, size, fov, r, u, v),
+            tolerance: |a, i, _| component(b_eye_ray_diff(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "eye_ray_direction_from_matrices",
+            strategy: matrices,
+            mirror: |(pixel, size, view_inv, proj_inv)| {
+                rd::eye_ray_direction_from_matrices(pixel, size, view_inv, proj_inv)
+            },
+            tolerance: |a, i, _| component(b_eye_ray_direction_from_matrices(a).components(), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "eye_ray_diff_from_matrices",
+            strategy: matrices,
+            mirror: |(pixel, size, view_inv, proj_inv)| {
+                rd::eye_ray_diff_from_matrices(pixel, size, view_inv, proj_inv)
+            },
+            tolerance: |a, i, _| component(b_eye_ray_diff_from_matrices(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "pixel_directions",
+            strategy: matrices,
+            mirror: |(pixel, size, view_inv, proj_inv)| rd::pixel_directions(pixel, size, view_inv, proj_inv),
+            tolerance: |a, i, _| component(b_pixel_directions(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "transfer",
+            strategy: || {
+                (ray_diff(), normal_and_direction(), distance())
+                    .prop_map(|(diff, (n, d), t)| (diff, d, t, n))
+                    .boxed()
+            },
+            mirror: |(diff, direction, t, normal)| rd::transfer(diff, direction, t, normal),
+            tolerance: |a, i, _| component(b_transfer(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "barycentric_derivatives",
+            strategy: || {
+                (ray_diff(), any_direction(), distance(), triangle())
+                    .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
+                    .boxed()
+            },
+            mirror: |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
+            tolerance: |a, i, _| component(b_barycentric_derivatives(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "barycentric_w_derivatives",
+            strategy: || derivatives2().prop_map(|b| (b,)).boxed(),
+            mirror: |(b,)| rd::barycentric_w_derivatives(b),
+            tolerance: |&(b,), i, _| {
+                let (dx, dy) = (v2(b.dx), v2(b.dy));
+                component(vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]], i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "texture_derivatives",
+            strategy: || {
+                (derivatives2(), uv_triangle())
+                    .prop_map(|(b, t)| (b, t[0], t[1], t[2]))
+                    .boxed()
+            },
+            mirror: |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
+            tolerance: |&(b, t0, t1, t2), i, _| {
+                let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
+                component(b_derivatives2(dx, dy), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "texel_derivatives",
+            strategy: || {
+                (derivatives2(), uv_triangle(), (pixels(), pixels()))
+                    .prop_map(|(b, t, (w, h))| (b, t[0], t[1], t[2], Vec2::new(w, h)))
+                    .boxed()
+            },
+            mirror: |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
+            tolerance: |&(b, t0, t1, t2, size), i, _| {
+                let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
+                let size = v2(size.max(Vec2::ONE));
+                component(b_derivatives2(dx * size, dy * size), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "secondary_origin_derivatives",
+            strategy: || {
+                (derivatives2(), triangle())
+                    .prop_map(|(b, p)| (b, p[0], p[1], p[2]))
+                    .boxed()
+            },
+            mirror: |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
+            tolerance: |a, i, _| component(b_secondary_origin_derivatives(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "lod_isotropic",
+            strategy: || derivatives2().prop_map(|g| (g,)).boxed(),
+            mirror: |(g,)| rd::lod_isotropic(g),
+            tolerance: |&(g,), _, _| b_lod_isotropic(g).tolerance(),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "lod_box",
+            strategy: || derivatives2().prop_map(|g| (g,)).boxed(),
+            mirror: |(g,)| rd::lod_box(g),
+            tolerance: |&(g,), _, _| b_lod_box(g).tolerance(),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "sample_grad_gradients",
+            strategy: || (derivatives2(), -1.0f32..4.0).boxed(),
+            mirror: |(g, scale)| rd::sample_grad_gradients(g, scale),
+            tolerance: |&(g, scale), i, _| {
+                let scale = s(scale.max(0.0));
+                component(b_derivatives2(v2(g.dx) * scale, v2(g.dy) * scale), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "normal_derivatives",
+            strategy: || {
+                (
+                    (unit_vec3(), unit_vec3(), unit_vec3()),
+                    (-1.0f32..2.0, -1.0f32..2.0),
+                    derivatives2(),
+                )
+                    .prop_map(|((n0, n1, n2), (u, v), b)| (n0, n1, n2, Vec2::new(u, v), b))
+                    .boxed()
+            },
+            mirror: |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
+            tolerance: |a, i, _| component(b_normal_derivatives(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "reflect_ray_diff",
+            strategy: || {
+                (ray_diff(), normal_and_direction(), derivatives3())
+                    .prop_map(|(diff, (n, d), dn)| (diff, d, n, dn))
+                    .boxed()
+            },
+            mirror: |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
+            tolerance: |a, i, _| component(b_reflect_ray_diff(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "refract_ray_diff",
+            // Near the critical angle the sign of k may differ: the hull of both branches, flag [0, 1].
+            strategy: || {
+                let eta =
+                    prop_oneof![4 => 0.3f32..3.0, 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => 0.0f32..0.01];
+                (ray_diff(), normal_and_direction(), derivatives3(), eta)
+                    .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
+                    .boxed()
+            },
+            mirror: |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
+            tolerance: |a, i, _| component(b_refract_ray_diff(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "gbuffer_ray_diff",
+            // The neighbour choice compares correctly rounded differences: the device makes the same
+            // choice as the mirror, so only the chosen branch is enclosed.
+            strategy: || {
+                (
+                    gbuffer_sample(),
+                    (gbuffer_sample(), gbuffer_sample()),
+                    (gbuffer_sample(), gbuffer_sample()),
+                    magnitude(),
+                )
+                    .prop_map(|(c, (r, l), (b, a), eps)| (c, r, l, b, a, eps))
+                    .boxed()
+            },
+            mirror: |(c, r, l, b, a, eps)| rd::gbuffer_ray_diff(c, r, l, b, a, eps),
+            tolerance: |a, i, _| component(b_gbuffer_ray_diff(a), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "tangent_plane_offsets",
+            strategy: || {
+                (normal_and_direction(), (unit_vec3(), unit_vec3()), distance())
+                    .prop_map(|((n, rd), (rdx, rdy), t)| (rd, rdx, rdy, t, n))
+                    .boxed()
+            },
+            mirror: |(rd, rdx, rdy, t, n)| rd::tangent_plane_offsets(rd, rdx, rdy, t, n),
+            tolerance: |&(r, rdx, rdy, t, n), i, _| {
+                let dx = b_tangent_plane_offset(r, rdx, t, n);
+                let dy = b_tangent_plane_offset(r, rdy, t, n);
+                component(b_derivatives3(dx, dy), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "planar_mapping_gradients",
+            strategy: || {
+                (derivatives3(), (-10.0f32..10.0, -10.0f32..10.0))
+                    .prop_map(|(dp, (a, b))| (dp, Vec2::new(a, b)))
+                    .boxed()
+            },
+            mirror: |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
+            tolerance: |&(dp, scale), i, _| {
+                let project = |v: Vec3| v2(Vec2::new(v.x, v.z)) * v2(scale);
+                component(b_derivatives2(project(dp.dx), project(dp.dy)), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "triplanar_weights",
+            strategy: || {
+                let normal = prop_oneof![8 => unit_vec3(), 1 => Just(Vec3::ZERO)];
+                (normal, prop_oneof![4 => 0.0f32..16.0, 1 => -2.0f32..100.0]).boxed()
+            },
+            mirror: |(normal, sharpness)| rd::triplanar_weights(normal, sharpness),
+            tolerance: |&(normal, sharpness), i, _| component(b_triplanar_weights(normal, sharpness), i),
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "triplanar_gradients",
+            strategy: || (derivatives3(), -10.0f32..10.0).boxed(),
+            mirror: |(dp, scale)| rd::triplanar_gradients(dp, scale),
+            tolerance: |&(dp, scale), i, _| {
+                let (dx, dy) = (v3(dp.dx) * s(scale), v3(dp.dy) * s(scale));
+                let pick = |v: V3, a: usize, b: usize| V([v.0[a], v.0[b]]);
+                let planes = [(1, 2), (2, 0), (0, 1)];
+                let all: Vec<I> = planes
+                    .iter()
+                    .flat_map(|&(a, b)| b_derivatives2(pick(dx, a, b), pick(dy, a, b)))
+                    .collect();
+                component(all, i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "intersect_triangle_plane",
+            strategy: || {
+                (vec3(), any_direction(), triangle())
+                    .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
+                    .boxed()
+            },
+            mirror: |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
+            tolerance: |&(o, d, p0, p1, p2), i, _| {
+                component(
+                    b_intersect_triangle_plane(v3(o), v3(d), v3(p0), v3(p1), v3(p2)).components(),
+                    i,
+                )
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "barycentric_offsets",
+            strategy: offset_args,
+            // When |O| is large, `O + direction` loses the direction in f32 and the neighbour ray is
+            // rounding noise whose sign may differ between the device and the mirror (the order of
+            // the matrix product is theirs): both may clamp to opposite +-DIFF_MAX_VALUE, and the
+            // enclosure (clamped to that range) is then 2 * DIFF_MAX_VALUE wide. This is the f32
+            // weakness that the ray_diff_f64 module removes.
+            mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_offsets(m, o, p0, p1, p2, x, y, b),
+            tolerance: |a, i, _| {
+                let (dx, dy) = b_barycentric_offsets(a);
+                component(b_derivatives3(dx, dy), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "barycentric_deltas",
+            strategy: offset_args,
+            mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
+            tolerance: |a, i, _| {
+                let (dx, dy) = b_barycentric_offsets(a);
+                component((dx.abs() + dy.abs()).components(), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "uv_gradients_from_offsets",
+            strategy: || {
+                (derivatives3(), uv_triangle())
+                    .prop_map(|(o, uv)| (o, uv[0], uv[1], uv[2]))
+                    .boxed()
+            },
+            mirror: |(o, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(o, uv0, uv1, uv2),
+            tolerance: |&(o, uv0, uv1, uv2), i, _| {
+                let sum = |w: Vec3| v2(uv0) * s(w.x) + v2(uv1) * s(w.y) + v2(uv2) * s(w.z);
+                component(b_derivatives2(sum(o.dx), sum(o.dy)), i)
+            },
+        }),
+        Box::new(FunctionCheck {
+            module: Module::RayDiff,
+            function: "cone_barycentric_deltas",
+            strategy: || {
+                (scalar(), triangle())
+                    .prop_map(|(f, p)| (f, p[0], p[1], p[2]))
+                    .boxed()
+            },
+            mirror: |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
+            tolerance: |a, i, _| component(b_cone_barycentric_deltas(a), i),
+        }),
+    ]
 }
