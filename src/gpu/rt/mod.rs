@@ -41,7 +41,7 @@ mod scene;
 mod texture;
 
 pub use mode::Mode;
-pub use pipeline::{compile_glsl, compile_wgsl, ray_query_source, SHADER_DIR};
+pub use pipeline::{ray_query_source, SHADER_DIR};
 pub use renderer::{Frame, Renderer};
 pub use scene::{ground_plane, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex, VERTEX_FLOATS};
 pub use texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE};

@@ -269,7 +269,7 @@ fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, G
 
 /// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.4), with the library's
 /// GLSL directory and [`SHADER_DIR`] on the include path; the file extension names the stage.
-pub fn compile_glsl(path: &Path) -> Result<Vec<u32>, GpuError> {
+fn compile_glsl(path: &Path) -> Result<Vec<u32>, GpuError> {
     let output = std::env::temp_dir().join(format!(
         "ray-footprint-rt-{}-{}.spv",
         std::process::id(),
@@ -302,7 +302,7 @@ pub fn compile_glsl(path: &Path) -> Result<Vec<u32>, GpuError> {
 
 /// Compiles WGSL with naga: the ray-cone module's capabilities plus ray queries and push
 /// constants (`var<immediate>`), SPIR-V 1.4.
-pub fn compile_wgsl(source: &str) -> Result<Vec<u32>, GpuError> {
+fn compile_wgsl(source: &str) -> Result<Vec<u32>, GpuError> {
     let capabilities = naga_capabilities(Module::RayCone)
         | naga::valid::Capabilities::RAY_QUERY
         | naga::valid::Capabilities::IMMEDIATES;
