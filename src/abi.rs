@@ -143,3 +143,84 @@ pub fn verify_shared_layouts() -> Result<String, crate::layout::LayoutError> {
     }
     Ok(tables.join("\n"))
 }
+
+/// Push constants of the ray-tracing renderer in [`crate::gpu::rt`] (`RtPushConstants`, declared by
+/// the renderer's shaders in `src/gpu/rt/shaders/`, not by a library module). 80 bytes, 16-byte
+/// aligned: the pinhole camera, the render mode, the ray-cone push constants and the image size.
+///
+/// The camera basis is orthonormal; pixel `(x, y)` looks along
+/// `normalize(forward + c.x * aspect * tan_half_fov_y * right - c.y * tan_half_fov_y * up)` with
+/// `c = 2 * ((x, y) + 0.5) / (width, height) - 1`.
+#[cfg(feature = "gpu")]
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RtPushConstants {
+    /// Camera position.
+    pub eye: Vec3,
+    /// `tan(fov_y / 2)`.
+    pub tan_half_fov_y: f32,
+    /// Camera right axis (unit).
+    pub right: Vec3,
+    /// Image width over height.
+    pub aspect: f32,
+    /// Camera up axis (unit).
+    pub up: Vec3,
+    /// Texture width (= height) in texels, for the texture LOD (RTG Eq. 34).
+    pub texture_size: f32,
+    /// Viewing direction (unit).
+    pub forward: Vec3,
+    /// The render mode ([`crate::gpu::rt::Mode::id`]).
+    pub mode: u32,
+    /// `textureGrad` scale and pixel spread angle.
+    pub cone: RayConePushConstants,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+}
+
+/// What the renderer measured at a pixel's primary hit (`RtPixelRecord`, declared by the
+/// renderer's shaders): the hit data, and every ray-cone value the shader computed from it. 96
+/// bytes, 16-byte aligned. A miss has `hit == 0` and zeros elsewhere.
+#[cfg(feature = "gpu")]
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RtPixelRecord {
+    /// Unit shading normal at the hit (interpolated vertex normals).
+    pub normal: Vec3,
+    /// Hit distance along the unit ray direction.
+    pub t: f32,
+    /// Unit ray direction.
+    pub direction: Vec3,
+    /// Instance custom index: the mesh ([`crate::gpu::rt::Scene::meshes`]).
+    pub instance: u32,
+    /// Hit barycentrics `(u, v)` of vertices 1 and 2.
+    pub barycentrics: glam::Vec2,
+    /// Triangle index within the mesh.
+    pub primitive: u32,
+    /// 1 for a hit, 0 for a miss.
+    pub hit: u32,
+    /// The cone at the ray's origin.
+    pub cone: RayCone,
+    /// `rf_width_at(cone, t)`.
+    pub width: f32,
+    /// `rf_world_footprint(cone, t, normal, direction)`.
+    pub footprint: f32,
+    /// `rf_texel_density` of the triangle.
+    pub texel_density: f32,
+    /// `rf_triangle_base_lod` of the triangle.
+    pub base_lod: f32,
+    /// `rf_texture_lod(base_lod, width, texture size, normal, direction)`.
+    pub lod: f32,
+    /// `rf_texture_gradient(footprint * texel_density, tex_grad_scale)`.
+    pub gradient: f32,
+    /// `rf_triangle_curvature` from the vertex normals.
+    pub curvature: f32,
+    /// `rf_curvature_spread_angle(curvature, width, normal, direction)`.
+    pub curvature_spread: f32,
+    /// `rf_propagate(cone, t, curvature_spread)`: the cone a reflection leaves with.
+    pub reflected: RayCone,
+}
+
+#[cfg(feature = "gpu")]
+const _: () = assert!(std::mem::size_of::<RtPushConstants>() <= PUSH_CONSTANT_LIMIT);

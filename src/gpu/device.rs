@@ -54,7 +54,7 @@ impl fmt::Display for GpuError {
 
 impl std::error::Error for GpuError {}
 
-fn vulkan(call: &'static str) -> impl FnOnce(vk::Result) -> GpuError {
+pub(super) fn vulkan(call: &'static str) -> impl FnOnce(vk::Result) -> GpuError {
     move |result| GpuError::Vulkan(call, result)
 }
 
@@ -73,14 +73,14 @@ pub struct Pipeline {
 /// dispatch fail with [`GpuError::Validation`].
 pub struct Gpu {
     _entry: ash::Entry,
-    instance: ash::Instance,
+    pub(super) instance: ash::Instance,
     debug_utils: ash::ext::debug_utils::Instance,
     messenger: vk::DebugUtilsMessengerEXT,
     messages: Box<Mutex<Vec<String>>>,
-    physical: vk::PhysicalDevice,
-    device: ash::Device,
-    queue: vk::Queue,
-    pool: vk::CommandPool,
+    pub(super) physical: vk::PhysicalDevice,
+    pub(super) device: ash::Device,
+    pub(super) queue: vk::Queue,
+    pub(super) pool: vk::CommandPool,
     name: String,
     max_groups: u32,
 }
@@ -111,6 +111,18 @@ impl Gpu {
     /// Opens the device. Fails with [`GpuError::Setup`], naming [`SETUP_COMMAND`], when the loader,
     /// the validation layer or a matching device is missing.
     pub fn new() -> Result<Gpu, GpuError> {
+        Gpu::open(&[])
+    }
+
+    /// Opens the device with ray tracing on: the extensions in [`RAY_TRACING_EXTENSIONS`] and
+    /// their features (acceleration structures, ray-tracing pipelines, ray queries), plus
+    /// `bufferDeviceAddress` (Vulkan 1.2). Fails with [`GpuError::Setup`] when the device lacks
+    /// one of them or is older than Vulkan 1.2 (ray-tracing shaders are SPIR-V 1.4).
+    pub fn new_ray_tracing() -> Result<Gpu, GpuError> {
+        Gpu::open(RAY_TRACING_EXTENSIONS)
+    }
+
+    fn open(extensions: &[&CStr]) -> Result<Gpu, GpuError> {
         // SAFETY: loading the system Vulkan loader; its functions are used per the Vulkan spec below.
         let entry = unsafe { ash::Entry::load() }
             .map_err(|e| setup(&format!("cannot load the Vulkan loader (libvulkan.so.1): {e}")))?;
@@ -166,6 +178,11 @@ impl Gpu {
                     return Err(e);
                 }
             };
+            if let Err(e) = check_extensions(&instance, physical, &name, extensions) {
+                debug_utils.destroy_debug_utils_messenger(messenger, None);
+                instance.destroy_instance(None);
+                return Err(e);
+            }
             let priorities = [1.0];
             let queue_info = [vk::DeviceQueueCreateInfo::default()
                 .queue_family_index(family)
@@ -174,9 +191,24 @@ impl Gpu {
             let supported = instance.get_physical_device_features(physical);
             let features =
                 vk::PhysicalDeviceFeatures::default().shader_float64(supported.shader_float64 == vk::TRUE);
-            let device_info = vk::DeviceCreateInfo::default()
+            let extension_names: Vec<_> = extensions.iter().map(|e| e.as_ptr()).collect();
+            let mut vulkan12 = vk::PhysicalDeviceVulkan12Features::default().buffer_device_address(true);
+            let mut acceleration =
+                vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
+            let mut ray_tracing =
+                vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
+            let mut ray_query = vk::PhysicalDeviceRayQueryFeaturesKHR::default().ray_query(true);
+            let mut device_info = vk::DeviceCreateInfo::default()
                 .queue_create_infos(&queue_info)
-                .enabled_features(&features);
+                .enabled_features(&features)
+                .enabled_extension_names(&extension_names);
+            if !extensions.is_empty() {
+                device_info = device_info
+                    .push_next(&mut vulkan12)
+                    .push_next(&mut acceleration)
+                    .push_next(&mut ray_tracing)
+                    .push_next(&mut ray_query);
+            }
             let device = instance
                 .create_device(physical, &device_info, None)
                 .map_err(vulkan("vkCreateDevice"))?;
@@ -595,7 +627,55 @@ struct HostBuffer {
     size: vk::DeviceSize,
 }
 
-fn setup(problem: &str) -> GpuError {
+/// The device extensions [`Gpu::new_ray_tracing`] enables.
+pub const RAY_TRACING_EXTENSIONS: &[&CStr] = &[
+    ash::khr::acceleration_structure::NAME,
+    ash::khr::ray_tracing_pipeline::NAME,
+    ash::khr::ray_query::NAME,
+    ash::khr::deferred_host_operations::NAME,
+];
+
+/// Fails with [`GpuError::Setup`] unless `physical` is Vulkan 1.2 or newer (when extensions are
+/// wanted) and supports every extension in `wanted`.
+fn check_extensions(
+    instance: &ash::Instance,
+    physical: vk::PhysicalDevice,
+    name: &str,
+    wanted: &[&CStr],
+) -> Result<(), GpuError> {
+    if wanted.is_empty() {
+        return Ok(());
+    }
+    // SAFETY: plain queries on a valid instance and device.
+    let (version, available) = unsafe {
+        let version = instance.get_physical_device_properties(physical).api_version;
+        let available = instance
+            .enumerate_device_extension_properties(physical)
+            .map_err(vulkan("vkEnumerateDeviceExtensionProperties"))?;
+        (version, available)
+    };
+    let missing: Vec<String> = wanted
+        .iter()
+        .filter(|&&w| !available.iter().any(|a| a.extension_name_as_c_str() == Ok(w)))
+        .map(|w| w.to_string_lossy().into_owned())
+        .collect();
+    if vk::api_version_minor(version) < 2 && vk::api_version_major(version) == 1 {
+        return Err(setup(&format!(
+            "{name} is Vulkan 1.{}; ray tracing needs 1.2",
+            vk::api_version_minor(version)
+        )));
+    }
+    if missing.is_empty() {
+        Ok(())
+    } else {
+        Err(setup(&format!(
+            "{name} lacks {} (ray tracing needs Mesa lavapipe >= 24.1 or a ray-tracing GPU)",
+            missing.join(", ")
+        )))
+    }
+}
+
+pub(super) fn setup(problem: &str) -> GpuError {
     GpuError::Setup(format!(
         "{problem}. The GPU tests need a Vulkan device with the validation layer; on Debian 12 run \
          `{SETUP_COMMAND}` (it installs the Vulkan loader, Mesa lavapipe from bookworm-backports, \

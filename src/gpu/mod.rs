@@ -22,12 +22,13 @@
 mod check;
 mod device;
 mod kernel;
+pub mod rt;
 pub mod strategy;
 pub mod suite;
 pub mod tolerance;
 mod value;
 
 pub use check::{Check, FunctionCheck, Report, RunConfig};
-pub use device::{Gpu, GpuError, Pipeline, DEVICE_ENV, SETUP_COMMAND};
+pub use device::{Gpu, GpuError, Pipeline, DEVICE_ENV, RAY_TRACING_EXTENSIONS, SETUP_COMMAND};
 pub use kernel::{compile, echo_kernel_source, kernel_source, naga_capabilities, Language};
 pub use value::{GpuArgs, GpuValue, ShaderType, StructType, HIT_PAYLOAD, RAY_CONE, RAY_CONE_PUSH_CONSTANTS};

@@ -1,0 +1,320 @@
+//! Shaders and pipelines: the GLSL ray-tracing pipeline with its shader binding table, and the
+//! WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
+
+use super::memory::{Buffer, Object, Owner};
+use crate::abi::RtPushConstants;
+use crate::gpu::device::{setup, vulkan, GpuError};
+use crate::gpu::naga_capabilities;
+use crate::shaders::{Module, GLSL_INCLUDE_DIR, RAY_CONE_WGSL};
+use ash::vk;
+use std::path::Path;
+use std::process::Command;
+
+/// Directory of the renderer's shaders (ray generation, miss, closest hit, ray query).
+pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gpu/rt/shaders");
+
+/// The renderer's WGSL ray-query source, as compiled: the extension, the ray-cone module, the shader.
+pub fn ray_query_source() -> String {
+    format!(
+        "enable wgpu_ray_query;\n{RAY_CONE_WGSL}\n{}",
+        include_str!("shaders/ray_query.wgsl")
+    )
+}
+
+/// Every stage that reads the descriptor set or the push constants.
+fn stages() -> vk::ShaderStageFlags {
+    vk::ShaderStageFlags::RAYGEN_KHR
+        | vk::ShaderStageFlags::MISS_KHR
+        | vk::ShaderStageFlags::CLOSEST_HIT_KHR
+        | vk::ShaderStageFlags::COMPUTE
+}
+
+/// The descriptor types of bindings 0 to 6 (see `rt_common.glsl`) and their counts.
+pub(super) const BINDINGS: [(vk::DescriptorType, u32); 7] = [
+    (vk::DescriptorType::ACCELERATION_STRUCTURE_KHR, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::COMBINED_IMAGE_SAMPLER, 2),
+];
+
+/// The descriptor-set layout of [`BINDINGS`] and a pipeline layout with it and the push constants.
+pub(super) fn layouts(
+    owner: &mut Owner<'_>,
+) -> Result<(vk::DescriptorSetLayout, vk::PipelineLayout), GpuError> {
+    let bindings: Vec<_> = BINDINGS
+        .iter()
+        .enumerate()
+        .map(|(binding, &(ty, count))| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(binding as u32)
+                .descriptor_type(ty)
+                .descriptor_count(count)
+                .stage_flags(stages())
+        })
+        .collect();
+    // SAFETY: valid create-info structs; objects are handed to the owner.
+    unsafe {
+        let set_layout = owner
+            .device()
+            .create_descriptor_set_layout(
+                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
+                None,
+            )
+            .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
+        owner.keep(set_layout, Object::SetLayout);
+        let ranges = [vk::PushConstantRange::default()
+            .stage_flags(stages())
+            .size(std::mem::size_of::<RtPushConstants>() as u32)];
+        let set_layouts = [set_layout];
+        let info = vk::PipelineLayoutCreateInfo::default()
+            .set_layouts(&set_layouts)
+            .push_constant_ranges(&ranges);
+        let layout = owner
+            .device()
+            .create_pipeline_layout(&info, None)
+            .map_err(vulkan("vkCreatePipelineLayout"))?;
+        Ok((set_layout, owner.keep(layout, Object::PipelineLayout)))
+    }
+}
+
+/// Pushes `push` for every stage of the layout.
+pub(super) fn push(
+    device: &ash::Device,
+    command_buffer: vk::CommandBuffer,
+    layout: vk::PipelineLayout,
+    push: &RtPushConstants,
+) {
+    // SAFETY: the range matches the layout's single push-constant range.
+    unsafe { device.cmd_push_constants(command_buffer, layout, stages(), 0, bytemuck::bytes_of(push)) }
+}
+
+/// A ray-tracing pipeline and its shader binding table regions (ray generation, miss, hit,
+/// callable).
+pub(super) struct RayTracing {
+    pub pipeline: vk::Pipeline,
+    pub regions: [vk::StridedDeviceAddressRegionKHR; 4],
+    pub loader: ash::khr::ray_tracing_pipeline::Device,
+}
+
+/// The ray-generation, miss and closest-hit shaders of [`SHADER_DIR`] in one pipeline (groups:
+/// 0 ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the mirror's reflection).
+pub(super) fn ray_tracing(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<RayTracing, GpuError> {
+    let properties = ray_tracing_properties(owner);
+    if properties.max_ray_recursion_depth < 2 {
+        return Err(setup(
+            "the device's maxRayRecursionDepth is below 2 (the renderer traces reflections)",
+        ));
+    }
+    let files = [
+        ("raygen.rgen", vk::ShaderStageFlags::RAYGEN_KHR),
+        ("miss.rmiss", vk::ShaderStageFlags::MISS_KHR),
+        ("closest_hit.rchit", vk::ShaderStageFlags::CLOSEST_HIT_KHR),
+    ];
+    let spirv = files
+        .iter()
+        .map(|(file, _)| compile_glsl(&Path::new(SHADER_DIR).join(file)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let modules = spirv
+        .iter()
+        .map(|words| shader_module(owner, words))
+        .collect::<Result<Vec<_>, _>>()?;
+    let stage_infos: Vec<_> = files
+        .iter()
+        .zip(&modules)
+        .map(|(&(_, stage), &module)| {
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(stage)
+                .module(module)
+                .name(c"main")
+        })
+        .collect();
+    let general = |shader: u32| {
+        vk::RayTracingShaderGroupCreateInfoKHR::default()
+            .ty(vk::RayTracingShaderGroupTypeKHR::GENERAL)
+            .general_shader(shader)
+            .closest_hit_shader(vk::SHADER_UNUSED_KHR)
+            .any_hit_shader(vk::SHADER_UNUSED_KHR)
+            .intersection_shader(vk::SHADER_UNUSED_KHR)
+    };
+    let groups = [
+        general(0),
+        general(1),
+        general(vk::SHADER_UNUSED_KHR)
+            .ty(vk::RayTracingShaderGroupTypeKHR::TRIANGLES_HIT_GROUP)
+            .closest_hit_shader(2),
+    ];
+    let info = vk::RayTracingPipelineCreateInfoKHR::default()
+        .stages(&stage_infos)
+        .groups(&groups)
+        .max_pipeline_ray_recursion_depth(2)
+        .layout(layout);
+    let loader = ash::khr::ray_tracing_pipeline::Device::new(&owner.gpu.instance, &owner.gpu.device);
+    // SAFETY: a valid create-info; the modules are no longer needed once the pipeline exists.
+    let created = unsafe {
+        let created = loader.create_ray_tracing_pipelines(
+            vk::DeferredOperationKHR::null(),
+            vk::PipelineCache::null(),
+            &[info],
+            None,
+        );
+        modules
+            .iter()
+            .for_each(|&module| owner.device().destroy_shader_module(module, None));
+        created
+    };
+    let pipeline =
+        created.map_err(|(_, result)| GpuError::Vulkan("vkCreateRayTracingPipelinesKHR", result))?[0];
+    owner.keep(pipeline, Object::Pipeline);
+    let regions = binding_table(owner, &loader, pipeline, &properties, groups.len() as u32)?;
+    owner.gpu.check_messages()?;
+    Ok(RayTracing {
+        pipeline,
+        regions,
+        loader,
+    })
+}
+
+fn ray_tracing_properties(owner: &Owner<'_>) -> vk::PhysicalDeviceRayTracingPipelinePropertiesKHR<'static> {
+    let mut ray_tracing = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
+    let mut properties = vk::PhysicalDeviceProperties2::default().push_next(&mut ray_tracing);
+    // SAFETY: a plain query.
+    unsafe {
+        owner
+            .gpu
+            .instance
+            .get_physical_device_properties2(owner.gpu.physical, &mut properties);
+    }
+    ray_tracing.p_next = std::ptr::null_mut();
+    ray_tracing
+}
+
+/// The shader binding table: one record per group, each region starting at a multiple of
+/// `shaderGroupBaseAlignment`, with a stride of the handle size rounded up to
+/// `shaderGroupHandleAlignment` (the ray-generation region's size must equal its stride).
+fn binding_table(
+    owner: &mut Owner<'_>,
+    loader: &ash::khr::ray_tracing_pipeline::Device,
+    pipeline: vk::Pipeline,
+    properties: &vk::PhysicalDeviceRayTracingPipelinePropertiesKHR<'_>,
+    groups: u32,
+) -> Result<[vk::StridedDeviceAddressRegionKHR; 4], GpuError> {
+    let handle_size = properties.shader_group_handle_size as usize;
+    let stride = properties
+        .shader_group_handle_size
+        .next_multiple_of(properties.shader_group_handle_alignment);
+    let region_bytes = stride.next_multiple_of(properties.shader_group_base_alignment) as usize;
+    // SAFETY: a plain query on a pipeline with `groups` groups.
+    let handles = unsafe {
+        loader.get_ray_tracing_shader_group_handles(pipeline, 0, groups, groups as usize * handle_size)
+    }
+    .map_err(vulkan("vkGetRayTracingShaderGroupHandlesKHR"))?;
+    let mut table = vec![0u8; region_bytes * groups as usize];
+    for (group, handle) in handles.chunks_exact(handle_size).enumerate() {
+        table[group * region_bytes..][..handle_size].copy_from_slice(handle);
+    }
+    let buffer: Buffer = owner.upload(
+        &table,
+        vk::BufferUsageFlags::SHADER_BINDING_TABLE_KHR,
+        u64::from(properties.shader_group_base_alignment),
+    )?;
+    let region = |group: u64| {
+        vk::StridedDeviceAddressRegionKHR::default()
+            .device_address(buffer.address + group * region_bytes as u64)
+            .stride(u64::from(stride))
+            .size(u64::from(stride))
+    };
+    Ok([
+        region(0),
+        region(1),
+        region(2),
+        vk::StridedDeviceAddressRegionKHR::default(),
+    ])
+}
+
+/// The WGSL ray-query compute pipeline ([`ray_query_source`]).
+pub(super) fn ray_query(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<vk::Pipeline, GpuError> {
+    let module = shader_module(owner, &compile_wgsl(&ray_query_source())?)?;
+    let stage = vk::PipelineShaderStageCreateInfo::default()
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(module)
+        .name(c"main");
+    let info = [vk::ComputePipelineCreateInfo::default()
+        .stage(stage)
+        .layout(layout)];
+    // SAFETY: a valid create-info; the module is no longer needed once the pipeline exists.
+    let created = unsafe {
+        let created = owner
+            .device()
+            .create_compute_pipelines(vk::PipelineCache::null(), &info, None);
+        owner.device().destroy_shader_module(module, None);
+        created
+    };
+    let pipeline = created.map_err(|(_, result)| GpuError::Vulkan("vkCreateComputePipelines", result))?[0];
+    owner.gpu.check_messages()?;
+    Ok(owner.keep(pipeline, Object::Pipeline))
+}
+
+fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, GpuError> {
+    // SAFETY: valid SPIR-V words from glslang or naga.
+    unsafe {
+        owner
+            .device()
+            .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(spirv), None)
+    }
+    .map_err(vulkan("vkCreateShaderModule"))
+}
+
+/// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.4), with the library's
+/// GLSL directory and [`SHADER_DIR`] on the include path; the file extension names the stage.
+fn compile_glsl(path: &Path) -> Result<Vec<u32>, GpuError> {
+    let output = std::env::temp_dir().join(format!(
+        "ray-footprint-rt-{}-{}.spv",
+        std::process::id(),
+        path.file_name().and_then(|n| n.to_str()).unwrap_or("stage")
+    ));
+    let result = Command::new("glslangValidator")
+        .args(["--target-env", "vulkan1.2"])
+        .arg(format!("-I{GLSL_INCLUDE_DIR}"))
+        .arg(format!("-I{SHADER_DIR}"))
+        .arg("-o")
+        .arg(&output)
+        .arg(path)
+        .output()
+        .map_err(|e| setup(&format!("cannot run glslangValidator ({e})")))?;
+    let bytes = std::fs::read(&output);
+    let _ = std::fs::remove_file(&output);
+    if !result.status.success() {
+        return Err(GpuError::Compile(format!(
+            "{}{}",
+            String::from_utf8_lossy(&result.stdout),
+            String::from_utf8_lossy(&result.stderr)
+        )));
+    }
+    let bytes = bytes.map_err(|e| GpuError::Compile(format!("reading glslang output: {e}")))?;
+    Ok(bytes
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect())
+}
+
+/// Compiles WGSL with naga: the ray-cone module's capabilities plus ray queries and push
+/// constants (`var<immediate>`), SPIR-V 1.4.
+fn compile_wgsl(source: &str) -> Result<Vec<u32>, GpuError> {
+    let capabilities = naga_capabilities(Module::RayCone)
+        | naga::valid::Capabilities::RAY_QUERY
+        | naga::valid::Capabilities::IMMEDIATES;
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "ray_query.wgsl")))?;
+    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
+        .validate(&module)
+        .map_err(|e| GpuError::Compile(e.emit_to_string_with_path(source, "ray_query.wgsl")))?;
+    let options = naga::back::spv::Options {
+        lang_version: (1, 4),
+        ..Default::default()
+    };
+    naga::back::spv::write_vec(&module, &info, &options, None)
+        .map_err(|e| GpuError::Compile(format!("naga SPIR-V output: {e}")))
+}

@@ -1,0 +1,40 @@
+// Closest hit: measures the ray-cone values at the hit with the library module (rt_measure),
+// records them for primary rays, then shades: textured meshes sample the texture as the mode
+// says; the mirror traces a reflected ray whose cone leaves the hit by RTG Eq. 35, widened by the
+// curvature spread angle only in RT_MODE_CONE_CURVATURE (otherwise as off a planar mirror).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "rt_common.glsl"
+
+layout(location = 0) rayPayloadInEXT RfHitPayload payload;
+layout(location = 1) rayPayloadEXT RfHitPayload reflected;
+hitAttributeEXT vec2 rt_hit_barycentrics;
+
+// Direction towards the light.
+const vec3 RT_LIGHT = vec3(0.4, 0.85, 0.35);
+
+void main() {
+    uint mesh = gl_InstanceCustomIndexEXT;
+    RtTriangle tri = rt_triangle(mesh, gl_PrimitiveID);
+    vec3 direction = gl_WorldRayDirectionEXT;
+    RtPixelRecord record = rt_measure(tri, rt_hit_barycentrics, gl_HitTEXT, direction, payload.cone);
+    record.instance = mesh;
+    record.primitive = gl_PrimitiveID;
+    if (payload.depth == 0u) {
+        rt_records[gl_LaunchIDEXT.y * gl_LaunchSizeEXT.x + gl_LaunchIDEXT.x] = record;
+    }
+    if (rt_meshes[3u * mesh + 2u] == RT_MATERIAL_MIRROR && payload.depth == 0u) {
+        float spread = pc.mode == RT_MODE_CONE_CURVATURE ? record.curvature_spread : 0.0;
+        reflected = RfHitPayload(vec3(0.0), payload.weight * 0.9, rf_propagate(payload.cone, gl_HitTEXT, spread),
+            payload.depth + 1u, 0u);
+        vec3 origin = gl_WorldRayOriginEXT + gl_HitTEXT * direction + RT_SURFACE_OFFSET * record.normal;
+        traceRayEXT(rt_scene, gl_RayFlagsOpaqueEXT, 0xff, 0, 0, 0, origin, 0.0,
+            reflect(direction, record.normal), RT_MAX_DISTANCE, 1);
+        payload.colour = reflected.colour;
+        return;
+    }
+    vec3 w = rt_weights(rt_hit_barycentrics);
+    vec2 uv = w.x * tri.uv[0] + w.y * tri.uv[1] + w.z * tri.uv[2];
+    float light = 0.35 + 0.65 * max(dot(record.normal, normalize(RT_LIGHT)), 0.0);
+    payload.colour = payload.weight * light * rt_texture_colour(record, uv);
+}

@@ -1,0 +1,126 @@
+// ray-footprint ray-tracing renderer, WGSL path: a compute shader that traces each pixel's primary
+// ray with a ray query (naga's `wgpu_ray_query`) over the renderer's acceleration structures and
+// records the same per-pixel values as the GLSL closest-hit shader (rt_common.glsl), computed with
+// the WGSL ray_cone module. naga gives no barycentrics to a WGSL closest-hit shader yet; a ray
+// query's committed intersection has them.
+//
+// The renderer compiles `enable wgpu_ray_query;`, then shaders/wgsl/ray_cone.wgsl, then this file.
+
+// Floats per vertex: position xyz, u, normal xyz, v (VERTEX_FLOATS in scene.rs).
+const RT_VERTEX_FLOATS: u32 = 8u;
+// Farthest hit distance.
+const RT_MAX_DISTANCE: f32 = 1.0e4;
+
+// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 80 bytes).
+struct RtPushConstants {
+    eye: vec3<f32>,
+    tan_half_fov_y: f32,
+    right: vec3<f32>,
+    aspect: f32,
+    up: vec3<f32>,
+    texture_size: f32,
+    forward: vec3<f32>,
+    mode: u32,
+    cone: RfRayConePushConstants,
+    width: u32,
+    height: u32,
+}
+
+// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 96 bytes).
+struct RtPixelRecord {
+    normal: vec3<f32>,
+    t: f32,
+    direction: vec3<f32>,
+    instance: u32,
+    barycentrics: vec2<f32>,
+    primitive: u32,
+    hit: u32,
+    cone: RfRayCone,
+    width: f32,
+    footprint: f32,
+    texel_density: f32,
+    base_lod: f32,
+    lod: f32,
+    gradient: f32,
+    curvature: f32,
+    curvature_spread: f32,
+    reflected: RfRayCone,
+}
+
+// A triangle's vertices.
+struct RtTriangle {
+    p: array<vec3<f32>, 3>,
+    n: array<vec3<f32>, 3>,
+    uv: array<vec2<f32>, 3>,
+}
+
+var<immediate> pc: RtPushConstants;
+@group(0) @binding(0) var rt_scene: acceleration_structure;
+@group(0) @binding(1) var<storage, read> rt_vertices: array<f32>;
+@group(0) @binding(2) var<storage, read> rt_indices: array<u32>;
+@group(0) @binding(3) var<storage, read> rt_meshes: array<u32>;
+@group(0) @binding(4) var<storage, read_write> rt_records: array<RtPixelRecord>;
+
+// Triangle `primitive` of mesh `mesh`, from the vertex, index and mesh-table buffers.
+fn rt_triangle(mesh: u32, primitive: u32) -> RtTriangle {
+    let first_index = rt_meshes[3u * mesh] + 3u * primitive;
+    let first_vertex = rt_meshes[3u * mesh + 1u];
+    var tri: RtTriangle;
+    for (var k = 0u; k < 3u; k++) {
+        let f = (first_vertex + rt_indices[first_index + k]) * RT_VERTEX_FLOATS;
+        tri.p[k] = vec3<f32>(rt_vertices[f], rt_vertices[f + 1u], rt_vertices[f + 2u]);
+        tri.n[k] = vec3<f32>(rt_vertices[f + 4u], rt_vertices[f + 5u], rt_vertices[f + 6u]);
+        tri.uv[k] = vec2<f32>(rt_vertices[f + 3u], rt_vertices[f + 7u]);
+    }
+    return tri;
+}
+
+// Barycentric weights (1 - u - v, u, v).
+fn rt_weights(barycentrics: vec2<f32>) -> vec3<f32> {
+    return vec3<f32>(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
+}
+
+// Unit direction of the primary ray through the centre of `pixel`.
+fn rt_primary_direction(pixel: vec2<u32>) -> vec3<f32> {
+    let c = 2.0 * (vec2<f32>(pixel) + 0.5) / vec2<f32>(f32(pc.width), f32(pc.height)) - 1.0;
+    return normalize(pc.forward + c.x * pc.aspect * pc.tan_half_fov_y * pc.right
+        - c.y * pc.tan_half_fov_y * pc.up);
+}
+
+// Every ray-cone value of a hit (the twin of rt_measure in rt_common.glsl).
+fn rt_measure(tri: RtTriangle, barycentrics: vec2<f32>, t: f32, direction: vec3<f32>, cone: RfRayCone) -> RtPixelRecord {
+    let w = rt_weights(barycentrics);
+    let normal = normalize(w.x * tri.n[0] + w.y * tri.n[1] + w.z * tri.n[2]);
+    let width = rf_width_at(cone, t);
+    let footprint = rf_world_footprint(cone, t, normal, direction);
+    let density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    let base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    let lod = rf_texture_lod(base_lod, width, vec2<f32>(pc.texture_size), normal, direction);
+    let gradient = rf_texture_gradient(footprint * density, pc.cone.tex_grad_scale);
+    let curvature = rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+    let spread = rf_curvature_spread_angle(curvature, width, normal, direction);
+    return RtPixelRecord(normal, t, direction, 0u, barycentrics, 0u, 1u, cone, width, footprint,
+        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread));
+}
+
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x >= pc.width || id.y >= pc.height {
+        return;
+    }
+    let direction = rt_primary_direction(id.xy);
+    let cone = rf_pinhole_ray_cone(pc.cone.pixel_spread_angle);
+    var query: ray_query;
+    rayQueryInitialize(&query, rt_scene, RayDesc(RAY_FLAG_FORCE_OPAQUE, 0xffu, 0.0, RT_MAX_DISTANCE, pc.eye, direction));
+    while rayQueryProceed(&query) {}
+    let hit = rayQueryGetCommittedIntersection(&query);
+    var record = RtPixelRecord(vec3<f32>(0.0), 0.0, direction, 0u, vec2<f32>(0.0), 0u, 0u, cone, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, RfRayCone(0.0, 0.0));
+    if hit.kind == RAY_QUERY_INTERSECTION_TRIANGLE {
+        record = rt_measure(rt_triangle(hit.instance_custom_data, hit.primitive_index), hit.barycentrics,
+            hit.t, direction, cone);
+        record.instance = hit.instance_custom_data;
+        record.primitive = hit.primitive_index;
+    }
+    rt_records[id.y * pc.width + id.x] = record;
+}

@@ -1,0 +1,77 @@
+//! Textures made in code, each with a full mip chain down to 1 x 1.
+
+/// Width and height of both textures, in texels (11 mip levels).
+pub const TEXTURE_SIZE: u32 = 1024;
+/// Side of a checker square, in texels of level 0: level 5 has one texel per square, level 6 and
+/// above are the uniform average.
+pub const CHECKER_SQUARE: u32 = 32;
+
+/// One colour per mip level for [`mip_colours`] (RTG Fig. 20-9): red, orange, yellow, green,
+/// cyan, blue, violet, magenta, white, grey, black.
+pub const LEVEL_COLOURS: [[u8; 4]; 11] = [
+    [230, 40, 40, 255],
+    [240, 140, 30, 255],
+    [235, 220, 40, 255],
+    [60, 190, 60, 255],
+    [40, 200, 210, 255],
+    [40, 80, 230, 255],
+    [140, 60, 220, 255],
+    [220, 60, 200, 255],
+    [245, 245, 245, 255],
+    [128, 128, 128, 255],
+    [20, 20, 20, 255],
+];
+
+/// A square RGBA8 texture and its mip levels, level 0 first, texels row by row.
+#[derive(Clone, Debug)]
+pub struct MipChain {
+    /// Width and height of level 0.
+    pub size: u32,
+    /// Level `i` is `size >> i` texels square.
+    pub levels: Vec<Vec<[u8; 4]>>,
+}
+
+/// A light and dark checkerboard with squares of `square` texels, box-filtered down to 1 x 1.
+pub fn checker(size: u32, square: u32) -> MipChain {
+    let texel = |i: u32| {
+        let (x, y) = (i % size / square, i / size / square);
+        if (x + y) % 2 == 0 {
+            [230, 225, 210, 255]
+        } else {
+            [35, 40, 55, 255]
+        }
+    };
+    let mut levels = vec![(0..size * size).map(texel).collect::<Vec<_>>()];
+    while levels.len() < level_count(size) {
+        let previous = levels.last().expect("level 0 exists");
+        levels.push(downsample(previous, size >> (levels.len() - 1)));
+    }
+    MipChain { size, levels }
+}
+
+/// A texture whose level `i` is filled with [`LEVEL_COLOURS`]`[i]`, so a sample's colour tells
+/// which levels it blended.
+pub fn mip_colours(size: u32) -> MipChain {
+    let levels = (0..level_count(size))
+        .map(|i| vec![LEVEL_COLOURS[i % LEVEL_COLOURS.len()]; ((size >> i) * (size >> i)) as usize])
+        .collect();
+    MipChain { size, levels }
+}
+
+/// `log2(size) + 1`: the levels from `size` down to 1.
+fn level_count(size: u32) -> usize {
+    (u32::BITS - size.leading_zeros()) as usize
+}
+
+/// The next level of a `size` x `size` level: each texel the rounded mean of a 2 x 2 block.
+fn downsample(level: &[[u8; 4]], size: u32) -> Vec<[u8; 4]> {
+    let half = size / 2;
+    let at = |x: u32, y: u32| level[(y * size + x) as usize];
+    (0..half * half)
+        .map(|i| {
+            let (x, y) = (2 * (i % half), 2 * (i / half));
+            let block = [at(x, y), at(x + 1, y), at(x, y + 1), at(x + 1, y + 1)];
+            [0, 1, 2, 3].map(|c| ((block.iter().map(|t| u32::from(t[c])).sum::<u32>() + 2) / 4) as u8)
+        })
+        .collect()
+}

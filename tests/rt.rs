@@ -1,0 +1,402 @@
+//! Ray tracing with real acceleration structures, on the local Vulkan device (lavapipe unless
+//! `RAY_FOOTPRINT_DEVICE` names another) with the validation layer on: any validation message
+//! fails a test.
+//!
+//! The GLSL closest-hit shader and the WGSL ray-query shader record, per pixel, the primary hit
+//! (distance, normal, barycentrics, instance, triangle) and every ray-cone value they computed
+//! there. The Rust mirror recomputes each value from the same hit data and the scene's own
+//! vertices; each function is given exactly the inputs the shader gave it, so each comparison
+//! measures one library function, within the tolerance derived for it in
+//! `src/gpu/suite/ray_cone.rs` (restated below, and reused where the suite exports it).
+
+use glam::{Vec2, Vec3, Vec3Swizzles};
+use ray_footprint::abi::{RtPixelRecord, RtPushConstants};
+use ray_footprint::gpu::rt::{ray_query_source, Camera, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR};
+use ray_footprint::gpu::tolerance::{dot_error, ulps};
+use ray_footprint::gpu::{suite, Gpu, GpuError};
+use ray_footprint::layout::{self, GlslPacking};
+use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::rust_layout;
+use ray_footprint::shaders::GLSL_INCLUDE_DIR;
+use std::path::Path;
+
+/// The test image: small, so the test is quick on lavapipe, with every mesh in view.
+const WIDTH: u32 = 64;
+const HEIGHT: u32 = 48;
+/// A `tex_grad_scale` other than 1, so the gradient's scaling is exercised.
+const TEX_GRAD_SCALE: f32 = 2.0;
+
+fn gpu() -> Gpu {
+    Gpu::new_ray_tracing().unwrap_or_else(|error| panic!("{error}"))
+}
+
+/// The renderer's shared structs have one layout in Rust, WGSL (naga), GLSL std430 and GLSL
+/// scalar (glslang), field by field.
+#[test]
+fn renderer_structs_have_one_layout() {
+    let include_dirs = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    let rust = [
+        rust_layout!(RtPushConstants {
+            eye,
+            tan_half_fov_y,
+            right,
+            aspect,
+            up,
+            texture_size,
+            forward,
+            mode,
+            cone,
+            width,
+            height
+        }),
+        rust_layout!(RtPixelRecord {
+            normal,
+            t,
+            direction,
+            instance,
+            barycentrics,
+            primitive,
+            hit,
+            cone,
+            width,
+            footprint,
+            texel_density,
+            base_lod,
+            lod,
+            gradient,
+            curvature,
+            curvature_spread,
+            reflected
+        }),
+    ];
+    let source = ray_query_source();
+    for rust in rust {
+        let wgsl = layout::wgsl_layout(&source, &rust.name).unwrap_or_else(|e| panic!("{e}"));
+        let glsl = |packing| {
+            layout::glsl_layout("#include \"rt_abi.glsl\"", &rust.name, packing, &include_dirs)
+                .unwrap_or_else(|e| panic!("{e}"))
+        };
+        let (std430, scalar) = (glsl(GlslPacking::Std430), glsl(GlslPacking::Scalar));
+        for shader in [&wgsl, &std430, &scalar] {
+            layout::compare(&rust, shader).unwrap_or_else(|e| panic!("{e}"));
+        }
+        println!(
+            "{}",
+            layout::render_columns(
+                &rust,
+                &[("WGSL", &wgsl), ("std430", &std430), ("scalar", &scalar)]
+            )
+        );
+    }
+}
+
+/// The GLSL closest-hit shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn glsl_closest_hit_agrees_with_the_mirror() {
+    agree("GLSL closest hit", |renderer, push| renderer.render(push));
+}
+
+/// The WGSL ray-query shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn wgsl_ray_query_agrees_with_the_mirror() {
+    agree("WGSL ray query", |renderer, push| renderer.trace_wgsl(push));
+}
+
+/// Traces the ground view and the mirror close-up with `trace`, checks every hit pixel and
+/// prints, per value, the pixels checked and the largest error.
+fn agree(path: &str, trace: impl Fn(&Renderer<'_>, &RtPushConstants) -> Result<Frame, GpuError>) {
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
+    println!("device: {}; {path}, {WIDTH} x {HEIGHT} per view", gpu.name());
+    let mut stats = Stats::default();
+    let mut hits_per_mesh = vec![0usize; renderer.scene().meshes.len()];
+    for camera in [Camera::ground(), Camera::reflection()] {
+        let push = renderer.push_constants(&camera, Mode::ConeCurvature, TEX_GRAD_SCALE, WIDTH, HEIGHT);
+        let frame = trace(&renderer, &push).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(frame.records.len(), (WIDTH * HEIGHT) as usize);
+        for record in &frame.records {
+            check_pixel(renderer.scene(), &push, record, &mut stats);
+            if record.hit == 1 {
+                hits_per_mesh[record.instance as usize] += 1;
+            }
+        }
+    }
+    let names: Vec<_> = renderer.scene().meshes.iter().map(|m| m.name).collect();
+    println!(
+        "hits per mesh {names:?}: {hits_per_mesh:?}; misses: {}",
+        stats.misses
+    );
+    print!("{}", stats.table());
+    assert!(hits_per_mesh.iter().all(|&n| n > 0), "every mesh must be hit");
+    assert!(stats.misses > 0, "some pixels must see the sky");
+    assert!(
+        stats.failures.is_empty(),
+        "{} value(s) out of tolerance:\n{}",
+        stats.failures.len(),
+        stats.failures.join("\n")
+    );
+}
+
+/// Largest error and largest error over tolerance of one value, over the pixels checked.
+#[derive(Default)]
+struct Stat {
+    pixels: usize,
+    max_error: f32,
+    max_ratio: f32,
+}
+
+/// Every value's [`Stat`], in the order first seen, and the first disagreements.
+#[derive(Default)]
+struct Stats {
+    values: Vec<(&'static str, Stat)>,
+    misses: usize,
+    failures: Vec<String>,
+}
+
+impl Stats {
+    /// Compares `got` (shader) with `expected` (mirror) for `value` within `tolerance`.
+    fn compare(
+        &mut self,
+        value: &'static str,
+        got: f32,
+        expected: f32,
+        tolerance: f32,
+        record: &RtPixelRecord,
+    ) {
+        let error = if got == expected {
+            0.0
+        } else {
+            (got - expected).abs()
+        };
+        if (error.is_nan() || error > tolerance) && self.failures.len() < 10 {
+            self.failures.push(format!(
+                "{value}: shader {got:e}, mirror {expected:e}, error {error:e} > tolerance {tolerance:e}\n  {record:?}"
+            ));
+        }
+        let index = match self.values.iter().position(|(name, _)| *name == value) {
+            Some(index) => index,
+            None => {
+                self.values.push((value, Stat::default()));
+                self.values.len() - 1
+            }
+        };
+        let stat = &mut self.values[index].1;
+        stat.pixels += 1;
+        stat.max_error = stat.max_error.max(error);
+        if tolerance > 0.0 {
+            stat.max_ratio = stat.max_ratio.max(error / tolerance);
+        }
+    }
+
+    fn table(&self) -> String {
+        self.values
+            .iter()
+            .map(|(name, s)| {
+                format!(
+                    "{name:<20} {:>6} pixels  max error {:>9.3e}  ({:.4} of tolerance)\n",
+                    s.pixels, s.max_error, s.max_ratio
+                )
+            })
+            .collect()
+    }
+}
+
+/// Checks one pixel's record: a miss carries only the primary cone; a hit is looked up in the
+/// scene and every value is recomputed by the mirror from the shader's own inputs.
+fn check_pixel(scene: &Scene, push: &RtPushConstants, record: &RtPixelRecord, stats: &mut Stats) {
+    let cone = rc::pinhole_ray_cone(push.cone.pixel_spread_angle);
+    assert_eq!(
+        record.cone, cone,
+        "the primary cone is the push constant's, bit for bit"
+    );
+    if record.hit == 0 {
+        stats.misses += 1;
+        return;
+    }
+    assert_eq!(record.hit, 1, "hit flag: {record:?}");
+    let mesh = scene
+        .meshes
+        .get(record.instance as usize)
+        .expect("instance names a mesh");
+    assert!(
+        (record.primitive as usize) < mesh.triangle_count(),
+        "primitive in range: {record:?}"
+    );
+    let tri = mesh.triangle(record.primitive);
+    check_hit_data(&tri, push, record, stats);
+    check_values(&tri, push, record, stats);
+}
+
+/// The hit data is the scene's: the normal is the interpolated vertex normal at the recorded
+/// barycentrics, and the hit point lies on the recorded triangle.
+fn check_hit_data(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecord, stats: &mut Stats) {
+    let (u, v) = (record.barycentrics.x, record.barycentrics.y);
+    let w = [1.0 - u - v, u, v];
+    let terms = [0, 1, 2].map(|i| w[i] * tri[i].normal);
+    let sum = terms[0] + terms[1] + terms[2];
+    let normal = sum.normalize();
+    // Each component: two products and two additions, possibly fused (2.5 ULP of the sum of
+    // the terms' magnitudes on each side: 5). A perturbation d of the sum moves its
+    // normalization by at most |d| / |sum|; normalize itself (dot 3 ULP -> 1.5, inversesqrt 2,
+    // product 0.5) adds 4 ULP, the mirror's 3 more.
+    let magnitudes = terms[0].abs() + terms[1].abs() + terms[2].abs();
+    let tolerance = ulps(5.0, magnitudes.element_sum()) / sum.length() + ulps(7.0, 1.0);
+    let (worst, _) = (0..3)
+        .map(|axis| (axis, (record.normal[axis] - normal[axis]).abs()))
+        .fold((0, -1.0), |best, next| if next.1 > best.1 { next } else { best });
+    stats.compare("normal", record.normal[worst], normal[worst], tolerance, record);
+    // Not a Vulkan precision rule (ray-triangle intersection has none): the point at distance t
+    // along the ray and the point at the barycentrics must coincide to a part in 10^4 of the
+    // distance travelled, which a hit attributed to a wrong triangle or instance misses by far.
+    let along_ray = push.eye + record.t * record.direction; // primary rays start at the eye
+    let on_triangle = w[0] * tri[0].position + w[1] * tri[1].position + w[2] * tri[2].position;
+    let gap = (along_ray - on_triangle).length();
+    stats.compare(
+        "hit point",
+        gap,
+        0.0,
+        1.0e-4 * (record.t + push.eye.length()),
+        record,
+    );
+}
+
+/// Every ray-cone value, recomputed by the mirror from the inputs the shader used.
+fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecord, stats: &mut Stats) {
+    let r = record;
+    let (cone, t, n, d) = (r.cone, r.t, r.normal, r.direction);
+    let p = tri.map(|v| v.position);
+    let uv = tri.map(|v| v.uv);
+    let normals = tri.map(|v| v.normal);
+    let cos = n.dot(d).abs().max(MIN_COS);
+    let width_error = ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs());
+
+    // width_at: width + spread * t, possibly fused: 2 ULP of the larger term.
+    stats.compare("width", r.width, rc::width_at(cone, t), width_error, r);
+
+    // world_footprint: the width's error over |cos|, the division (3 ULP), and the dot
+    // product's rounding over |cos| as a relative error.
+    let footprint = rc::world_footprint(cone, t, n, d);
+    let footprint_error = width_error / cos + ulps(3.0, footprint) + footprint.abs() * dot_error(n, d) / cos;
+    stats.compare("footprint", r.footprint, footprint, footprint_error, r);
+
+    // texel_density: the areas' errors through sqrt(uv) / sqrt(world), two square roots, a
+    // division and the mirror (14.5 ULP).
+    let density = rc::texel_density(p[0], p[1], p[2], uv[0], uv[1], uv[2]);
+    let density_error = area_corners(p, uv, |uv, world| {
+        uv.sqrt() / world.max(f64::from(MIN_MAGNITUDE)).sqrt()
+    }) + ulps(14.5, density);
+    stats.compare("texel_density", r.texel_density, density, density_error, r);
+
+    // triangle_base_lod: the areas' errors through 0.5 * (log2 uv - log2 world), half of each
+    // log2's own error, the subtraction and the halving (2 ULP).
+    let base_lod = rc::triangle_base_lod(p[0], p[1], p[2], uv[0], uv[1], uv[2]);
+    let uv_area2 = rc::triangle_uv_area2(uv[0], uv[1], uv[2]).max(MIN_MAGNITUDE);
+    let world_area2 = rc::triangle_world_area2(p[0], p[1], p[2]).max(MIN_MAGNITUDE);
+    let min = f64::from(MIN_MAGNITUDE);
+    let base_lod_error = area_corners(p, uv, |uv, world| {
+        0.5 * (uv.max(min).log2() - world.max(min).log2())
+    }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
+        + ulps(2.0, base_lod);
+    stats.compare("base_lod", r.base_lod, base_lod, base_lod_error, r);
+
+    // texture_lod: the suite's own tolerance, on the shader's base LOD and width.
+    let size = Vec2::splat(push.texture_size);
+    let lod_args = (r.base_lod, r.width, size, n, d);
+    let lod = rc::texture_lod(r.base_lod, r.width, size, n, d);
+    let lod_check = suite::ray_cone::texture_lod();
+    stats.compare("lod", r.lod, lod, (lod_check.tolerance)(&lod_args, 0, lod), r);
+
+    // texture_gradient of footprint * density: two correctly rounded products, the same on both
+    // sides (the denormal floor only).
+    let gradient = rc::texture_gradient(r.footprint * r.texel_density, push.cone.tex_grad_scale);
+    stats.compare("gradient", r.gradient, gradient, f32::MIN_POSITIVE, r);
+
+    // triangle_curvature: the three edges' errors, two additions and the division by 3.
+    let curvature = rc::triangle_curvature(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
+    let edges = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| (p[i], p[j], normals[i], normals[j]));
+    let edge_errors: f32 = edges
+        .iter()
+        .map(|&(a, b, m, k)| edge_curvature_error(a, b, m, k))
+        .sum();
+    let edge_sizes: f32 = edges
+        .iter()
+        .map(|&(a, b, m, k)| rc::edge_curvature(a, b, m, k).abs())
+        .sum();
+    stats.compare(
+        "curvature",
+        r.curvature,
+        curvature,
+        (edge_errors + ulps(5.0, edge_sizes)) / 3.0,
+        r,
+    );
+
+    // curvature_spread_angle: two products and a division (5 ULP), and the dot product's
+    // rounding over |cos| as a relative error.
+    let spread = rc::curvature_spread_angle(r.curvature, r.width, n, d);
+    let spread_error = ulps(5.0, spread) + spread.abs() * dot_error(n, d) / cos;
+    stats.compare("curvature_spread", r.curvature_spread, spread, spread_error, r);
+
+    // propagate: the width as width_at; the spread is one correctly rounded addition.
+    let reflected = rc::propagate(cone, t, r.curvature_spread);
+    stats.compare(
+        "reflected width",
+        r.reflected.width,
+        reflected.width,
+        width_error,
+        r,
+    );
+    stats.compare(
+        "reflected spread",
+        r.reflected.spread_angle,
+        reflected.spread_angle,
+        0.0,
+        r,
+    );
+}
+
+/// Error of `log2` returning `result` (3 ULP, or 2^-21 near 0) plus the mirror's ULP; the
+/// suite's `tolerance::log2_error`.
+fn log2_error(result: f32) -> f32 {
+    ray_footprint::gpu::tolerance::log2_error(result)
+}
+
+/// Error of twice a triangle's world area: each cross-product component `a*b - c*d` within 2 ULP
+/// of `|a*b| + |c*d|`; the scaling division (2.5), `length` (8) and the rescaling (0.5): 11 ULP.
+fn world_area2_error(p: [Vec3; 3]) -> f32 {
+    let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
+    let terms = (e1.yzx() * e2.zxy()).abs() + (e1.zxy() * e2.yzx()).abs();
+    ulps(2.0, terms.element_sum()) + ulps(11.0, rc::triangle_world_area2(p[0], p[1], p[2]))
+}
+
+/// Error of twice a triangle's UV area: 2 ULP of `|e1.x*e2.y| + |e1.y*e2.x|`.
+fn uv_area2_error(uv: [Vec2; 3]) -> f32 {
+    let (e1, e2) = (uv[1] - uv[0], uv[2] - uv[0]);
+    ulps(2.0, (e1.x * e2.y).abs() + (e1.y * e2.x).abs())
+}
+
+/// Largest change of `f(uv_area2, world_area2)` when each area moves within its error bound;
+/// `f` is monotonic in each, so the corners bound it. Evaluated in f64.
+fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) -> f32 {
+    let uv_area = f64::from(rc::triangle_uv_area2(uv[0], uv[1], uv[2]));
+    let world_area = f64::from(rc::triangle_world_area2(p[0], p[1], p[2]));
+    let (uv_error, world_error) = (f64::from(uv_area2_error(uv)), f64::from(world_area2_error(p)));
+    let centre = f(uv_area, world_area);
+    [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)]
+        .iter()
+        .map(|(a, b)| {
+            (f(
+                (uv_area + a * uv_error).max(0.0),
+                (world_area + b * world_error).max(0.0),
+            ) - centre)
+                .abs()
+        })
+        .fold(0.0, f64::max) as f32
+}
+
+/// Error of an edge curvature: the dot product's rounding over the squared length, and the
+/// squared length (3 ULP) and the division (2.5) as relative errors of the result.
+fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
+    let edge = p_j - p_i;
+    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
+        + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
+}
