@@ -47,6 +47,7 @@ mod layouts {
         ("ray_cone", "RfRayCone", "crate::ray_cone::RayCone"),
         ("ray_cone", "RfHitPayload", "crate::abi::HitPayload"),
         ("ray_cone", "RfRayConePushConstants", "crate::abi::RayConePushConstants"),
+        ("ray_diff", "RfRayDiff", "crate::ray_diff::RayDiff"),
         ("wireframe", "RfWireframeSettingsIo", "crate::wireframe::WireframeSettingsIo"),
         ("wireframe", "RfWireframePushConstants", "crate::abi::WireframePushConstants"),
     ];

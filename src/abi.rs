@@ -14,6 +14,7 @@
 //! | [`PackedRayCone`] | `u32` | `ray_cone` | 4 |
 //! | [`HitPayload`] | `RfHitPayload` | `ray_cone` | 32 |
 //! | [`RayConePushConstants`] | `RfRayConePushConstants` | `ray_cone` | 8 |
+//! | [`RayDiff`] | `RfRayDiff` | `ray_diff` | 64 |
 //! | [`WireframeSettingsIo`] | `RfWireframeSettingsIo` | `wireframe` | 32 |
 //! | [`WireframePushConstants`] | `RfWireframePushConstants` | `wireframe` | 48 |
 //!
@@ -38,6 +39,7 @@ use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4};
 
 pub use crate::ray_cone::{PackedRayCone, RayCone};
+pub use crate::ray_diff::RayDiff;
 pub use crate::wireframe::WireframeSettingsIo;
 
 /// The push-constant bytes every Vulkan device accepts (the minimum of `maxPushConstantsSize`).
@@ -105,6 +107,12 @@ pub fn shared_layouts() -> Vec<(crate::shaders::Module, crate::layout::StructLay
         (
             Module::RayCone,
             rust_layout!(RayConePushConstants as "RfRayConePushConstants" { tex_grad_scale, pixel_spread_angle }),
+        ),
+        (
+            Module::RayDiff,
+            rust_layout!(RayDiff as "RfRayDiff" {
+                d_origin_dx, pad0, d_origin_dy, pad1, d_direction_dx, pad2, d_direction_dy, pad3
+            }),
         ),
         (
             Module::Wireframe,

@@ -42,8 +42,9 @@ pub const DIFF_MAX_SHARPNESS: f32 = 64.0;
 /// Layout: 64 bytes, identical in Rust, WGSL (`RfRayDiff`), GLSL std430 and GLSL scalar layout. Each
 /// vec3 is followed by an explicit `f32` pad (vec3 is 16-byte aligned in WGSL and std430), at offsets
 /// 0 (`d_origin_dx`), 12 (`pad0`), 16 (`d_origin_dy`), 28 (`pad1`), 32 (`d_direction_dx`), 44 (`pad2`),
-/// 48 (`d_direction_dy`), 60 (`pad3`). Functions returning a `RayDiff` set the pads to 0.
-#[repr(C)]
+/// 48 (`d_direction_dy`), 60 (`pad3`). Functions returning a `RayDiff` set the pads to 0. The struct
+/// is 16-byte aligned, as its vec3 fields make it in WGSL and std430.
+#[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct RayDiff {
     /// Change of the ray origin per pixel step right.

@@ -6,9 +6,10 @@ use proptest::collection::vec;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 use ray_footprint::abi::{
-    self, HitPayload, RayConePushConstants, WireframePushConstants, WireframeSettingsIo, PUSH_CONSTANT_LIMIT,
+    self, HitPayload, RayConePushConstants, RayDiff, WireframePushConstants, WireframeSettingsIo,
+    PUSH_CONSTANT_LIMIT,
 };
-use ray_footprint::gpu::suite::wireframe;
+use ray_footprint::gpu::suite::{ray_diff, wireframe};
 use ray_footprint::gpu::{self, compile, echo_kernel_source, Gpu, Language, ShaderType, StructType};
 use ray_footprint::layout::{self, GlslPacking, LayoutError};
 use ray_footprint::ray_cone::RayCone;
@@ -259,6 +260,11 @@ fn hit_payload_echoes() {
 #[test]
 fn ray_cone_push_constants_echo() {
     echo::<RayConePushConstants>(Module::RayCone, &gpu::RAY_CONE_PUSH_CONSTANTS);
+}
+
+#[test]
+fn ray_diff_echoes() {
+    echo::<RayDiff>(Module::RayDiff, &ray_diff::RAY_DIFF);
 }
 
 #[test]
