@@ -285,19 +285,24 @@ fn hit_barycentrics() -> BoxedStrategy<Vec3> {
         .boxed()
 }
 
-/// A world-to-object matrix: rotation, uniform scale in `[1e-3, 1e3]`, translation up to 1e9; the
-/// world origins of [`world_origin`] stay within 1e12 in object space.
-fn world_to_object() -> BoxedStrategy<Mat4> {
-    (rotation(), -3.0f32..3.0, small_vec3(), -9.0f32..9.0)
+/// A world-to-object matrix: rotation, uniform scale in `[1e-3, 1e3]`, translation up to
+/// `10^max_exponent`.
+fn world_to_object(max_exponent: f32) -> BoxedStrategy<Mat4> {
+    (
+        rotation(),
+        -3.0f32..3.0,
+        small_vec3(),
+        -9.0f32..max_exponent + 1.0,
+    )
         .prop_map(|(q, scale, t, e)| {
             Mat4::from_scale_rotation_translation(Vec3::splat(10f32.powf(scale)), q, t * 10f32.powf(e) / 10.0)
         })
         .boxed()
 }
 
-/// A world ray origin up to 1e9.
-fn world_origin() -> BoxedStrategy<Vec3> {
-    (small_vec3(), -12.0f32..8.0)
+/// A world ray origin up to `10^max_exponent`.
+fn world_origin(max_exponent: f32) -> BoxedStrategy<Vec3> {
+    (small_vec3(), -12.0f32..max_exponent - 1.0)
         .prop_map(|(v, e)| v * 10f32.powf(e))
         .boxed()
 }
@@ -693,11 +698,16 @@ fn b_cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3))
         .collect()
 }
 
-/// Inputs of the re-intersection functions: a transform, a world origin, an object-space triangle,
-/// two unit neighbour directions and hit barycentrics.
-pub fn offset_args() -> BoxedStrategy<OffsetArgs> {
+/// Largest exponent of the world origin and translation for the f32 re-intersection checks. Beyond
+/// about 1e6 the f32 sum `O + direction` loses the unit direction entirely and both sides compute
+/// rounding noise (the f64 variant exists for that range, and its checks go to 1e8).
+pub const F32_ORIGIN_EXPONENT: f32 = 5.0;
+
+/// Inputs of the re-intersection functions: a transform and a world origin up to
+/// `10^max_exponent`, an object-space triangle, two unit neighbour directions and hit barycentrics.
+pub fn offset_args(max_exponent: f32) -> BoxedStrategy<OffsetArgs> {
     (
-        (world_to_object(), world_origin()),
+        (world_to_object(max_exponent), world_origin(max_exponent)),
         triangle(),
         (unit_vec3(), unit_vec3()),
         hit_barycentrics(),
@@ -995,7 +1005,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(FunctionCheck {
             module: Module::RayDiff,
             function: "barycentric_offsets",
-            strategy: offset_args,
+            strategy: || offset_args(F32_ORIGIN_EXPONENT),
             // When |O| is large, `O + direction` loses the direction in f32 and the neighbour ray is
             // rounding noise whose sign may differ between the device and the mirror (the order of
             // the matrix product is theirs): both may clamp to opposite +-DIFF_MAX_VALUE, and the
@@ -1010,7 +1020,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(FunctionCheck {
             module: Module::RayDiff,
             function: "barycentric_deltas",
-            strategy: offset_args,
+            strategy: || offset_args(F32_ORIGIN_EXPONENT),
             mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
             tolerance: |a, i, _| {
                 let (dx, dy) = b_barycentric_offsets(a);

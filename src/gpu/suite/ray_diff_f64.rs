@@ -87,7 +87,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(FunctionCheck {
             module: Module::RayDiffF64,
             function: "barycentric_offsets_f64",
-            strategy: offset_args,
+            strategy: || offset_args(8.0),
             mirror: |(m, o, p0, p1, p2, x, y, b)| rd64::barycentric_offsets_f64(m, o, p0, p1, p2, x, y, b),
             tolerance: |a, i, _| {
                 let (dx, dy) = b_barycentric_offsets_f64(a);
@@ -97,7 +97,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(FunctionCheck {
             module: Module::RayDiffF64,
             function: "barycentric_deltas_f64",
-            strategy: offset_args,
+            strategy: || offset_args(8.0),
             mirror: |(m, o, p0, p1, p2, x, y, b)| rd64::barycentric_deltas_f64(m, o, p0, p1, p2, x, y, b),
             tolerance: |a, i, _| {
                 let (dx, dy) = b_barycentric_offsets_f64(a);
