@@ -29,6 +29,12 @@ fn modules(dir: &Path, extension: &str) -> Vec<PathBuf> {
     files
 }
 
+/// The glslang runner the layout reader uses.
+#[cfg(feature = "validate")]
+#[allow(dead_code)]
+#[path = "src/glslang.rs"]
+mod glslang;
+
 /// The layout reader the crate exports (`ray_footprint::layout`), reused here.
 #[cfg(feature = "validate")]
 #[allow(dead_code, unused_macros)]

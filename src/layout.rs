@@ -309,64 +309,26 @@ pub fn glsl_layout(
          layout(local_size_x = 1) in;\nvoid main() {{}}\n",
         packing.qualifier()
     );
-    // The probe block is on the line after the source; an error there alone means `name` is
-    // not a type the source declares.
+    // The probe block is on the line after the source; errors there alone mean `name` is not a
+    // type the source declares.
     let probe_line = 3 + source.lines().count() + 1;
-    let spirv = glslang(&probe, include_dirs, probe_line).map_err(|error| match error {
-        GlslangError::OnlyAtLine => LayoutError::StructNotFound(name.to_string()),
-        GlslangError::Other(message) => LayoutError::Source(message),
-    })?;
+    let spirv =
+        crate::glslang::compile(&probe, "comp", "vulkan1.2", include_dirs).map_err(|error| match error {
+            crate::glslang::GlslangError::NotRun(message) => LayoutError::Source(message),
+            crate::glslang::GlslangError::Failed { log, source_path } => {
+                let at_probe = format!("{source_path}:{probe_line}:");
+                let errors: Vec<&str> = log
+                    .lines()
+                    .filter(|l| l.starts_with("ERROR: ") && l.contains(&source_path))
+                    .collect();
+                if !errors.is_empty() && errors.iter().all(|l| l.contains(&at_probe)) {
+                    LayoutError::StructNotFound(name.to_string())
+                } else {
+                    LayoutError::Source(log)
+                }
+            }
+        })?;
     spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
-}
-
-enum GlslangError {
-    /// Every compile error is on the given line.
-    OnlyAtLine,
-    /// Anything else, with glslang's message.
-    Other(String),
-}
-
-/// Compiles a compute shader with `glslangValidator` and returns the SPIR-V words; tells apart a
-/// failure whose every error is at line `line` of the shader.
-fn glslang(source: &str, include_dirs: &[&Path], line: usize) -> Result<Vec<u32>, GlslangError> {
-    static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let stem = std::env::temp_dir().join(format!(
-        "ray-footprint-layout-{}-{}",
-        std::process::id(),
-        COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
-    ));
-    let (input, output) = (stem.with_extension("comp"), stem.with_extension("spv"));
-    std::fs::write(&input, source).map_err(|e| GlslangError::Other(format!("{}: {e}", input.display())))?;
-    let mut command = std::process::Command::new("glslangValidator");
-    command.args(["--target-env", "vulkan1.2"]);
-    for dir in include_dirs {
-        command.arg(format!("-I{}", dir.display()));
-    }
-    let result = command.arg("-o").arg(&output).arg(&input).output();
-    let bytes = std::fs::read(&output);
-    let _ = std::fs::remove_file(&input);
-    let _ = std::fs::remove_file(&output);
-    let result = result.map_err(|e| GlslangError::Other(format!("cannot run glslangValidator: {e}")))?;
-    if !result.status.success() {
-        let message = String::from_utf8_lossy(&result.stdout).into_owned();
-        let at_line = format!("{}:{line}:", input.display());
-        let errors: Vec<&str> = message
-            .lines()
-            .filter(|l| l.starts_with("ERROR: ") && l.contains(".comp:"))
-            .collect();
-        return Err(
-            if !errors.is_empty() && errors.iter().all(|l| l.contains(&at_line)) {
-                GlslangError::OnlyAtLine
-            } else {
-                GlslangError::Other(message)
-            },
-        );
-    }
-    let bytes = bytes.map_err(|e| GlslangError::Other(format!("reading glslang output: {e}")))?;
-    Ok(bytes
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect())
 }
 
 /// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.

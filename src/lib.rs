@@ -9,6 +9,8 @@
 
 pub mod abi;
 #[cfg(feature = "validate")]
+mod glslang;
+#[cfg(feature = "validate")]
 pub mod layout;
 #[cfg(feature = "naga_oil")]
 pub mod naga_oil;

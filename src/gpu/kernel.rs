@@ -10,7 +10,6 @@ use super::value::{ShaderType, StructType};
 use crate::layout::GlslPacking;
 use crate::shaders::{Module, GLSL_INCLUDE_DIR};
 use std::fmt::Write as _;
-use std::process::Command;
 
 /// A shader language of the modules.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -200,45 +199,21 @@ fn compile_wgsl(module: Module, source: &str) -> Result<Vec<u32>, GpuError> {
 }
 
 fn compile_glsl(source: &str) -> Result<Vec<u32>, GpuError> {
-    let stem = std::env::temp_dir().join(format!(
-        "ray-footprint-{}-{}",
-        std::process::id(),
-        KERNEL_COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
-    ));
-    let (input, output) = (stem.with_extension("comp"), stem.with_extension("spv"));
-    std::fs::write(&input, source)
-        .map_err(|e| GpuError::Compile(format!("writing {}: {e}", input.display())))?;
-    let result = Command::new("glslangValidator")
-        .args(["--target-env", "vulkan1.1"])
-        .arg(format!("-I{GLSL_INCLUDE_DIR}"))
-        .arg("-o")
-        .arg(&output)
-        .arg(&input)
-        .output();
-    let bytes = std::fs::read(&output);
-    let _ = std::fs::remove_file(&input);
-    let _ = std::fs::remove_file(&output);
-    let result = result.map_err(|e| {
-        GpuError::Setup(format!(
-            "cannot run glslangValidator ({e}); on Debian 12 run `{}`",
+    use crate::glslang::{compile, GlslangError};
+    compile(
+        source,
+        "comp",
+        "vulkan1.1",
+        &[std::path::Path::new(GLSL_INCLUDE_DIR)],
+    )
+    .map_err(|error| match error {
+        GlslangError::NotRun(message) => GpuError::Setup(format!(
+            "{message}; on Debian 12 run `{}`",
             super::device::SETUP_COMMAND
-        ))
-    })?;
-    if !result.status.success() {
-        return Err(GpuError::Compile(format!(
-            "{}{}\n--- kernel ---\n{source}",
-            String::from_utf8_lossy(&result.stdout),
-            String::from_utf8_lossy(&result.stderr)
-        )));
-    }
-    let bytes = bytes.map_err(|e| GpuError::Compile(format!("reading glslang output: {e}")))?;
-    Ok(bytes
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect())
+        )),
+        GlslangError::Failed { log, .. } => GpuError::Compile(format!("{log}\n--- kernel ---\n{source}")),
+    })
 }
-
-static KERNEL_COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
 /// Spelling of loads, stores and type names in one language.
 struct Syntax {
