@@ -202,7 +202,7 @@ fn pixel_ndc(pixel: Vec2, image_size: Vec2) -> Vec2 {
 /// `a = W / H`, `f = tan(fov_y / 2)`.
 ///
 /// `right`, `up` and `view` are the camera's orthonormal basis; `view` points *towards* the camera
-/// (the camera looks down `-view`). Clamps as [`eye_ray_extent`].
+/// (the camera looks down `-view`). Clamps as `eye_ray_extent`.
 pub fn eye_ray_direction(
     pixel: Vec2,
     image_size: Vec2,

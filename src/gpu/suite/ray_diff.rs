@@ -1,6 +1,6 @@
 //! Agreement checks of the ray_diff module, one per function, in the module's order.
 //!
-//! Every tolerance is the width of an enclosure ([`bound`]): the check re-evaluates its function in
+//! Every tolerance is the width of an enclosure (`bound`): the check re-evaluates its function in
 //! interval arithmetic on the same inputs, widening after each operation by the rounding error that
 //! Vulkan's precision rules allow the device (and that the mirror makes), so both results lie inside.
 //! The `b_*` functions below are those re-evaluations, one per shader function, in the module's
@@ -254,7 +254,7 @@ fn differential_vec3() -> BoxedStrategy<Vec3> {
     .boxed()
 }
 
-/// A ray differential: origin differentials from [`differential_vec3`], direction differentials
+/// A ray differential: origin differentials from `differential_vec3`, direction differentials
 /// ordinary or pixel-sized.
 pub fn ray_diff() -> BoxedStrategy<RayDiff> {
     let direction = || prop_oneof![small_vec3(), small_vec3().prop_map(|v| v * 1.0e-4)];
