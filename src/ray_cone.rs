@@ -45,18 +45,18 @@ pub struct RayCone {
 pub struct PackedRayCone(pub u32);
 
 /// Packs a cone into two f16 (`packHalf2x16` / `pack2x16float`), each value first clamped to
-/// `[-F16_MAX, F16_MAX]` so that no finite value becomes infinite.
+/// `[-F16_MAX, F16_MAX]` so that no finite value becomes infinite. Rounds to nearest, ties to even.
 pub fn pack_ray_cone(cone: RayCone) -> PackedRayCone {
-    let width = half::f16::from_f32(cone.width.clamp(-F16_MAX, F16_MAX));
-    let spread = half::f16::from_f32(cone.spread_angle.clamp(-F16_MAX, F16_MAX));
-    PackedRayCone(u32::from(width.to_bits()) | (u32::from(spread.to_bits()) << 16))
+    let width = f16::bits(cone.width.clamp(-F16_MAX, F16_MAX));
+    let spread = f16::bits(cone.spread_angle.clamp(-F16_MAX, F16_MAX));
+    PackedRayCone(u32::from(width) | (u32::from(spread) << 16))
 }
 
-/// Unpacks a cone packed by [`pack_ray_cone`] (`unpackHalf2x16` / `unpack2x16float`).
+/// Unpacks a cone packed by [`pack_ray_cone`] (`unpackHalf2x16` / `unpack2x16float`); exact.
 pub fn unpack_ray_cone(packed: PackedRayCone) -> RayCone {
     RayCone {
-        width: half::f16::from_bits(packed.0 as u16).to_f32(),
-        spread_angle: half::f16::from_bits((packed.0 >> 16) as u16).to_f32(),
+        width: f16::value(packed.0 as u16),
+        spread_angle: f16::value((packed.0 >> 16) as u16),
     }
 }
 
@@ -252,4 +252,89 @@ pub fn environment_lod(spread_angle: f32, map_height: f32) -> f32 {
     (spread_angle.abs() * map_height.max(1.0) / std::f32::consts::PI)
         .max(MIN_MAGNITUDE)
         .log2()
+}
+
+/// IEEE 754 binary16 conversions for the packed cone (the shaders use `packHalf2x16` and
+/// `unpackHalf2x16`).
+mod f16 {
+    /// IEEE 754 binary16 bits of `value`, rounded to nearest, ties to even; overflow gives infinity,
+    /// NaN stays NaN.
+    pub(super) fn bits(value: f32) -> u16 {
+        let bits = value.to_bits();
+        let sign = ((bits >> 16) & 0x8000) as u16;
+        let exponent = ((bits >> 23) & 0xff) as i32;
+        let mantissa = bits & 0x007f_ffff;
+        if exponent == 0xff {
+            return sign | 0x7c00 | if mantissa != 0 { 0x0200 } else { 0 };
+        }
+        let half_exponent = exponent - 127 + 15;
+        if half_exponent >= 0x1f {
+            return sign | 0x7c00;
+        }
+        // A normal half keeps the top 10 mantissa bits; a subnormal one shifts the implicit bit in too.
+        let (kept, shift) = if half_exponent > 0 {
+            (((half_exponent as u32) << 10) | (mantissa >> 13), 13)
+        } else if half_exponent >= -10 {
+            let shift = (14 - half_exponent) as u32;
+            ((mantissa | 0x0080_0000) >> shift, shift)
+        } else {
+            return sign;
+        };
+        let full = if half_exponent > 0 {
+            mantissa
+        } else {
+            mantissa | 0x0080_0000
+        };
+        let remainder = full & ((1 << shift) - 1);
+        let halfway = 1 << (shift - 1);
+        let round_up = remainder > halfway || (remainder == halfway && kept & 1 == 1);
+        sign | (kept + u32::from(round_up)) as u16
+    }
+
+    /// The f32 value of IEEE 754 binary16 bits (exact).
+    pub(super) fn value(bits: u16) -> f32 {
+        let sign = u32::from(bits & 0x8000) << 16;
+        let exponent = u32::from((bits >> 10) & 0x1f);
+        let mantissa = u32::from(bits & 0x03ff);
+        match exponent {
+            0 => f32::from_bits(sign | (mantissa as f32 * (1.0 / 16_777_216.0)).to_bits()),
+            0x1f => f32::from_bits(sign | 0x7f80_0000 | (mantissa << 13)),
+            _ => f32::from_bits(sign | ((exponent + 112) << 23) | (mantissa << 13)),
+        }
+    }
+
+    #[cfg(test)]
+    mod tests {
+        /// Every f16 converts exactly, as the `half` crate does.
+        #[test]
+        fn every_half_converts_to_the_same_f32() {
+            for bits in 0..=u16::MAX {
+                let expected = half::f16::from_bits(bits).to_f32();
+                let got = super::value(bits);
+                assert!(
+                    got.to_bits() == expected.to_bits() || (got.is_nan() && expected.is_nan()),
+                    "{bits:#06x}"
+                );
+            }
+        }
+
+        /// f32 to f16 rounds to nearest, ties to even, as the `half` crate does: every f32 whose bit
+        /// pattern is a multiple of 7, and every f32 next to an f16 or halfway between two.
+        #[test]
+        fn f32_rounds_to_the_same_f16() {
+            let near_halves = (0..=u16::MAX).flat_map(|h| {
+                let centre = half::f16::from_bits(h).to_f32().to_bits() as u64;
+                (centre.saturating_sub(2)..=centre + 2).chain([centre + 0x1000])
+            });
+            for pattern in (0..=u32::MAX as u64).step_by(7).chain(near_halves) {
+                let value = f32::from_bits(pattern as u32);
+                let expected = half::f16::from_f32(value).to_bits();
+                let got = super::bits(value);
+                assert!(
+                    got == expected || (value.is_nan() && got & 0x7c00 == 0x7c00 && got & 0x3ff != 0),
+                    "{value:e}: {got:#06x} vs {expected:#06x}"
+                );
+            }
+        }
+    }
 }
