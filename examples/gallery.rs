@@ -12,6 +12,7 @@
 
 use ray_footprint::gpu::rt::{Camera, Frame, Mode, Renderer, Scene};
 use ray_footprint::gpu::{Gpu, GpuError};
+use ray_footprint::wireframe::WireframeSettings;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -167,10 +168,10 @@ impl Gallery<'_, '_> {
     /// One untimed frame, so the first timing does not include the driver's shader compilation.
     fn warm_up(&self) -> Result<(), GpuError> {
         println!("warming up (first frame compiles the pipeline) ...");
-        let push = self
-            .renderer
-            .push_constants(&Camera::ground(), Mode::Cone, 1.0, 16, 16);
-        self.renderer.render(&push).map(|_| ())
+        let camera = Camera::ground();
+        let push = self.renderer.push_constants(&camera, Mode::Cone, 1.0, 16, 16);
+        let uniforms = camera.uniforms((16, 16), WireframeSettings::default());
+        self.renderer.render(&push, &uniforms).map(|_| ())
     }
 
     fn render(
@@ -184,7 +185,8 @@ impl Gallery<'_, '_> {
         let push = self
             .renderer
             .push_constants(camera, mode, tex_grad_scale, width, height);
-        let frame = self.renderer.render(&push)?;
+        let uniforms = camera.uniforms((width, height), WireframeSettings::default());
+        let frame = self.renderer.render(&push, &uniforms)?;
         let ms = frame.trace_time.as_secs_f64() * 1e3;
         println!("    {ms:.1} ms per frame");
         self.timings.push((
