@@ -27,7 +27,7 @@ use std::path::Path;
 /// The test image: small, so the test is quick on lavapipe, with every mesh in view.
 const WIDTH: u32 = 64;
 const HEIGHT: u32 = 48;
-/// The torus close-up's image: large enough that its quads are about 8 pixels wide, so the
+/// The torus close-up's image: large enough that its quads are over 10 pixels wide, so the
 /// wireframe has gaps between its lines.
 const TORUS_VIEW: (u32, u32) = (200, 150);
 /// A `tex_grad_scale` other than 1, so the gradient's scaling is exercised.

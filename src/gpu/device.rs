@@ -29,6 +29,13 @@ pub enum GpuError {
     Validation(Vec<String>),
     /// A batch is larger than one dispatch can hold.
     BatchTooLarge(usize),
+    /// A traced frame has more pixels than its per-pixel buffers can hold on this device.
+    FrameTooLarge {
+        /// Pixels asked for.
+        pixels: u64,
+        /// Pixels the device allows per frame.
+        max: u64,
+    },
 }
 
 impl fmt::Display for GpuError {
@@ -48,6 +55,11 @@ impl fmt::Display for GpuError {
             GpuError::BatchTooLarge(cases) => {
                 write!(f, "a batch of {cases} cases does not fit in one dispatch")
             }
+            GpuError::FrameTooLarge { pixels, max } => write!(
+                f,
+                "a frame of {pixels} pixels is too large: this device's maxStorageBufferRange holds \
+                 the per-pixel records of at most {max} pixels"
+            ),
         }
     }
 }

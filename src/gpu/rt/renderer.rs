@@ -114,7 +114,8 @@ impl<'g> Renderer<'g> {
         anisotropy(self.owner.gpu)
     }
 
-    /// Traces a frame with the GLSL ray-tracing pipeline: colours and records.
+    /// Traces a frame with the GLSL ray-tracing pipeline: colours and records. Fails with
+    /// [`GpuError::FrameTooLarge`] above [`Renderer::max_pixels`].
     ///
     /// # Panics
     /// If `push.width` or `push.height` is 0.
@@ -123,7 +124,7 @@ impl<'g> Renderer<'g> {
     }
 
     /// Traces the primary rays of a frame with the WGSL ray-query compute shader: records only
-    /// (the frame's pixels are zero).
+    /// (the frame's pixels are zero). Fails as [`Renderer::render`] does.
     ///
     /// # Panics
     /// If `push.width` or `push.height` is 0.
@@ -131,13 +132,29 @@ impl<'g> Renderer<'g> {
         self.trace(push, uniforms, Path::RayQuery)
     }
 
+    /// The most pixels a frame may have: the device's `maxStorageBufferRange` over the size of a
+    /// pixel record.
+    pub fn max_pixels(&self) -> u64 {
+        let gpu = self.owner.gpu;
+        // SAFETY: a plain query.
+        let limits = unsafe { gpu.instance.get_physical_device_properties(gpu.physical) }.limits;
+        u64::from(limits.max_storage_buffer_range) / std::mem::size_of::<RtPixelRecord>() as u64
+    }
+
     fn trace(&self, push: &RtPushConstants, uniforms: &RtUniforms, path: Path) -> Result<Frame, GpuError> {
         assert!(
             push.width > 0 && push.height > 0,
             "an image needs at least one pixel"
         );
-        let mut frame = Owner::new(self.owner.gpu);
         let pixels = push.width as usize * push.height as usize;
+        let max = self.max_pixels();
+        if pixels as u64 > max {
+            return Err(GpuError::FrameTooLarge {
+                pixels: pixels as u64,
+                max,
+            });
+        }
+        let mut frame = Owner::new(self.owner.gpu);
         let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
         let record_bytes = std::mem::size_of::<RtPixelRecord>();
         let records = frame.buffer((pixels * record_bytes) as u64, storage, Location::Host, 1)?;

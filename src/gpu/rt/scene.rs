@@ -248,13 +248,13 @@ impl Camera {
         }
     }
 
-    /// Close to the top of the torus, whose quads are then about 10 to 15 pixels wide in a
-    /// 480 x 270 image: the wireframe view.
+    /// A narrow view of the top of the torus, its silhouette against the ground and the sky in
+    /// the upper part: its quads are about 30 pixels wide in a 480 x 270 image (the wireframe view).
     pub fn torus() -> Camera {
         Camera {
             eye: Vec3::new(-1.1, 2.25, -1.65),
-            target: Vec3::new(-1.5, 1.9, -2.5),
-            fov_y: 40f32.to_radians(),
+            target: Vec3::new(-1.5, 2.17, -2.5),
+            fov_y: 16f32.to_radians(),
         }
     }
 
