@@ -3,15 +3,19 @@
 //! names another), validation layer on, into a folder of PNGs.
 //!
 //! For each mode: the ground plane at grazing angles (`ground_<mode>.png`) and a close-up of the
-//! mirror sphere (`reflection_<mode>.png`). With `--mode all` (the default) also side-by-side
-//! strips: every mode on the ground plane (`ground_modes.png`, in the order of `--help`), the
-//! reflection without and with curvature (`reflection_curvature.png`), and `tex_grad_scale`
-//! 0, 1 and 3 (`tex_grad_scale.png`).
+//! mirror sphere (`reflection_<mode>.png`). With the wireframe mode, also a close-up of the dense
+//! torus under each wireframe preset (`wireframe_<preset>.png`) and all of them side by side
+//! (`wireframe_presets.png`). With `--mode all` (the default) also side-by-side strips: every mode
+//! on the ground plane (`ground_modes.png`, in the order of `--help`), the isotropic and the
+//! anisotropic ways to pick a level of detail (`ground_gradients.png`: mip0, cone, ray_diff,
+//! bary_gradients), the reflection without and with curvature (`reflection_curvature.png`), and
+//! `tex_grad_scale` 0, 1 and 3 (`tex_grad_scale.png`).
 //!
 //! `cargo run --release --all-features --example gallery -- [--width N] [--height N] [--mode NAME|all] [--out DIR]`
 
 use ray_footprint::gpu::rt::{Camera, Frame, Mode, Renderer, Scene};
 use ray_footprint::gpu::{Gpu, GpuError};
+use ray_footprint::wireframe::WireframeSettings;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -117,6 +121,10 @@ fn run(options: &Options) -> Result<(), String> {
         "image size: {} x {}; scene: {triangles} triangles",
         options.width, options.height
     );
+    match renderer.anisotropy() {
+        Some(max) => println!("sampler: trilinear, anisotropic up to {max}x"),
+        None => println!("sampler: trilinear (the device has no samplerAnisotropy)"),
+    }
     let mut gallery = Gallery {
         renderer: &renderer,
         options,
@@ -134,17 +142,31 @@ fn run(options: &Options) -> Result<(), String> {
                 options.modes.len()
             );
             let frame = gallery
-                .render(view, camera, mode, scale_of(mode))
+                .render(view, camera, mode, scale_of(mode), DEFAULT_PRESET)
                 .map_err(|e| e.to_string())?;
             gallery.save(&format!("{view}_{mode}.png"), &[&frame])?;
             frames.push(((*view, mode), frame));
         }
+    }
+    if options.modes.contains(&Mode::Wireframe) {
+        gallery.wireframes()?;
     }
     if options.modes.len() == Mode::ALL.len() {
         gallery.strips(&frames)?;
     }
     gallery.report();
     Ok(())
+}
+
+/// A wireframe preset and its display name ([`WireframeSettings::PRESETS`]).
+type Preset = (&'static str, WireframeSettings);
+
+/// The preset of every image but the wireframe close-ups.
+const DEFAULT_PRESET: Preset = WireframeSettings::PRESETS[0];
+
+/// The file-name form of a preset's name: "Wire dot" -> "wire_dot".
+fn slug(name: &str) -> String {
+    name.to_lowercase().replace(' ', "_")
 }
 
 /// The `tex_grad_scale` a mode renders with.
@@ -167,31 +189,56 @@ impl Gallery<'_, '_> {
     /// One untimed frame, so the first timing does not include the driver's shader compilation.
     fn warm_up(&self) -> Result<(), GpuError> {
         println!("warming up (first frame compiles the pipeline) ...");
-        let push = self
-            .renderer
-            .push_constants(&Camera::ground(), Mode::Cone, 1.0, 16, 16);
-        self.renderer.render(&push).map(|_| ())
+        let camera = Camera::ground();
+        let push = self.renderer.push_constants(&camera, Mode::Cone, 1.0, 16, 16);
+        let uniforms = camera.uniforms((16, 16), WireframeSettings::default());
+        self.renderer.render(&push, &uniforms).map(|_| ())
     }
 
+    /// Traces one frame of `camera` in `mode`, timed; the wireframe mode draws `preset`.
     fn render(
         &mut self,
         view: &str,
         camera: &Camera,
         mode: Mode,
         tex_grad_scale: f32,
+        (preset, settings): Preset,
     ) -> Result<Frame, GpuError> {
         let (width, height) = (self.options.width, self.options.height);
         let push = self
             .renderer
             .push_constants(camera, mode, tex_grad_scale, width, height);
-        let frame = self.renderer.render(&push)?;
+        let uniforms = camera.uniforms((width, height), settings);
+        let frame = self.renderer.render(&push, &uniforms)?;
         let ms = frame.trace_time.as_secs_f64() * 1e3;
         println!("    {ms:.1} ms per frame");
-        self.timings.push((
-            format!("{view:<10} {mode:<15} tex_grad_scale {tex_grad_scale}"),
-            ms,
-        ));
+        let setting = if mode == Mode::Wireframe {
+            format!("preset {preset}")
+        } else {
+            format!("tex_grad_scale {tex_grad_scale}")
+        };
+        self.timings
+            .push((format!("{view:<10} {mode:<15} {setting}"), ms));
         Ok(frame)
+    }
+
+    /// The torus close-up under every wireframe preset, one image each and a strip.
+    fn wireframes(&mut self) -> Result<(), String> {
+        let mut frames = Vec::new();
+        for (index, &preset) in WireframeSettings::PRESETS.iter().enumerate() {
+            println!(
+                "[wireframe {}/{}] torus view, preset {} ...",
+                index + 1,
+                WireframeSettings::PRESETS.len(),
+                preset.0
+            );
+            let frame = self
+                .render("torus", &Camera::torus(), Mode::Wireframe, 1.0, preset)
+                .map_err(|e| e.to_string())?;
+            self.save(&format!("wireframe_{}.png", slug(preset.0)), &[&frame])?;
+            frames.push(frame);
+        }
+        self.save("wireframe_presets.png", &frames.iter().collect::<Vec<_>>())
     }
 
     /// The strips: every mode on the ground, the reflection without and with curvature, and
@@ -206,6 +253,11 @@ impl Gallery<'_, '_> {
         };
         let ground: Vec<&Frame> = Mode::ALL.iter().map(|&mode| find("ground", mode)).collect();
         self.save("ground_modes.png", &ground)?;
+        let gradients = [Mode::Mip0, Mode::Cone, Mode::RayDiff, Mode::BaryGradients];
+        self.save(
+            "ground_gradients.png",
+            &gradients.map(|mode| find("ground", mode)),
+        )?;
         let reflection = [
             find("reflection", Mode::Cone),
             find("reflection", Mode::ConeCurvature),
@@ -215,8 +267,14 @@ impl Gallery<'_, '_> {
         let mut scaled = Vec::new();
         for scale in [0.0, 1.0] {
             scaled.push(
-                self.render("ground", &Camera::ground(), Mode::TexGradScale, scale)
-                    .map_err(|e| e.to_string())?,
+                self.render(
+                    "ground",
+                    &Camera::ground(),
+                    Mode::TexGradScale,
+                    scale,
+                    DEFAULT_PRESET,
+                )
+                .map_err(|e| e.to_string())?,
             );
         }
         let strip = [&scaled[0], &scaled[1], find("ground", Mode::TexGradScale)];

@@ -188,8 +188,9 @@ pub struct RtPushConstants {
 }
 
 /// What the renderer measured at a pixel's primary hit (`RtPixelRecord`, declared by the
-/// renderer's shaders): the hit data, and every ray-cone value the shader computed from it. 96
-/// bytes, 16-byte aligned. A miss has `hit == 0` and zeros elsewhere.
+/// renderer's shaders): the hit data, every ray-cone value the shader computed from it, and the
+/// ray-differential and wireframe values ([`RtDiffRecord`]). 272 bytes, 16-byte aligned. A miss
+/// has `hit == 0` and zeros elsewhere.
 #[cfg(feature = "gpu")]
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -228,7 +229,88 @@ pub struct RtPixelRecord {
     pub curvature_spread: f32,
     /// `rf_propagate(cone, t, curvature_spread)`: the cone a reflection leaves with.
     pub reflected: RayCone,
+    /// The ray-differential, re-intersection and wireframe values.
+    pub diff: RtDiffRecord,
+}
+
+/// What the renderer measured at a pixel's primary hit with the `ray_diff` and `wireframe`
+/// modules (`RtDiffRecord`, inside [`RtPixelRecord`]). 176 bytes, 16-byte aligned; every pad is 0.
+///
+/// The eye-ray differential and the neighbour directions come from the inverse matrices of
+/// [`RtUniforms`]; the re-intersection uses the world-to-object matrix of the hit instance (the
+/// identity in the renderer's scenes) and the hit barycentrics `(1 - u - v, u, v)`. Texel
+/// gradients for the LODs are the UV gradients times the texture size, a power of two (exact).
+#[cfg(feature = "gpu")]
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RtDiffRecord {
+    /// `d_direction_dx` of `rf_eye_ray_diff_from_matrices` (its origin differentials are 0).
+    pub eye_d_direction_dx: Vec3,
+    /// `rf_lod_isotropic` of the ray-differential texel gradients (`uv_dx`, `uv_dy` times the size).
+    pub lod: f32,
+    /// `d_direction_dy` of `rf_eye_ray_diff_from_matrices`.
+    pub eye_d_direction_dy: Vec3,
+    /// `rf_lod_isotropic` of the re-intersection texel gradients (`offset_uv_*` times the size).
+    pub offset_lod: f32,
+    /// `rf_barycentric_derivatives(eye diff, direction, t, p0, p1, p2).dx`: `(du/dx, dv/dx)`.
+    pub barycentric_dx: glam::Vec2,
+    /// `(du/dy, dv/dy)` of the same call.
+    pub barycentric_dy: glam::Vec2,
+    /// `rf_texture_derivatives(barycentric, uv0, uv1, uv2).dx`: the `textureGrad` ddx at scale 1.
+    pub uv_dx: glam::Vec2,
+    /// `.dy` of the same call.
+    pub uv_dy: glam::Vec2,
+    /// `rf_pixel_directions(...).right`: the unit direction through the right neighbour.
+    pub neighbour_right: Vec3,
+    /// `rf_process_wireframe` of the frame's wireframe settings, `b` and `deltas`.
+    pub coverage: f32,
+    /// `rf_pixel_directions(...).below`: the unit direction through the lower neighbour.
+    pub neighbour_below: Vec3,
+    /// Always 0.
+    pub pad0: u32,
+    /// `rf_barycentric_offsets(...).dx`: `b_x - b` for the right neighbour, `(w, u, v)`.
+    pub offset_dx: Vec3,
+    /// Always 0.
+    pub pad1: u32,
+    /// `rf_barycentric_offsets(...).dy`: `b_y - b` for the lower neighbour.
+    pub offset_dy: Vec3,
+    /// Always 0.
+    pub pad2: u32,
+    /// `rf_uv_gradients_from_offsets(offsets, uv0, uv1, uv2).dx`.
+    pub offset_uv_dx: glam::Vec2,
+    /// `.dy` of the same call.
+    pub offset_uv_dy: glam::Vec2,
+    /// `rf_barycentric_deltas(...)`: the per-pixel barycentric deltas the wireframe uses.
+    pub deltas: Vec3,
+    /// Always 0.
+    pub pad3: u32,
+    /// `rf_cone_barycentric_deltas(footprint, p0, p1, p2)`: the closed-form alternative, used
+    /// for the wireframe seen in reflections.
+    pub cone_deltas: Vec3,
+    /// Always 0.
+    pub pad4: u32,
+}
+
+/// Per-frame uniforms of the ray-tracing renderer (`RtUniforms`, a uniform buffer at binding 7):
+/// the inverse view and projection matrices that `rf_eye_ray_diff_from_matrices` and
+/// `rf_pixel_directions` take (128 bytes: they would not fit in the push constants next to
+/// [`RtPushConstants`]), and the wireframe colour and settings. 176 bytes, 16-byte aligned; the
+/// same layout under std140 (the uniform block), std430, scalar and WGSL.
+#[cfg(feature = "gpu")]
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct RtUniforms {
+    /// Camera to world: columns right, up, view (towards the camera) and the eye.
+    pub view_inv: glam::Mat4,
+    /// Inverse of a Vulkan-style (y-down) perspective projection of the camera's field of view
+    /// and aspect ratio, so `rf_pixel_ndc`'s y = -1 is the top row.
+    pub proj_inv: glam::Mat4,
+    /// Wireframe line colour and settings.
+    pub wireframe: WireframePushConstants,
 }
 
 #[cfg(feature = "gpu")]
 const _: () = assert!(std::mem::size_of::<RtPushConstants>() <= PUSH_CONSTANT_LIMIT);
+#[cfg(feature = "gpu")]
+const _: () =
+    assert!(std::mem::size_of::<RtPixelRecord>() == 272 && std::mem::size_of::<RtUniforms>() == 176);

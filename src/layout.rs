@@ -55,6 +55,8 @@ pub struct StructLayout {
 /// GLSL block packing rules.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum GlslPacking {
+    /// `std140`, the default of uniform blocks.
+    Std140,
     /// `std430`, the default of push constants and storage buffers.
     Std430,
     /// `scalar` (GL_EXT_scalar_block_layout), as Slang-generated Vulkan code uses.
@@ -62,9 +64,10 @@ pub enum GlslPacking {
 }
 
 impl GlslPacking {
-    /// The layout qualifier: `std430` or `scalar`.
+    /// The layout qualifier: `std140`, `std430` or `scalar`.
     pub fn qualifier(self) -> &'static str {
         match self {
+            GlslPacking::Std140 => "std140",
             GlslPacking::Std430 => "std430",
             GlslPacking::Scalar => "scalar",
         }

@@ -29,6 +29,13 @@ pub enum GpuError {
     Validation(Vec<String>),
     /// A batch is larger than one dispatch can hold.
     BatchTooLarge(usize),
+    /// A traced frame has more pixels than its per-pixel buffers can hold on this device.
+    FrameTooLarge {
+        /// Pixels asked for.
+        pixels: u64,
+        /// Pixels the device allows per frame.
+        max: u64,
+    },
 }
 
 impl fmt::Display for GpuError {
@@ -48,6 +55,11 @@ impl fmt::Display for GpuError {
             GpuError::BatchTooLarge(cases) => {
                 write!(f, "a batch of {cases} cases does not fit in one dispatch")
             }
+            GpuError::FrameTooLarge { pixels, max } => write!(
+                f,
+                "a frame of {pixels} pixels is too large: this device's maxStorageBufferRange holds \
+                 the per-pixel records of at most {max} pixels"
+            ),
         }
     }
 }
@@ -83,6 +95,7 @@ pub struct Gpu {
     pub(super) pool: vk::CommandPool,
     name: String,
     max_groups: u32,
+    max_anisotropy: Option<f32>,
 }
 
 unsafe extern "system" fn collect_message(
@@ -189,8 +202,17 @@ impl Gpu {
                 .queue_priorities(&priorities)];
             // f64 for the `_f64` modules, where the device has it.
             let supported = instance.get_physical_device_features(physical);
-            let features =
-                vk::PhysicalDeviceFeatures::default().shader_float64(supported.shader_float64 == vk::TRUE);
+            // Anisotropic filtering for textureGrad with anisotropic gradients, where the device has it.
+            let anisotropic = supported.sampler_anisotropy == vk::TRUE;
+            let features = vk::PhysicalDeviceFeatures::default()
+                .shader_float64(supported.shader_float64 == vk::TRUE)
+                .sampler_anisotropy(anisotropic);
+            let max_anisotropy = anisotropic.then(|| {
+                instance
+                    .get_physical_device_properties(physical)
+                    .limits
+                    .max_sampler_anisotropy
+            });
             let extension_names: Vec<_> = extensions.iter().map(|e| e.as_ptr()).collect();
             let mut vulkan12 = vk::PhysicalDeviceVulkan12Features::default().buffer_device_address(true);
             let mut acceleration =
@@ -231,6 +253,7 @@ impl Gpu {
                 pool,
                 name,
                 max_groups,
+                max_anisotropy,
             };
             gpu.check_messages()?;
             Ok(gpu)
@@ -240,6 +263,11 @@ impl Gpu {
     /// The device name, as the driver reports it.
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// `maxSamplerAnisotropy` when the device has `samplerAnisotropy` (enabled), else `None`.
+    pub fn max_sampler_anisotropy(&self) -> Option<f32> {
+        self.max_anisotropy
     }
 
     /// Fails with every validation message collected since the last call.

@@ -5,11 +5,10 @@ use std::fmt;
 /// A render mode. The discriminant is the `RT_MODE_*` constant of `shaders/rt_common.glsl`.
 ///
 /// Every mode traces the same rays and records the same per-pixel values
-/// ([`crate::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, and whether
-/// a reflection off the sphere widens its cone by the surface curvature.
-///
-/// The ray-differential, barycentric-gradient and wireframe modes plug in here (a variant, its
-/// name and description, and an `RT_MODE_*` branch in `rt_texture_colour`) once those modules land.
+/// ([`crate::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
+/// reflection off the sphere widens its cone by the surface curvature, and whether the wireframe
+/// is drawn. The gradient modes need a primary hit: what the mirror reflects is sampled at the
+/// ray-cone LOD in them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u32)]
 pub enum Mode {
@@ -23,16 +22,28 @@ pub enum Mode {
     TexGradScale = 3,
     /// Ray-cone LOD into a texture whose mip levels are flat colours (RTG Fig. 20-9/20-10).
     MipLevels = 4,
+    /// `textureGrad` with anisotropic UV gradients from the eye-ray differentials (Igehy; RTG
+    /// Eq. 8-21), times `tex_grad_scale`.
+    RayDiff = 5,
+    /// `textureGrad` with anisotropic UV gradients from the neighbour pixels' rays re-intersected
+    /// with the hit triangle's plane (signed barycentric offsets), times `tex_grad_scale`.
+    BaryGradients = 6,
+    /// Ray-cone LOD under an anti-aliased wireframe (per-pixel barycentric deltas by
+    /// re-intersection; the closed-form cone deltas in reflections).
+    Wireframe = 7,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 5] = [
+    pub const ALL: [Mode; 8] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
         Mode::TexGradScale,
         Mode::MipLevels,
+        Mode::RayDiff,
+        Mode::BaryGradients,
+        Mode::Wireframe,
     ];
 
     /// The value the shaders compare with `RT_MODE_*`.
@@ -48,6 +59,9 @@ impl Mode {
             Mode::ConeCurvature => "cone_curvature",
             Mode::TexGradScale => "tex_grad_scale",
             Mode::MipLevels => "mip_levels",
+            Mode::RayDiff => "ray_diff",
+            Mode::BaryGradients => "bary_gradients",
+            Mode::Wireframe => "wireframe",
         }
     }
 
@@ -59,6 +73,9 @@ impl Mode {
             Mode::ConeCurvature => "isotropic ray-cone LOD, reflected cones widened by curvature",
             Mode::TexGradScale => "textureGrad with the ray-cone gradient times tex_grad_scale",
             Mode::MipLevels => "ray-cone LOD into a texture with one colour per mip level",
+            Mode::RayDiff => "textureGrad with anisotropic ray-differential gradients",
+            Mode::BaryGradients => "textureGrad with gradients from re-intersected neighbour rays",
+            Mode::Wireframe => "ray-cone LOD under an anti-aliased wireframe",
         }
     }
 

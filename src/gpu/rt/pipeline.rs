@@ -5,7 +5,7 @@ use super::memory::{Buffer, Object, Owner};
 use crate::abi::RtPushConstants;
 use crate::gpu::device::{setup, vulkan, GpuError};
 use crate::gpu::naga_capabilities;
-use crate::shaders::{Module, GLSL_INCLUDE_DIR, RAY_CONE_WGSL};
+use crate::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR};
 use ash::vk;
 use std::path::Path;
 use std::process::Command;
@@ -13,10 +13,15 @@ use std::process::Command;
 /// Directory of the renderer's shaders (ray generation, miss, closest hit, ray query).
 pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gpu/rt/shaders");
 
-/// The renderer's WGSL ray-query source, as compiled: the extension, the ray-cone module, the shader.
+/// The library modules the renderer's shaders use.
+const MODULES: [Module; 3] = [Module::RayCone, Module::RayDiff, Module::Wireframe];
+
+/// The renderer's WGSL ray-query source, as compiled: the extension, the ray-cone, ray-differential
+/// and wireframe modules, the shader.
 pub fn ray_query_source() -> String {
     format!(
-        "enable wgpu_ray_query;\n{RAY_CONE_WGSL}\n{}",
+        "enable wgpu_ray_query;\n{}\n{}",
+        wgsl_prelude(&MODULES),
         include_str!("shaders/ray_query.wgsl")
     )
 }
@@ -29,8 +34,8 @@ fn stages() -> vk::ShaderStageFlags {
         | vk::ShaderStageFlags::COMPUTE
 }
 
-/// The descriptor types of bindings 0 to 6 (see `rt_common.glsl`) and their counts.
-pub(super) const BINDINGS: [(vk::DescriptorType, u32); 7] = [
+/// The descriptor types of bindings 0 to 7 (see `rt_common.glsl`) and their counts.
+pub(super) const BINDINGS: [(vk::DescriptorType, u32); 8] = [
     (vk::DescriptorType::ACCELERATION_STRUCTURE_KHR, 1),
     (vk::DescriptorType::STORAGE_BUFFER, 1),
     (vk::DescriptorType::STORAGE_BUFFER, 1),
@@ -38,6 +43,7 @@ pub(super) const BINDINGS: [(vk::DescriptorType, u32); 7] = [
     (vk::DescriptorType::STORAGE_BUFFER, 1),
     (vk::DescriptorType::STORAGE_BUFFER, 1),
     (vk::DescriptorType::COMBINED_IMAGE_SAMPLER, 2),
+    (vk::DescriptorType::UNIFORM_BUFFER, 1),
 ];
 
 /// The descriptor-set layout of [`BINDINGS`] and a pipeline layout with it and the push constants.
@@ -300,10 +306,13 @@ fn compile_glsl(path: &Path) -> Result<Vec<u32>, GpuError> {
         .collect())
 }
 
-/// Compiles WGSL with naga: the ray-cone module's capabilities plus ray queries and push
+/// Compiles WGSL with naga: the library modules' capabilities plus ray queries and push
 /// constants (`var<immediate>`), SPIR-V 1.4.
 fn compile_wgsl(source: &str) -> Result<Vec<u32>, GpuError> {
-    let capabilities = naga_capabilities(Module::RayCone)
+    let capabilities = MODULES
+        .into_iter()
+        .map(naga_capabilities)
+        .fold(naga::valid::Capabilities::empty(), |all, one| all | one)
         | naga::valid::Capabilities::RAY_QUERY
         | naga::valid::Capabilities::IMMEDIATES;
     let module = naga::front::wgsl::parse_str(source)

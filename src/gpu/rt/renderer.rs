@@ -7,7 +7,7 @@ use super::mode::Mode;
 use super::pipeline::{self, RayTracing, BINDINGS};
 use super::scene::{Camera, Scene};
 use super::texture::{checker, mip_colours, CHECKER_SQUARE, TEXTURE_SIZE};
-use crate::abi::{RtPixelRecord, RtPushConstants};
+use crate::abi::{RtPixelRecord, RtPushConstants, RtUniforms};
 use crate::gpu::device::{vulkan, Gpu, GpuError};
 use ash::vk;
 use std::time::{Duration, Instant};
@@ -72,7 +72,7 @@ impl<'g> Renderer<'g> {
             owner.texture(&checker(TEXTURE_SIZE, CHECKER_SQUARE))?,
             owner.texture(&mip_colours(TEXTURE_SIZE))?,
         ];
-        let sampler = trilinear_sampler(&mut owner)?;
+        let sampler = sampler(&mut owner, anisotropy(gpu))?;
         let (set_layout, layout) = pipeline::layouts(&mut owner)?;
         let ray_tracing = pipeline::ray_tracing(&mut owner, layout)?;
         let ray_query = pipeline::ray_query(&mut owner, layout)?;
@@ -108,35 +108,63 @@ impl<'g> Renderer<'g> {
         camera.push_constants(mode.id(), tex_grad_scale, (width, height), TEXTURE_SIZE)
     }
 
-    /// Traces a frame with the GLSL ray-tracing pipeline: colours and records.
+    /// The maximum anisotropy of the texture sampler: `min(16, maxSamplerAnisotropy)` where the
+    /// device has `samplerAnisotropy`, else `None` (plain trilinear filtering).
+    pub fn anisotropy(&self) -> Option<f32> {
+        anisotropy(self.owner.gpu)
+    }
+
+    /// Traces a frame with the GLSL ray-tracing pipeline: colours and records. Fails with
+    /// [`GpuError::FrameTooLarge`] above [`Renderer::max_pixels`].
     ///
     /// # Panics
     /// If `push.width` or `push.height` is 0.
-    pub fn render(&self, push: &RtPushConstants) -> Result<Frame, GpuError> {
-        self.trace(push, Path::RayTracing)
+    pub fn render(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, GpuError> {
+        self.trace(push, uniforms, Path::RayTracing)
     }
 
     /// Traces the primary rays of a frame with the WGSL ray-query compute shader: records only
-    /// (the frame's pixels are zero).
+    /// (the frame's pixels are zero). Fails as [`Renderer::render`] does.
     ///
     /// # Panics
     /// If `push.width` or `push.height` is 0.
-    pub fn trace_wgsl(&self, push: &RtPushConstants) -> Result<Frame, GpuError> {
-        self.trace(push, Path::RayQuery)
+    pub fn trace_wgsl(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, GpuError> {
+        self.trace(push, uniforms, Path::RayQuery)
     }
 
-    fn trace(&self, push: &RtPushConstants, path: Path) -> Result<Frame, GpuError> {
+    /// The most pixels a frame may have: the device's `maxStorageBufferRange` over the size of a
+    /// pixel record.
+    pub fn max_pixels(&self) -> u64 {
+        let gpu = self.owner.gpu;
+        // SAFETY: a plain query.
+        let limits = unsafe { gpu.instance.get_physical_device_properties(gpu.physical) }.limits;
+        u64::from(limits.max_storage_buffer_range) / std::mem::size_of::<RtPixelRecord>() as u64
+    }
+
+    fn trace(&self, push: &RtPushConstants, uniforms: &RtUniforms, path: Path) -> Result<Frame, GpuError> {
         assert!(
             push.width > 0 && push.height > 0,
             "an image needs at least one pixel"
         );
-        let mut frame = Owner::new(self.owner.gpu);
         let pixels = push.width as usize * push.height as usize;
+        let max = self.max_pixels();
+        if pixels as u64 > max {
+            return Err(GpuError::FrameTooLarge {
+                pixels: pixels as u64,
+                max,
+            });
+        }
+        let mut frame = Owner::new(self.owner.gpu);
         let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
         let record_bytes = std::mem::size_of::<RtPixelRecord>();
         let records = frame.buffer((pixels * record_bytes) as u64, storage, Location::Host, 1)?;
         let colours = frame.buffer((pixels * 4) as u64, storage, Location::Host, 1)?;
-        let set = self.descriptor_set(&mut frame, &records, &colours)?;
+        let uniforms = frame.upload(
+            bytemuck::bytes_of(uniforms),
+            vk::BufferUsageFlags::UNIFORM_BUFFER,
+            16,
+        )?;
+        let set = self.descriptor_set(&mut frame, [&records, &colours, &uniforms])?;
         let started = Instant::now();
         frame.submit(|device, command_buffer| self.record(device, command_buffer, set, push, path))?;
         let trace_time = started.elapsed();
@@ -149,13 +177,12 @@ impl<'g> Renderer<'g> {
         })
     }
 
-    /// A descriptor set (from a pool `frame` owns) binding the scene, the output buffers and the
-    /// textures as `rt_common.glsl` declares them.
+    /// A descriptor set (from a pool `frame` owns) binding the scene, the per-frame buffers
+    /// (records, colours, uniforms) and the textures as `rt_common.glsl` declares them.
     fn descriptor_set(
         &self,
         frame: &mut Owner<'_>,
-        records: &Buffer,
-        colours: &Buffer,
+        [records, colours, uniforms]: [&Buffer; 3],
     ) -> Result<vk::DescriptorSet, GpuError> {
         let sizes: Vec<_> = BINDINGS
             .iter()
@@ -190,6 +217,7 @@ impl<'g> Renderer<'g> {
             &self.inputs[2],
             records,
             colours,
+            uniforms,
         ]
         .map(|b| {
             [vk::DescriptorBufferInfo::default()
@@ -212,6 +240,7 @@ impl<'g> Renderer<'g> {
         writes[0].descriptor_count = 1;
         writes.extend((1..=5).map(|binding| write(binding).buffer_info(&buffers[binding - 1])));
         writes.push(write(6).image_info(&images));
+        writes.push(write(7).buffer_info(&buffers[5]));
         // SAFETY: every write matches the layout's binding types and counts.
         unsafe { frame.device().update_descriptor_sets(&writes, &[]) };
         Ok(set)
@@ -269,10 +298,22 @@ impl<'g> Renderer<'g> {
     }
 }
 
-/// Trilinear filtering, repeating, every level reachable: `maxLod = VK_LOD_CLAMP_NONE`. With the
-/// default `maxLod = 0` every level of detail silently samples mip 0.
-fn trilinear_sampler(owner: &mut Owner<'_>) -> Result<vk::Sampler, GpuError> {
+/// Largest anisotropy the renderer asks for: 16 samples along the footprint's long axis.
+const MAX_ANISOTROPY: f32 = 16.0;
+
+/// The sampler's maximum anisotropy on `gpu` (see [`Renderer::anisotropy`]).
+fn anisotropy(gpu: &Gpu) -> Option<f32> {
+    gpu.max_sampler_anisotropy().map(|max| max.min(MAX_ANISOTROPY))
+}
+
+/// Trilinear filtering, anisotropic up to `anisotropy` when given, repeating, every level
+/// reachable: `maxLod = VK_LOD_CLAMP_NONE`. With the default `maxLod = 0` every level of detail
+/// silently samples mip 0. Anisotropy only changes `textureGrad` with anisotropic gradients: an
+/// explicit LOD (`textureLod`) and isotropic gradients sample as plain trilinear.
+fn sampler(owner: &mut Owner<'_>, anisotropy: Option<f32>) -> Result<vk::Sampler, GpuError> {
     let info = vk::SamplerCreateInfo::default()
+        .anisotropy_enable(anisotropy.is_some())
+        .max_anisotropy(anisotropy.unwrap_or(1.0))
         .mag_filter(vk::Filter::LINEAR)
         .min_filter(vk::Filter::LINEAR)
         .mipmap_mode(vk::SamplerMipmapMode::LINEAR)

@@ -3,9 +3,10 @@
 //! Meshes are in world space (every instance transform is the identity), so the Rust side can
 //! look up the exact vertices a hit refers to and recompute what the shaders computed.
 
-use crate::abi::{RayConePushConstants, RtPushConstants};
+use crate::abi::{RayConePushConstants, RtPushConstants, RtUniforms, WireframePushConstants};
 use crate::ray_cone;
-use glam::{Vec2, Vec3};
+use crate::wireframe::WireframeSettings;
+use glam::{Mat4, Vec2, Vec3, Vec4};
 use std::f32::consts::{PI, TAU};
 
 /// Floats per vertex in the vertex buffer: position xyz, u, normal xyz, v (the shaders' layout).
@@ -208,6 +209,13 @@ impl Scene {
     }
 }
 
+/// Colour of the wireframe lines (RGBA): orange, visible on both checker colours.
+pub const WIRE_COLOUR: Vec4 = Vec4::new(1.0, 0.45, 0.05, 1.0);
+
+/// Near and far planes of the projection in [`Camera::uniforms`]. Only its inverse's directions
+/// are used, which do not depend on them.
+const CLIP_PLANES: (f32, f32) = (0.01, 1000.0);
+
 /// A pinhole camera.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
@@ -240,6 +248,23 @@ impl Camera {
         }
     }
 
+    /// A narrow view of the top of the torus, its silhouette against the ground and the sky in
+    /// the upper part: its quads are about 30 pixels wide in a 480 x 270 image (the wireframe view).
+    pub fn torus() -> Camera {
+        Camera {
+            eye: Vec3::new(-1.1, 2.25, -1.65),
+            target: Vec3::new(-1.5, 2.17, -2.5),
+            fov_y: 16f32.to_radians(),
+        }
+    }
+
+    /// The orthonormal basis: forward (viewing direction), right (= forward x +y) and up.
+    fn basis(&self) -> (Vec3, Vec3, Vec3) {
+        let forward = (self.target - self.eye).normalize();
+        let right = forward.cross(Vec3::Y).normalize();
+        (forward, right, right.cross(forward))
+    }
+
     /// The renderer's push constants for this camera: orthonormal basis (right = forward x +y),
     /// and the exact pixel spread angle (RTG Eq. 30) for an image `height` pixels tall.
     pub fn push_constants(
@@ -250,14 +275,13 @@ impl Camera {
         texture_size: u32,
     ) -> RtPushConstants {
         let (width, height) = view;
-        let forward = (self.target - self.eye).normalize();
-        let right = forward.cross(Vec3::Y).normalize();
+        let (forward, right, up) = self.basis();
         RtPushConstants {
             eye: self.eye,
             tan_half_fov_y: (0.5 * self.fov_y).tan(),
             right,
             aspect: width as f32 / height as f32,
-            up: right.cross(forward),
+            up,
             texture_size: texture_size as f32,
             forward,
             mode,
@@ -267,6 +291,32 @@ impl Camera {
             },
             width,
             height,
+        }
+    }
+
+    /// The renderer's per-frame uniforms for this camera on a `view` = (width, height) image:
+    /// the camera-to-world matrix of the same basis (the view axis points back to the camera),
+    /// the inverse of a Vulkan-style (y-down) perspective projection with the same field of view
+    /// and aspect ratio, so the matrix functions of `ray_diff` see the rays the renderer traces;
+    /// and the wireframe `settings` in [`WIRE_COLOUR`].
+    pub fn uniforms(&self, view: (u32, u32), settings: WireframeSettings) -> RtUniforms {
+        let (forward, right, up) = self.basis();
+        let view_inv = Mat4::from_cols(
+            right.extend(0.0),
+            up.extend(0.0),
+            (-forward).extend(0.0),
+            self.eye.extend(1.0),
+        );
+        let aspect = view.0 as f32 / view.1 as f32;
+        let (near, far) = CLIP_PLANES;
+        let projection = glam::camera::rh::proj::vulkan::perspective(self.fov_y, aspect, near, far);
+        RtUniforms {
+            view_inv,
+            proj_inv: projection.inverse(),
+            wireframe: WireframePushConstants {
+                colour: WIRE_COLOUR,
+                settings: settings.pack(),
+            },
         }
     }
 }

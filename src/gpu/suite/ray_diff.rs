@@ -405,7 +405,8 @@ fn b_matrix_ray_direction(ndc: V2, view_inv: Mat4, proj_inv: Mat4) -> V3 {
     mat_vec(view_inv, b_safe_normalize(far_point), I::c(0.0), F32)
 }
 
-type Matrices = (Vec2, Vec2, Mat4, Mat4);
+/// The arguments of the matrix camera functions: pixel, image size, view_inv, proj_inv.
+pub type Matrices = (Vec2, Vec2, Mat4, Mat4);
 
 fn b_eye_ray_direction_from_matrices(&(pixel, size, view_inv, proj_inv): &Matrices) -> V3 {
     b_matrix_ray_direction(b_pixel_ndc(pixel, size), view_inv, proj_inv)
@@ -464,7 +465,8 @@ fn b_barycentric_quotient(numerator: I, k: I) -> I {
         .clamp_c(-max, max)
 }
 
-type BarycentricArgs = (RayDiff, Vec3, f32, Vec3, Vec3, Vec3);
+/// The arguments of `barycentric_derivatives`: differential, direction, t, the triangle.
+pub type BarycentricArgs = (RayDiff, Vec3, f32, Vec3, Vec3, Vec3);
 
 fn b_barycentric_derivatives(&(diff, direction, t, p0, p1, p2): &BarycentricArgs) -> Vec<I> {
     let d = v3(direction);
@@ -728,6 +730,140 @@ fn matrices() -> BoxedStrategy<Matrices> {
         .boxed()
 }
 
+/// `rf_eye_ray_diff_from_matrices`: the enclosure of every component.
+pub fn eye_ray_diff_from_matrices() -> FunctionCheck<Matrices, RayDiff> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "eye_ray_diff_from_matrices",
+        strategy: matrices,
+        mirror: |(pixel, size, view_inv, proj_inv)| {
+            rd::eye_ray_diff_from_matrices(pixel, size, view_inv, proj_inv)
+        },
+        tolerance: |a, i, _| component(b_eye_ray_diff_from_matrices(a), i),
+    }
+}
+
+/// `rf_pixel_directions`: the enclosure of both directions.
+pub fn pixel_directions() -> FunctionCheck<Matrices, NeighbourDirections> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "pixel_directions",
+        strategy: matrices,
+        mirror: |(pixel, size, view_inv, proj_inv)| rd::pixel_directions(pixel, size, view_inv, proj_inv),
+        tolerance: |a, i, _| component(b_pixel_directions(a), i),
+    }
+}
+
+/// `rf_barycentric_derivatives`: the enclosure of the four derivatives.
+pub fn barycentric_derivatives() -> FunctionCheck<BarycentricArgs, Derivatives2> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "barycentric_derivatives",
+        strategy: || {
+            (ray_diff(), any_direction(), distance(), triangle())
+                .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
+                .boxed()
+        },
+        mirror: |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
+        tolerance: |a, i, _| component(b_barycentric_derivatives(a), i),
+    }
+}
+
+/// `rf_texture_derivatives`: the enclosure of the UV gradients.
+pub fn texture_derivatives() -> FunctionCheck<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "texture_derivatives",
+        strategy: || {
+            (derivatives2(), uv_triangle())
+                .prop_map(|(b, t)| (b, t[0], t[1], t[2]))
+                .boxed()
+        },
+        mirror: |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
+        tolerance: |&(b, t0, t1, t2), i, _| {
+            let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
+            component(b_derivatives2(dx, dy), i)
+        },
+    }
+}
+
+/// `rf_lod_isotropic`: the enclosure of the LOD.
+pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "lod_isotropic",
+        strategy: || derivatives2().prop_map(|g| (g,)).boxed(),
+        mirror: |(g,)| rd::lod_isotropic(g),
+        tolerance: |&(g,), _, _| b_lod_isotropic(g).tolerance(),
+    }
+}
+
+/// `rf_barycentric_offsets`: the enclosure of the signed differences.
+pub fn barycentric_offsets() -> FunctionCheck<OffsetArgs, Derivatives3> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "barycentric_offsets",
+        strategy: || offset_args(F32_ORIGIN_EXPONENT),
+        // Where a neighbour ray is parallel to the triangle plane within rounding (its determinant
+        // `k` encloses 0), the device and the mirror may clamp to opposite +-DIFF_MAX_VALUE, and
+        // the enclosure (clamped to that range) is 2 * DIFF_MAX_VALUE wide: either side is right.
+        // Elsewhere the enclosure is tight. Origins stay below 1e5 (`F32_ORIGIN_EXPONENT`), where
+        // `O + direction` keeps the direction; beyond, the ray_diff_f64 module is the tool.
+        mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_offsets(m, o, p0, p1, p2, x, y, b),
+        tolerance: |a, i, _| {
+            let (dx, dy) = b_barycentric_offsets(a);
+            component(b_derivatives3(dx, dy), i)
+        },
+    }
+}
+
+/// `rf_barycentric_deltas`: the enclosure of the deltas.
+pub fn barycentric_deltas() -> FunctionCheck<OffsetArgs, Vec3> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "barycentric_deltas",
+        strategy: || offset_args(F32_ORIGIN_EXPONENT),
+        mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
+        tolerance: |a, i, _| {
+            let (dx, dy) = b_barycentric_offsets(a);
+            component((dx.abs() + dy.abs()).components(), i)
+        },
+    }
+}
+
+/// `rf_uv_gradients_from_offsets`: the enclosure of the UV gradients.
+pub fn uv_gradients_from_offsets() -> FunctionCheck<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "uv_gradients_from_offsets",
+        strategy: || {
+            (derivatives3(), uv_triangle())
+                .prop_map(|(o, uv)| (o, uv[0], uv[1], uv[2]))
+                .boxed()
+        },
+        mirror: |(o, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(o, uv0, uv1, uv2),
+        tolerance: |&(o, uv0, uv1, uv2), i, _| {
+            let sum = |w: Vec3| v2(uv0) * s(w.x) + v2(uv1) * s(w.y) + v2(uv2) * s(w.z);
+            component(b_derivatives2(sum(o.dx), sum(o.dy)), i)
+        },
+    }
+}
+
+/// `rf_cone_barycentric_deltas`: the enclosure of the deltas.
+pub fn cone_barycentric_deltas() -> FunctionCheck<(f32, Vec3, Vec3, Vec3), Vec3> {
+    FunctionCheck {
+        module: Module::RayDiff,
+        function: "cone_barycentric_deltas",
+        strategy: || {
+            (scalar(), triangle())
+                .prop_map(|(f, p)| (f, p[0], p[1], p[2]))
+                .boxed()
+        },
+        mirror: |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
+        tolerance: |a, i, _| component(b_cone_barycentric_deltas(a), i),
+    }
+}
+
 /// Every check of the module.
 pub fn checks() -> Vec<Box<dyn Check>> {
     vec![
@@ -761,22 +897,8 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             },
             tolerance: |a, i, _| component(b_eye_ray_direction_from_matrices(a).components(), i),
         }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "eye_ray_diff_from_matrices",
-            strategy: matrices,
-            mirror: |(pixel, size, view_inv, proj_inv)| {
-                rd::eye_ray_diff_from_matrices(pixel, size, view_inv, proj_inv)
-            },
-            tolerance: |a, i, _| component(b_eye_ray_diff_from_matrices(a), i),
-        }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "pixel_directions",
-            strategy: matrices,
-            mirror: |(pixel, size, view_inv, proj_inv)| rd::pixel_directions(pixel, size, view_inv, proj_inv),
-            tolerance: |a, i, _| component(b_pixel_directions(a), i),
-        }),
+        Box::new(eye_ray_diff_from_matrices()),
+        Box::new(pixel_directions()),
         Box::new(FunctionCheck {
             module: Module::RayDiff,
             function: "transfer",
@@ -788,17 +910,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             mirror: |(diff, direction, t, normal)| rd::transfer(diff, direction, t, normal),
             tolerance: |a, i, _| component(b_transfer(a), i),
         }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "barycentric_derivatives",
-            strategy: || {
-                (ray_diff(), any_direction(), distance(), triangle())
-                    .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
-                    .boxed()
-            },
-            mirror: |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
-            tolerance: |a, i, _| component(b_barycentric_derivatives(a), i),
-        }),
+        Box::new(barycentric_derivatives()),
         Box::new(FunctionCheck {
             module: Module::RayDiff,
             function: "barycentric_w_derivatives",
@@ -809,20 +921,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
                 component(vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]], i)
             },
         }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "texture_derivatives",
-            strategy: || {
-                (derivatives2(), uv_triangle())
-                    .prop_map(|(b, t)| (b, t[0], t[1], t[2]))
-                    .boxed()
-            },
-            mirror: |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
-            tolerance: |&(b, t0, t1, t2), i, _| {
-                let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
-                component(b_derivatives2(dx, dy), i)
-            },
-        }),
+        Box::new(texture_derivatives()),
         Box::new(FunctionCheck {
             module: Module::RayDiff,
             function: "texel_derivatives",
@@ -849,13 +948,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             mirror: |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
             tolerance: |a, i, _| component(b_secondary_origin_derivatives(a), i),
         }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "lod_isotropic",
-            strategy: || derivatives2().prop_map(|g| (g,)).boxed(),
-            mirror: |(g,)| rd::lod_isotropic(g),
-            tolerance: |&(g,), _, _| b_lod_isotropic(g).tolerance(),
-        }),
+        Box::new(lod_isotropic()),
         Box::new(FunctionCheck {
             module: Module::RayDiff,
             function: "lod_box",
@@ -1002,55 +1095,9 @@ pub fn checks() -> Vec<Box<dyn Check>> {
                 )
             },
         }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "barycentric_offsets",
-            strategy: || offset_args(F32_ORIGIN_EXPONENT),
-            // When |O| is large, `O + direction` loses the direction in f32 and the neighbour ray is
-            // rounding noise whose sign may differ between the device and the mirror (the order of
-            // the matrix product is theirs): both may clamp to opposite +-DIFF_MAX_VALUE, and the
-            // enclosure (clamped to that range) is then 2 * DIFF_MAX_VALUE wide. This is the f32
-            // weakness that the ray_diff_f64 module removes.
-            mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_offsets(m, o, p0, p1, p2, x, y, b),
-            tolerance: |a, i, _| {
-                let (dx, dy) = b_barycentric_offsets(a);
-                component(b_derivatives3(dx, dy), i)
-            },
-        }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "barycentric_deltas",
-            strategy: || offset_args(F32_ORIGIN_EXPONENT),
-            mirror: |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
-            tolerance: |a, i, _| {
-                let (dx, dy) = b_barycentric_offsets(a);
-                component((dx.abs() + dy.abs()).components(), i)
-            },
-        }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "uv_gradients_from_offsets",
-            strategy: || {
-                (derivatives3(), uv_triangle())
-                    .prop_map(|(o, uv)| (o, uv[0], uv[1], uv[2]))
-                    .boxed()
-            },
-            mirror: |(o, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(o, uv0, uv1, uv2),
-            tolerance: |&(o, uv0, uv1, uv2), i, _| {
-                let sum = |w: Vec3| v2(uv0) * s(w.x) + v2(uv1) * s(w.y) + v2(uv2) * s(w.z);
-                component(b_derivatives2(sum(o.dx), sum(o.dy)), i)
-            },
-        }),
-        Box::new(FunctionCheck {
-            module: Module::RayDiff,
-            function: "cone_barycentric_deltas",
-            strategy: || {
-                (scalar(), triangle())
-                    .prop_map(|(f, p)| (f, p[0], p[1], p[2]))
-                    .boxed()
-            },
-            mirror: |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
-            tolerance: |a, i, _| component(b_cone_barycentric_deltas(a), i),
-        }),
+        Box::new(barycentric_offsets()),
+        Box::new(barycentric_deltas()),
+        Box::new(uv_gradients_from_offsets()),
+        Box::new(cone_barycentric_deltas()),
     ]
 }

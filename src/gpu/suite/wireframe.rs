@@ -394,6 +394,21 @@ fn process_wireframe_error(settings: WireframeSettings, b: Vec3, deltas: Vec3) -
     line_width_error(pixel_deltas, half_width, half_width_error, ramp_width, b)
 }
 
+/// `rf_process_wireframe`: the coverage error derived in `process_wireframe_error`.
+pub fn process_wireframe() -> FunctionCheck<(WireframeSettings, Vec3, Vec3), f32> {
+    FunctionCheck {
+        module: Module::Wireframe,
+        function: "process_wireframe",
+        strategy: || {
+            (settings(), hit())
+                .prop_map(|(settings, (b, d))| (settings, b, d))
+                .boxed()
+        },
+        mirror: |(settings, b, d)| wf::process_wireframe(settings, b, d),
+        tolerance: |&(settings, b, d), _, _| process_wireframe_error(settings, b, d),
+    }
+}
+
 /// Every check of the module.
 pub fn checks() -> Vec<Box<dyn Check>> {
     vec![
@@ -482,16 +497,6 @@ pub fn checks() -> Vec<Box<dyn Check>> {
                 line_width_error(d, thickness, 0.0, smoothing, b)
             },
         }),
-        Box::new(FunctionCheck {
-            module: Module::Wireframe,
-            function: "process_wireframe",
-            strategy: || {
-                (settings(), hit())
-                    .prop_map(|(settings, (b, d))| (settings, b, d))
-                    .boxed()
-            },
-            mirror: |(settings, b, d)| wf::process_wireframe(settings, b, d),
-            tolerance: |&(settings, b, d), _, _| process_wireframe_error(settings, b, d),
-        }),
+        Box::new(process_wireframe()),
     ]
 }

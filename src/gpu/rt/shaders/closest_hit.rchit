@@ -1,7 +1,9 @@
-// Closest hit: measures the ray-cone values at the hit with the library module (rt_measure),
+// Closest hit: measures the ray-cone values at the hit with the library module (rt_measure), and
+// on a primary hit the ray-differential, re-intersection and wireframe values (rt_measure_diff);
 // records them for primary rays, then shades: textured meshes sample the texture as the mode
-// says; the mirror traces a reflected ray whose cone leaves the hit by RTG Eq. 35, widened by the
-// curvature spread angle only in RT_MODE_CONE_CURVATURE (otherwise as off a planar mirror).
+// says, under the wireframe in RT_MODE_WIREFRAME (seen in the mirror, with the closed-form cone
+// deltas); the mirror traces a reflected ray whose cone leaves the hit by RTG Eq. 35, widened by
+// the curvature spread angle only in RT_MODE_CONE_CURVATURE (otherwise as off a planar mirror).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "rt_common.glsl"
@@ -20,10 +22,17 @@ void main() {
     RtPixelRecord record = rt_measure(tri, rt_hit_barycentrics, gl_HitTEXT, direction, payload.cone);
     record.instance = mesh;
     record.primitive = gl_PrimitiveID;
-    if (payload.depth == 0u) {
+    bool primary = payload.depth == 0u;
+    vec3 w = rt_weights(rt_hit_barycentrics);
+    if (primary) {
+        record.diff = rt_measure_diff(tri, rt_hit_barycentrics, gl_HitTEXT, gl_WorldRayOriginEXT, direction,
+            mat4(gl_WorldToObjectEXT), gl_LaunchIDEXT.xy, record.footprint);
         rt_records[gl_LaunchIDEXT.y * gl_LaunchSizeEXT.x + gl_LaunchIDEXT.x] = record;
+    } else {
+        vec3 deltas = rf_cone_barycentric_deltas(record.footprint, tri.p[0], tri.p[1], tri.p[2]);
+        record.diff = rt_diff_record(deltas, rt_coverage(w, deltas));
     }
-    if (rt_meshes[3u * mesh + 2u] == RT_MATERIAL_MIRROR && payload.depth == 0u) {
+    if (rt_meshes[3u * mesh + 2u] == RT_MATERIAL_MIRROR && primary) {
         float spread = pc.mode == RT_MODE_CONE_CURVATURE ? record.curvature_spread : 0.0;
         reflected = RfHitPayload(vec3(0.0), payload.weight * 0.9, rf_propagate(payload.cone, gl_HitTEXT, spread),
             payload.depth + 1u, 0u);
@@ -33,8 +42,11 @@ void main() {
         payload.colour = reflected.colour;
         return;
     }
-    vec3 w = rt_weights(rt_hit_barycentrics);
     vec2 uv = w.x * tri.uv[0] + w.y * tri.uv[1] + w.z * tri.uv[2];
     float light = 0.35 + 0.65 * max(dot(record.normal, normalize(RT_LIGHT)), 0.0);
-    payload.colour = payload.weight * light * rt_texture_colour(record, uv);
+    vec3 colour = light * rt_texture_colour(record, uv, primary);
+    if (pc.mode == RT_MODE_WIREFRAME) {
+        colour = mix(colour, rt_frame.wireframe.colour.rgb, record.diff.coverage);
+    }
+    payload.colour = payload.weight * colour;
 }

@@ -1,10 +1,11 @@
 // ray-footprint ray-tracing renderer, WGSL path: a compute shader that traces each pixel's primary
 // ray with a ray query (naga's `wgpu_ray_query`) over the renderer's acceleration structures and
 // records the same per-pixel values as the GLSL closest-hit shader (rt_common.glsl), computed with
-// the WGSL ray_cone module. naga gives no barycentrics to a WGSL closest-hit shader yet; a ray
-// query's committed intersection has them.
+// the WGSL ray_cone, ray_diff and wireframe modules. naga gives no barycentrics to a WGSL
+// closest-hit shader yet; a ray query's committed intersection has them.
 //
-// The renderer compiles `enable wgpu_ray_query;`, then shaders/wgsl/ray_cone.wgsl, then this file.
+// The renderer compiles `enable wgpu_ray_query;`, then shaders/wgsl/ray_cone.wgsl, ray_diff.wgsl
+// and wireframe.wgsl, then this file.
 
 // Floats per vertex: position xyz, u, normal xyz, v (VERTEX_FLOATS in scene.rs).
 const RT_VERTEX_FLOATS: u32 = 8u;
@@ -26,7 +27,34 @@ struct RtPushConstants {
     height: u32,
 }
 
-// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 96 bytes).
+// The ray-differential, re-intersection and wireframe values of a primary hit (Rust mirror:
+// ray_footprint::abi::RtDiffRecord, 176 bytes; the field docs are there).
+struct RtDiffRecord {
+    eye_d_direction_dx: vec3<f32>,
+    lod: f32,
+    eye_d_direction_dy: vec3<f32>,
+    offset_lod: f32,
+    barycentric_dx: vec2<f32>,
+    barycentric_dy: vec2<f32>,
+    uv_dx: vec2<f32>,
+    uv_dy: vec2<f32>,
+    neighbour_right: vec3<f32>,
+    coverage: f32,
+    neighbour_below: vec3<f32>,
+    pad0: u32,
+    offset_dx: vec3<f32>,
+    pad1: u32,
+    offset_dy: vec3<f32>,
+    pad2: u32,
+    offset_uv_dx: vec2<f32>,
+    offset_uv_dy: vec2<f32>,
+    deltas: vec3<f32>,
+    pad3: u32,
+    cone_deltas: vec3<f32>,
+    pad4: u32,
+}
+
+// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 272 bytes).
 struct RtPixelRecord {
     normal: vec3<f32>,
     t: f32,
@@ -45,6 +73,15 @@ struct RtPixelRecord {
     curvature: f32,
     curvature_spread: f32,
     reflected: RfRayCone,
+    diff: RtDiffRecord,
+}
+
+// Per-frame uniforms (Rust mirror: ray_footprint::abi::RtUniforms, 176 bytes): inverse view and
+// projection matrices, wireframe colour and settings.
+struct RtUniforms {
+    view_inv: mat4x4<f32>,
+    proj_inv: mat4x4<f32>,
+    wireframe: RfWireframePushConstants,
 }
 
 // A triangle's vertices.
@@ -60,6 +97,7 @@ var<immediate> pc: RtPushConstants;
 @group(0) @binding(2) var<storage, read> rt_indices: array<u32>;
 @group(0) @binding(3) var<storage, read> rt_meshes: array<u32>;
 @group(0) @binding(4) var<storage, read_write> rt_records: array<RtPixelRecord>;
+@group(0) @binding(7) var<uniform> rt_frame: RtUniforms;
 
 // Triangle `primitive` of mesh `mesh`, from the vertex, index and mesh-table buffers.
 fn rt_triangle(mesh: u32, primitive: u32) -> RtTriangle {
@@ -100,7 +138,40 @@ fn rt_measure(tri: RtTriangle, barycentrics: vec2<f32>, t: f32, direction: vec3<
     let curvature = rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
     let spread = rf_curvature_spread_angle(curvature, width, normal, direction);
     return RtPixelRecord(normal, t, direction, 0u, barycentrics, 0u, 1u, cone, width, footprint,
-        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread));
+        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread), RtDiffRecord());
+}
+
+// The isotropic LOD (RTG Eq. 1-2) of UV gradients scaled to texels (the size is a power of two).
+fn rt_texel_lod(uv: RfDerivatives2) -> f32 {
+    return rf_lod_isotropic(RfDerivatives2(uv.dx * pc.texture_size, uv.dy * pc.texture_size));
+}
+
+// The ray-differential and wireframe values of a primary hit (the twin of rt_measure_diff in
+// rt_common.glsl).
+fn rt_measure_diff(tri: RtTriangle, barycentrics: vec2<f32>, t: f32, origin: vec3<f32>, direction: vec3<f32>,
+        world_to_object: mat4x4<f32>, pixel: vec2<u32>, footprint: f32) -> RtDiffRecord {
+    let xy = vec2<f32>(pixel);
+    let size = vec2<f32>(f32(pc.width), f32(pc.height));
+    let eye = rf_eye_ray_diff_from_matrices(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
+    let bary = rf_barycentric_derivatives(eye, direction, t, tri.p[0], tri.p[1], tri.p[2]);
+    let uv = rf_texture_derivatives(bary, tri.uv[0], tri.uv[1], tri.uv[2]);
+    let next = rf_pixel_directions(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
+    let w = rt_weights(barycentrics);
+    let offsets = rf_barycentric_offsets(world_to_object, origin, tri.p[0], tri.p[1], tri.p[2], next.right,
+        next.below, w);
+    let offset_uv = rf_uv_gradients_from_offsets(offsets, tri.uv[0], tri.uv[1], tri.uv[2]);
+    let deltas = rf_barycentric_deltas(world_to_object, origin, tri.p[0], tri.p[1], tri.p[2], next.right,
+        next.below, w);
+    let coverage = rf_process_wireframe(rf_unpack_wireframe_settings(rt_frame.wireframe.settings), w, deltas);
+    return RtDiffRecord(eye.d_direction_dx, rt_texel_lod(uv), eye.d_direction_dy, rt_texel_lod(offset_uv),
+        bary.dx, bary.dy, uv.dx, uv.dy, next.right, coverage, next.below, 0u, offsets.dx, 0u, offsets.dy, 0u,
+        offset_uv.dx, offset_uv.dy, deltas, 0u, rf_cone_barycentric_deltas(footprint, tri.p[0], tri.p[1], tri.p[2]),
+        0u);
+}
+
+// A 4x3 matrix as a 4x4 one with the last row (0, 0, 0, 1), like GLSL's mat4(mat4x3).
+fn rt_mat4(m: mat4x3<f32>) -> mat4x4<f32> {
+    return mat4x4<f32>(vec4<f32>(m[0], 0.0), vec4<f32>(m[1], 0.0), vec4<f32>(m[2], 0.0), vec4<f32>(m[3], 1.0));
 }
 
 @compute @workgroup_size(8, 8)
@@ -114,13 +185,16 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     rayQueryInitialize(&query, rt_scene, RayDesc(RAY_FLAG_FORCE_OPAQUE, 0xffu, 0.0, RT_MAX_DISTANCE, pc.eye, direction));
     while rayQueryProceed(&query) {}
     let hit = rayQueryGetCommittedIntersection(&query);
-    var record = RtPixelRecord(vec3<f32>(0.0), 0.0, direction, 0u, vec2<f32>(0.0), 0u, 0u, cone, 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, RfRayCone(0.0, 0.0));
+    var record = RtPixelRecord();
+    record.direction = direction;
+    record.cone = cone;
     if hit.kind == RAY_QUERY_INTERSECTION_TRIANGLE {
-        record = rt_measure(rt_triangle(hit.instance_custom_data, hit.primitive_index), hit.barycentrics,
-            hit.t, direction, cone);
+        let tri = rt_triangle(hit.instance_custom_data, hit.primitive_index);
+        record = rt_measure(tri, hit.barycentrics, hit.t, direction, cone);
         record.instance = hit.instance_custom_data;
         record.primitive = hit.primitive_index;
+        record.diff = rt_measure_diff(tri, hit.barycentrics, hit.t, pc.eye, direction, rt_mat4(hit.world_to_object),
+            id.xy, record.footprint);
     }
     rt_records[id.y * pc.width + id.x] = record;
 }

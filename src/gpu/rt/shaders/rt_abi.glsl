@@ -5,6 +5,7 @@
 #define RT_ABI_GLSL
 
 #include "ray_cone.glsl"
+#include "wireframe.glsl"
 
 // Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 80 bytes).
 struct RtPushConstants {
@@ -21,7 +22,34 @@ struct RtPushConstants {
     uint height;
 };
 
-// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 96 bytes).
+// The ray-differential, re-intersection and wireframe values of a primary hit (Rust mirror:
+// ray_footprint::abi::RtDiffRecord, 176 bytes; the field docs are there).
+struct RtDiffRecord {
+    vec3 eye_d_direction_dx;
+    float lod;
+    vec3 eye_d_direction_dy;
+    float offset_lod;
+    vec2 barycentric_dx;
+    vec2 barycentric_dy;
+    vec2 uv_dx;
+    vec2 uv_dy;
+    vec3 neighbour_right;
+    float coverage;
+    vec3 neighbour_below;
+    uint pad0;
+    vec3 offset_dx;
+    uint pad1;
+    vec3 offset_dy;
+    uint pad2;
+    vec2 offset_uv_dx;
+    vec2 offset_uv_dy;
+    vec3 deltas;
+    uint pad3;
+    vec3 cone_deltas;
+    uint pad4;
+};
+
+// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 272 bytes).
 struct RtPixelRecord {
     vec3 normal;
     float t;
@@ -40,6 +68,15 @@ struct RtPixelRecord {
     float curvature;
     float curvature_spread;
     RfRayCone reflected;
+    RtDiffRecord diff;
+};
+
+// Per-frame uniforms (Rust mirror: ray_footprint::abi::RtUniforms, 176 bytes, std140 = std430):
+// inverse view and projection matrices, wireframe colour and settings.
+struct RtUniforms {
+    mat4 view_inv;
+    mat4 proj_inv;
+    RfWireframePushConstants wireframe;
 };
 
 #endif // RT_ABI_GLSL

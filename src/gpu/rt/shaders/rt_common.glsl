@@ -1,12 +1,14 @@
 // ray-footprint ray-tracing renderer: declarations shared by the ray-generation, miss and
-// closest-hit shaders (src/gpu/rt/). Not a library module: it includes one, ray_cone.glsl, exactly
-// as a user's renderer would. The WGSL ray-query twin is ray_query.wgsl.
+// closest-hit shaders (src/gpu/rt/). Not a library module: it includes the library modules
+// ray_cone.glsl, ray_diff.glsl and wireframe.glsl exactly as a user's renderer would. The WGSL
+// ray-query twin is ray_query.wgsl.
 
 #ifndef RT_COMMON_GLSL
 #define RT_COMMON_GLSL
 
 #extension GL_EXT_ray_tracing : require
 #include "rt_abi.glsl"
+#include "ray_diff.glsl"
 
 // Render modes: the discriminants of Mode in src/gpu/rt/mode.rs.
 const uint RT_MODE_MIP0 = 0u;
@@ -14,6 +16,9 @@ const uint RT_MODE_CONE = 1u;
 const uint RT_MODE_CONE_CURVATURE = 2u;
 const uint RT_MODE_TEX_GRAD_SCALE = 3u;
 const uint RT_MODE_MIP_LEVELS = 4u;
+const uint RT_MODE_RAY_DIFF = 5u;
+const uint RT_MODE_BARY_GRADIENTS = 6u;
+const uint RT_MODE_WIREFRAME = 7u;
 
 // Materials: the discriminants of Material in src/gpu/rt/scene.rs.
 const uint RT_MATERIAL_TEXTURED = 0u;
@@ -35,6 +40,7 @@ layout(std430, set = 0, binding = 4) writeonly buffer RtRecords { RtPixelRecord 
 layout(std430, set = 0, binding = 5) writeonly buffer RtColours { uint rt_colours[]; };
 // 0: the checker texture, 1: one colour per mip level.
 layout(set = 0, binding = 6) uniform sampler2D rt_textures[2];
+layout(std140, set = 0, binding = 7) uniform RtFrame { RtUniforms rt_frame; };
 
 // A triangle's vertices.
 struct RtTriangle {
@@ -69,10 +75,18 @@ vec3 rt_primary_direction(uvec2 pixel) {
         - c.y * pc.tan_half_fov_y * pc.up);
 }
 
+// A record with only the closed-form cone deltas and the coverage they give: what a secondary hit
+// (seen in the mirror), which has no pixel neighbours to re-intersect, can measure.
+RtDiffRecord rt_diff_record(vec3 cone_deltas, float coverage) {
+    return RtDiffRecord(vec3(0.0), 0.0, vec3(0.0), 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0),
+        vec3(0.0), coverage, vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u, vec2(0.0), vec2(0.0), vec3(0.0),
+        0u, cone_deltas, 0u);
+}
+
 // The record of a ray that hit nothing.
 RtPixelRecord rt_miss_record(vec3 direction, RfRayCone cone) {
     return RtPixelRecord(vec3(0.0), 0.0, direction, 0u, vec2(0.0), 0u, 0u, cone, 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, RfRayCone(0.0, 0.0));
+        0.0, 0.0, 0.0, 0.0, RfRayCone(0.0, 0.0), rt_diff_record(vec3(0.0), 0.0));
 }
 
 // Every ray-cone value of a hit at distance t along the unit `direction` on `tri`, reached by
@@ -91,19 +105,69 @@ RtPixelRecord rt_measure(RtTriangle tri, vec2 barycentrics, float t, vec3 direct
     float curvature = rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
     float spread = rf_curvature_spread_angle(curvature, width, normal, direction);
     return RtPixelRecord(normal, t, direction, 0u, barycentrics, 0u, 1u, cone, width, footprint,
-        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread));
+        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread),
+        rt_diff_record(vec3(0.0), 0.0));
 }
 
-// The texture colour at `uv` as the render mode samples it.
-vec3 rt_texture_colour(RtPixelRecord record, vec2 uv) {
-    switch (pc.mode) {
+// The isotropic LOD (RTG Eq. 1-2) of UV gradients scaled to texels (the size is a power of two).
+float rt_texel_lod(RfDerivatives2 uv) {
+    return rf_lod_isotropic(RfDerivatives2(uv.dx * pc.texture_size, uv.dy * pc.texture_size));
+}
+
+// The wireframe coverage of the frame's settings at barycentrics (w, u, v) with these deltas.
+float rt_coverage(vec3 weights, vec3 deltas) {
+    return rf_process_wireframe(rf_unpack_wireframe_settings(rt_frame.wireframe.settings), weights, deltas);
+}
+
+// The ray-differential and wireframe values of a primary hit of the ray through `pixel`, from
+// `origin` along the unit `direction` to distance t, on `tri` (object space, mapped from world
+// space by world_to_object), whose ray-cone footprint is `footprint`: the eye-ray differential from
+// the inverse matrices, transferred to the hit as barycentric and UV derivatives (RTG Eq. 12-21);
+// the neighbour pixels' rays re-intersected with the triangle's plane (signed barycentric offsets,
+// their UV gradients and deltas); the wireframe coverage from the re-intersection deltas; and the
+// closed-form cone deltas.
+RtDiffRecord rt_measure_diff(RtTriangle tri, vec2 barycentrics, float t, vec3 origin, vec3 direction,
+        mat4 world_to_object, uvec2 pixel, float footprint) {
+    vec2 xy = vec2(pixel);
+    vec2 size = vec2(pc.width, pc.height);
+    RfRayDiff eye = rf_eye_ray_diff_from_matrices(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
+    RfDerivatives2 bary = rf_barycentric_derivatives(eye, direction, t, tri.p[0], tri.p[1], tri.p[2]);
+    RfDerivatives2 uv = rf_texture_derivatives(bary, tri.uv[0], tri.uv[1], tri.uv[2]);
+    RfNeighbourDirections next = rf_pixel_directions(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
+    vec3 w = rt_weights(barycentrics);
+    RfDerivatives3 offsets = rf_barycentric_offsets(world_to_object, origin, tri.p[0], tri.p[1], tri.p[2],
+        next.right, next.below, w);
+    RfDerivatives2 offset_uv = rf_uv_gradients_from_offsets(offsets, tri.uv[0], tri.uv[1], tri.uv[2]);
+    vec3 deltas = rf_barycentric_deltas(world_to_object, origin, tri.p[0], tri.p[1], tri.p[2],
+        next.right, next.below, w);
+    return RtDiffRecord(eye.d_direction_dx, rt_texel_lod(uv), eye.d_direction_dy, rt_texel_lod(offset_uv),
+        bary.dx, bary.dy, uv.dx, uv.dy, next.right, rt_coverage(w, deltas), next.below, 0u, offsets.dx, 0u,
+        offsets.dy, 0u, offset_uv.dx, offset_uv.dy, deltas, 0u,
+        rf_cone_barycentric_deltas(footprint, tri.p[0], tri.p[1], tri.p[2]), 0u);
+}
+
+// textureGrad with UV gradients scaled by tex_grad_scale.
+vec3 rt_sample_grad(vec2 uv, vec2 uv_dx, vec2 uv_dy) {
+    RfDerivatives2 grad = rf_sample_grad_gradients(RfDerivatives2(uv_dx, uv_dy), pc.cone.tex_grad_scale);
+    return textureGrad(rt_textures[0], uv, grad.dx, grad.dy).rgb;
+}
+
+// The texture colour at `uv` as the render mode samples it. The gradient modes need a primary hit;
+// secondary hits, like the cone modes and the wireframe's base, sample at the ray-cone LOD.
+vec3 rt_texture_colour(RtPixelRecord record, vec2 uv, bool primary) {
+    bool gradients = pc.mode == RT_MODE_RAY_DIFF || pc.mode == RT_MODE_BARY_GRADIENTS;
+    switch (gradients && !primary ? RT_MODE_CONE : pc.mode) {
     case RT_MODE_MIP0:
         return textureLod(rt_textures[0], uv, 0.0).rgb;
     case RT_MODE_TEX_GRAD_SCALE:
         return textureGrad(rt_textures[0], uv, vec2(record.gradient, 0.0), vec2(0.0, record.gradient)).rgb;
     case RT_MODE_MIP_LEVELS:
         return textureLod(rt_textures[1], uv, record.lod).rgb;
-    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE
+    case RT_MODE_RAY_DIFF:
+        return rt_sample_grad(uv, record.diff.uv_dx, record.diff.uv_dy);
+    case RT_MODE_BARY_GRADIENTS:
+        return rt_sample_grad(uv, record.diff.offset_uv_dx, record.diff.offset_uv_dy);
+    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME
         return textureLod(rt_textures[0], uv, record.lod).rgb;
     }
 }
