@@ -11,10 +11,11 @@
 //! (restated below for the ray-cone values, and reused where the suite exports the check: every
 //! ray_diff and wireframe value).
 
-use glam::{Mat4, Vec2, Vec3, Vec3Swizzles};
+use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
 use ray_footprint::gpu::rt::{ray_query_source, Camera, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR};
-use ray_footprint::gpu::tolerance::{dot_error, ulps};
+use ray_footprint::gpu::suite::ray_cone::{area_corners, edge_curvature_error};
+use ray_footprint::gpu::tolerance::{dot_error, log2_error, ulps};
 use ray_footprint::gpu::{suite, FunctionCheck, Gpu, GpuError, GpuValue};
 use ray_footprint::layout::{self, GlslPacking, StructLayout};
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
@@ -650,51 +651,4 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
         0.0,
         r,
     );
-}
-
-/// Error of `log2` returning `result` (3 ULP, or 2^-21 near 0) plus the mirror's ULP; the
-/// suite's `tolerance::log2_error`.
-fn log2_error(result: f32) -> f32 {
-    ray_footprint::gpu::tolerance::log2_error(result)
-}
-
-/// Error of twice a triangle's world area: each cross-product component `a*b - c*d` within 2 ULP
-/// of `|a*b| + |c*d|`; the scaling division (2.5), `length` (8) and the rescaling (0.5): 11 ULP.
-fn world_area2_error(p: [Vec3; 3]) -> f32 {
-    let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
-    let terms = (e1.yzx() * e2.zxy()).abs() + (e1.zxy() * e2.yzx()).abs();
-    ulps(2.0, terms.element_sum()) + ulps(11.0, rc::triangle_world_area2(p[0], p[1], p[2]))
-}
-
-/// Error of twice a triangle's UV area: 2 ULP of `|e1.x*e2.y| + |e1.y*e2.x|`.
-fn uv_area2_error(uv: [Vec2; 3]) -> f32 {
-    let (e1, e2) = (uv[1] - uv[0], uv[2] - uv[0]);
-    ulps(2.0, (e1.x * e2.y).abs() + (e1.y * e2.x).abs())
-}
-
-/// Largest change of `f(uv_area2, world_area2)` when each area moves within its error bound;
-/// `f` is monotonic in each, so the corners bound it. Evaluated in f64.
-fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) -> f32 {
-    let uv_area = f64::from(rc::triangle_uv_area2(uv[0], uv[1], uv[2]));
-    let world_area = f64::from(rc::triangle_world_area2(p[0], p[1], p[2]));
-    let (uv_error, world_error) = (f64::from(uv_area2_error(uv)), f64::from(world_area2_error(p)));
-    let centre = f(uv_area, world_area);
-    [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)]
-        .iter()
-        .map(|(a, b)| {
-            (f(
-                (uv_area + a * uv_error).max(0.0),
-                (world_area + b * world_error).max(0.0),
-            ) - centre)
-                .abs()
-        })
-        .fold(0.0, f64::max) as f32
-}
-
-/// Error of an edge curvature: the dot product's rounding over the squared length, and the
-/// squared length (3 ULP) and the division (2.5) as relative errors of the result.
-fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
-    let edge = p_j - p_i;
-    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
-        + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }

@@ -57,21 +57,21 @@ fn tan_ratio_error(fov: f32, height: f32) -> f32 {
 /// Error of a triangle's doubled world area: each cross-product component `a*b - c*d` is off by at
 /// most 2 ULP of `|a*b| + |c*d|` (the edges are computed identically); the scaling division
 /// (2.5 ULP), `length` (8 ULP) and the rescaling product (0.5 ULP) add 11 ULP of the result.
-fn world_area2_error(p: [Vec3; 3]) -> f32 {
+pub fn world_area2_error(p: [Vec3; 3]) -> f32 {
     let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
     let terms = (e1.yzx() * e2.zxy()).abs() + (e1.zxy() * e2.yzx()).abs();
     ulps(2.0, terms.element_sum()) + ulps(11.0, rc::triangle_world_area2(p[0], p[1], p[2]))
 }
 
 /// Error of a triangle's doubled UV area: 2 ULP of `|e1.x*e2.y| + |e1.y*e2.x|`.
-fn uv_area2_error(uv: [Vec2; 3]) -> f32 {
+pub fn uv_area2_error(uv: [Vec2; 3]) -> f32 {
     let (e1, e2) = (uv[1] - uv[0], uv[2] - uv[0]);
     ulps(2.0, (e1.x * e2.y).abs() + (e1.y * e2.x).abs())
 }
 
 /// Widest change of `f(uv_area2, world_area2)` when each area moves within its error bound; `f` is
 /// monotonic in each area, so the extremes lie at the corners. Evaluated in f64.
-fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) -> f32 {
+pub fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) -> f32 {
     let uv_area = f64::from(rc::triangle_uv_area2(uv[0], uv[1], uv[2]));
     let world_area = f64::from(rc::triangle_world_area2(p[0], p[1], p[2]));
     let (uv_err, world_err) = (f64::from(uv_area2_error(uv)), f64::from(world_area2_error(p)));
@@ -90,7 +90,7 @@ fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) -> f32
 
 /// Error of [`rc::edge_curvature`]: the dot product's rounding over the squared length, and the
 /// relative error of the squared length (3 ULP) and the division (2.5 ULP) times the result.
-fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
+pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
     let edge = p_j - p_i;
     dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
