@@ -8,7 +8,6 @@ use crate::gpu::naga_capabilities;
 use crate::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR};
 use ash::vk;
 use std::path::Path;
-use std::process::Command;
 
 /// Directory of the renderer's shaders (ray generation, miss, closest hit, ray query).
 pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gpu/rt/shaders");
@@ -273,37 +272,18 @@ fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, G
     .map_err(vulkan("vkCreateShaderModule"))
 }
 
-/// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.4), with the library's
+/// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.5), with the library's
 /// GLSL directory and [`SHADER_DIR`] on the include path; the file extension names the stage.
 fn compile_glsl(path: &Path) -> Result<Vec<u32>, GpuError> {
-    let output = std::env::temp_dir().join(format!(
-        "ray-footprint-rt-{}-{}.spv",
-        std::process::id(),
-        path.file_name().and_then(|n| n.to_str()).unwrap_or("stage")
-    ));
-    let result = Command::new("glslangValidator")
-        .args(["--target-env", "vulkan1.2"])
-        .arg(format!("-I{GLSL_INCLUDE_DIR}"))
-        .arg(format!("-I{SHADER_DIR}"))
-        .arg("-o")
-        .arg(&output)
-        .arg(path)
-        .output()
-        .map_err(|e| setup(&format!("cannot run glslangValidator ({e})")))?;
-    let bytes = std::fs::read(&output);
-    let _ = std::fs::remove_file(&output);
-    if !result.status.success() {
-        return Err(GpuError::Compile(format!(
-            "{}{}",
-            String::from_utf8_lossy(&result.stdout),
-            String::from_utf8_lossy(&result.stderr)
-        )));
-    }
-    let bytes = bytes.map_err(|e| GpuError::Compile(format!("reading glslang output: {e}")))?;
-    Ok(bytes
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect())
+    use crate::glslang::{compile, GlslangError};
+    let source =
+        std::fs::read_to_string(path).map_err(|e| GpuError::Compile(format!("{}: {e}", path.display())))?;
+    let stage = path.extension().and_then(|e| e.to_str()).unwrap_or("comp");
+    let includes = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    compile(&source, stage, "vulkan1.2", &includes).map_err(|error| match error {
+        GlslangError::NotRun(message) => setup(&message),
+        GlslangError::Failed { log, .. } => GpuError::Compile(format!("{}:\n{log}", path.display())),
+    })
 }
 
 /// Compiles WGSL with naga: the library modules' capabilities plus ray queries and push
