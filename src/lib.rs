@@ -8,6 +8,8 @@
 #![deny(missing_docs)]
 
 pub mod abi;
+#[doc(hidden)]
+pub mod fuzzing;
 #[cfg(feature = "validate")]
 pub mod layout;
 #[cfg(feature = "naga_oil")]
