@@ -54,7 +54,7 @@ fn casts<T: Pod>(name: &str, data: &[u8]) -> Result<(), String> {
 
 fn cast_at<T: Pod>(name: &str, data: &[u8]) -> Result<(), String> {
     let size = std::mem::size_of::<T>();
-    let aligned = (data.as_ptr() as usize) % std::mem::align_of::<T>() == 0;
+    let aligned = data.as_ptr().cast::<T>().is_aligned();
     let one = bytemuck::try_from_bytes::<T>(data);
     check(one.is_ok() == (aligned && data.len() == size), || {
         format!(
@@ -64,13 +64,16 @@ fn cast_at<T: Pod>(name: &str, data: &[u8]) -> Result<(), String> {
         )
     })?;
     let many = bytemuck::try_cast_slice::<u8, T>(data);
-    check(many.is_ok() == (aligned && data.len() % size == 0), || {
-        format!(
-            "{name}: try_cast_slice of {} bytes (aligned: {aligned}) gave {:?}",
-            data.len(),
-            many.err()
-        )
-    })?;
+    check(
+        many.is_ok() == (aligned && data.len().is_multiple_of(size)),
+        || {
+            format!(
+                "{name}: try_cast_slice of {} bytes (aligned: {aligned}) gave {:?}",
+                data.len(),
+                many.err()
+            )
+        },
+    )?;
     let read = bytemuck::try_pod_read_unaligned::<T>(data);
     check(read.is_ok() == (data.len() == size), || {
         format!(
