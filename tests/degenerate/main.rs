@@ -111,7 +111,15 @@ impl<A: GpuArgs + 'static, R: GpuValue + 'static> Table<A, R> {
 impl<A: GpuArgs + 'static, R: GpuValue + 'static> Degenerate for Table<A, R> {
     fn markdown(&self, out: &mut String) {
         for row in &self.rows {
-            writeln!(out, "| `{}` | {} | {} |", self.function, row.input, row.output).expect("a String");
+            let cell = |text: &str| text.replace('|', "\\|");
+            writeln!(
+                out,
+                "| `{}` | {} | {} |",
+                self.function,
+                cell(row.input),
+                cell(row.output)
+            )
+            .expect("a String");
         }
     }
 
