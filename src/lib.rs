@@ -8,6 +8,12 @@
 #![deny(missing_docs)]
 
 pub mod abi;
+/// Degenerate inputs: the documented output of every function, in all three implementations.
+///
+#[doc = include_str!("degenerate.md")]
+pub mod degenerate {}
+#[doc(hidden)]
+pub mod fuzzing;
 #[cfg(feature = "validate")]
 mod glslang;
 #[cfg(feature = "validate")]

@@ -1,0 +1,4 @@
+//! Fuzz target `abi_bytes`: see `ray_footprint::fuzzing` for the properties it checks.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| ray_footprint::fuzzing::fuzz_one("abi_bytes", data));
