@@ -175,14 +175,18 @@ fn halves(packed: PackedRayCone) -> [u16; 2] {
 }
 
 fn packed_cone_round_trip(packed: PackedRayCone) -> Result<(), String> {
-    let cone = unpack_ray_cone(packed);
-    let again = pack_ray_cone(cone);
-    for (index, (&before, &after)) in halves(packed).iter().zip(&halves(again)).enumerate() {
-        let value = half::f16::from_bits(before);
+    let (cone, again) = (unpack_ray_cone(packed), pack_ray_cone(unpack_ray_cone(packed)));
+    let unpacked_again = unpack_ray_cone(again);
+    let values = [
+        (cone.width, unpacked_again.width),
+        (cone.spread_angle, unpacked_again.spread_angle),
+    ];
+    let pairs = halves(packed).into_iter().zip(halves(again)).zip(values);
+    for (index, ((before, after), (value, value_again))) in pairs.enumerate() {
         let expected = if value.is_nan() {
-            half::f16::from_bits(after).is_nan()
+            value_again.is_nan()
         } else if value.is_infinite() {
-            half::f16::from_bits(after).to_f32() == F16_MAX.copysign(value.to_f32())
+            value_again == F16_MAX.copysign(value)
         } else {
             after == before
         };
