@@ -169,7 +169,7 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
                 ),
                 value("zero matrix", "0", (Mat4::ZERO, 1080.0), vec![0.0]),
                 mirror(
-                    "infinity in (proj_inv[1][1])",
+                    "infinity in (`proj_inv[1][1]`)",
                     "CPU: pi / 2",
                     (Mat4::from_diagonal(glam::Vec4::new(1.0, INF, 1.0, 1.0)), 1080.0),
                     vec![std::f32::consts::FRAC_PI_2],
@@ -1176,7 +1176,7 @@ fn wireframe() -> Vec<Box<dyn Degenerate>> {
             rows: vec![
                 same(
                     "edge position 2",
-                    "as edge position 1 (clamped to [0, 1])",
+                    "as edge position 1 (clamped to `[0, 1]`)",
                     (Vec2::new(0.5, 2.0), 2.0),
                     (Vec2::new(0.5, 2.0), 1.0),
                 ),
