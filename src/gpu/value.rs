@@ -96,7 +96,8 @@ pub trait GpuValue: Copy + Debug {
     fn is_finite(&self) -> bool;
 }
 
-fn take(words: &mut &[u32]) -> u32 {
+/// Removes and returns the first word (a kernel's output always has the expected length).
+pub(crate) fn take(words: &mut &[u32]) -> u32 {
     let (first, rest) = words
         .split_first()
         .expect("kernel output has the expected length");
@@ -179,7 +180,7 @@ macro_rules! float_value {
                 words.extend([$($field.to_bits()),+]);
             }
             fn read(words: &mut &[u32]) -> Self {
-                let mut $w = || f32::from_bits(take(words));
+                let mut $w = || f32::from_bits($crate::gpu::value::take(words));
                 $build
             }
             fn components(&self, out: &mut Vec<f32>) {
@@ -194,7 +195,6 @@ macro_rules! float_value {
     };
 }
 
-#[allow(unused_imports)]
 pub(crate) use float_value;
 
 float_value!(Vec2, ShaderType::Vec2, |v| [v.x, v.y], |w| Vec2::new(w(), w()));

@@ -85,15 +85,6 @@ pub const TRIPLANAR_GRADIENTS: StructType = StructType {
     ],
 };
 
-/// The next word (used by `float_value!`).
-fn take(words: &mut &[u32]) -> u32 {
-    let (first, rest) = words
-        .split_first()
-        .expect("kernel output has the expected length");
-    *words = rest;
-    *first
-}
-
 #[rustfmt::skip]
 float_value!(
     RayDiff,

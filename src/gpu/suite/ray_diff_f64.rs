@@ -20,15 +20,6 @@ pub const BARYCENTRIC_OFFSETS: StructType = StructType {
     fields: &[("dx", ShaderType::Vec3), ("dy", ShaderType::Vec3)],
 };
 
-/// The next word (used by `float_value!`).
-fn take(words: &mut &[u32]) -> u32 {
-    let (first, rest) = words
-        .split_first()
-        .expect("kernel output has the expected length");
-    *words = rest;
-    *first
-}
-
 #[rustfmt::skip]
 float_value!(
     BarycentricOffsets,

@@ -55,17 +55,8 @@ pub const WIREFRAME_PUSH_CONSTANTS: StructType = StructType {
     ],
 };
 
-/// Removes and returns the first word.
-fn next_word(words: &mut &[u32]) -> u32 {
-    let (first, rest) = words
-        .split_first()
-        .expect("kernel output has the expected length");
-    *words = rest;
-    *first
-}
-
 fn next_f32(words: &mut &[u32]) -> f32 {
-    f32::from_bits(next_word(words))
+    f32::from_bits(crate::gpu::value::take(words))
 }
 
 impl GpuValue for WireframeSettings {
@@ -96,10 +87,10 @@ impl GpuValue for WireframeSettingsIo {
             thickness_var: Vec2::new(next_f32(words), next_f32(words)),
             thickness: next_f32(words),
             smoothing: next_f32(words),
-            stipple: next_word(words) as i32,
+            stipple: crate::gpu::value::take(words) as i32,
             stipple_length: next_f32(words),
-            stipple_repeats: next_word(words) as i32,
-            screen_space: next_word(words) as i32,
+            stipple_repeats: crate::gpu::value::take(words) as i32,
+            screen_space: crate::gpu::value::take(words) as i32,
         }
     }
     fn components(&self, out: &mut Vec<f32>) {
