@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # What ray-footprint costs a downstream crate: the clean-build time (debug, as `cargo build`) and
 # the number of crates pulled in, for the default features and for each optional feature.
-# Usage: scripts/build-cost.sh [FEATURE...]   (default: "" validate naga_oil gpu)
+# Usage: scripts/build-cost.sh [FEATURE...]   (default: "" validate naga_oil shader-proptest)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cargo new -q --lib "$work/consumer"
 feature_sets=("$@")
-[ ${#feature_sets[@]} -gt 0 ] || feature_sets=("" validate naga_oil gpu)
+[ ${#feature_sets[@]} -gt 0 ] || feature_sets=("" validate naga_oil shader-proptest)
 
 printf '%-10s %8s %8s %s\n' features crates seconds gpu-crates
 for features in "${feature_sets[@]}"; do

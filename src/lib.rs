@@ -2,9 +2,9 @@
 //! anti-aliased barycentric wireframe, as WGSL and GLSL modules to include in your shaders, with a
 //! Rust mirror of every function and of every struct that crosses the CPU/GPU boundary.
 //!
-//! The WGSL, the GLSL and the Rust give the same answers: the `gpu` feature's harness runs the
-//! shader modules on a Vulkan device (Mesa's lavapipe in CI) and compares the results with the
-//! mirror, function by function.
+//! The WGSL, the GLSL and the Rust give the same answers: the workspace's `ray-footprint-lab`
+//! runs every shader function on a Vulkan device (Mesa's lavapipe in CI) through the
+//! `shader-proptest` harness and compares the results with the mirror, function by function.
 #![deny(missing_docs)]
 
 pub mod abi;
@@ -14,17 +14,22 @@ pub mod abi;
 pub mod degenerate {}
 #[doc(hidden)]
 pub mod fuzzing;
-#[cfg(feature = "validate")]
-mod glslang;
-#[cfg(feature = "validate")]
-pub mod layout;
 #[cfg(feature = "naga_oil")]
 pub mod naga_oil;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
 pub mod shaders;
+#[cfg(feature = "shader-proptest")]
+mod values;
 pub mod wireframe;
 
-#[cfg(feature = "gpu")]
-pub mod gpu;
+/// Struct layout verification (feature `validate`), from the `shader-proptest` crate: compare a
+/// Rust struct's layout with a shader struct's (naga's WGSL layout, glslang's std140, std430 and
+/// scalar). [`abi::verify_shared_layouts`] uses it for every shared struct of this crate.
+#[cfg(feature = "validate")]
+pub mod layout {
+    pub use shader_proptest::layout::*;
+}
+#[cfg(feature = "validate")]
+pub use shader_proptest::rust_layout;

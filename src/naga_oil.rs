@@ -28,14 +28,13 @@ pub fn import_path(module: Module) -> String {
     format!("ray_footprint::{}", module.stem())
 }
 
-/// The naga capabilities `modules` need: `pack2x16float` / `unpack2x16float` (wgpu's downlevel flag
-/// `SHADER_F16_IN_F32`), plus `f64` for the `_f64` modules.
+/// The naga capabilities `modules` need together ([`Module::naga_capabilities`]).
 pub fn capabilities(modules: &[Module]) -> naga::valid::Capabilities {
-    let mut capabilities = naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
-    if modules.iter().any(|module| module.needs_f64()) {
-        capabilities |= naga::valid::Capabilities::FLOAT64;
-    }
-    capabilities
+    modules
+        .iter()
+        .fold(naga::valid::Capabilities::empty(), |all, module| {
+            all | module.naga_capabilities()
+        })
 }
 
 /// Registers `modules` with `composer` under their [`import_path`]s.

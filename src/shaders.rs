@@ -82,6 +82,40 @@ impl Module {
     pub fn needs_f64(self) -> bool {
         self.stem().ends_with("_f64")
     }
+
+    /// The naga capabilities the WGSL module needs beyond naga's defaults: `pack2x16float` and
+    /// `unpack2x16float` (naga's `SHADER_FLOAT16_IN_FLOAT32`, wgpu's downlevel flag
+    /// `SHADER_F16_IN_F32`, on every Vulkan, Metal and DX12 adapter), plus `FLOAT64` for the `_f64`
+    /// modules. Every place that validates or composes the modules asks this.
+    #[cfg(any(feature = "validate", feature = "naga_oil", feature = "shader-proptest"))]
+    pub fn naga_capabilities(self) -> naga::valid::Capabilities {
+        let capabilities = naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
+        if self.needs_f64() {
+            capabilities | naga::valid::Capabilities::FLOAT64
+        } else {
+            capabilities
+        }
+    }
+
+    /// The module as a `shader_proptest::Shader` in `language` (feature `shader-proptest`): the
+    /// WGSL module text with its naga capabilities, or `#include "<stem>.glsl"` with
+    /// [`GLSL_INCLUDE_DIR`] on the include path; the `_f64` modules require `shaderFloat64`.
+    /// Check your own functions that use the module by appending them to its source.
+    #[cfg(feature = "shader-proptest")]
+    pub fn shader(self, language: shader_proptest::Language) -> shader_proptest::Shader {
+        use shader_proptest::{Feature, Language, Shader};
+        let shader = match language {
+            Language::Wgsl => Shader::wgsl(self.wgsl()).capabilities(self.naga_capabilities()),
+            Language::Glsl => {
+                Shader::glsl(format!("#include \"{}.glsl\"", self.stem())).include_dir(GLSL_INCLUDE_DIR)
+            }
+        };
+        if self.needs_f64() {
+            shader.requires(Feature::ShaderFloat64)
+        } else {
+            shader
+        }
+    }
 }
 
 /// The WGSL sources of `modules`, each once, in the order of [`Module::ALL`], ready to be

@@ -3,13 +3,20 @@
 
 use std::process::Command;
 
-/// Builds and runs the downstream crate `name`; it must succeed and print `expected`.
+/// Builds and runs the downstream crate `name` with `cargo run`; it must succeed and print
+/// `expected`.
 fn run_downstream(name: &str, expected: &str) {
+    cargo_downstream("run", name, expected);
+}
+
+/// Runs `cargo <command>` (`run` or `test`) on the downstream crate `name`; it must succeed and
+/// print `expected`.
+fn cargo_downstream(command: &str, name: &str, expected: &str) {
     let root = env!("CARGO_MANIFEST_DIR");
     let manifest = format!("{root}/examples/downstream/{name}/Cargo.toml");
     let output = Command::new(env!("CARGO"))
         .args([
-            "run",
+            command,
             "--release",
             "--quiet",
             "--manifest-path",
@@ -53,4 +60,11 @@ fn glsl_build_script_compiles_a_closest_hit_shader() {
 #[test]
 fn cpu_path_tracer_uses_the_mirror_alone() {
     run_downstream("cpu-path-tracer", "ground rows");
+}
+
+/// A user of the harness: their own WGSL and GLSL functions checked against their own Rust
+/// functions with shader-proptest, as an outside crate's tests, on lavapipe.
+#[test]
+fn shader_proptest_checks_a_users_functions() {
+    cargo_downstream("test", "shader-proptest-user", "test result: ok. 2 passed");
 }

@@ -1,6 +1,6 @@
 //! A wgpu user's compute shader: the WGSL ray-cone module pasted in front of the user's kernel,
 //! validated by wgpu's own shader validation and run through wgpu's Vulkan backend (lavapipe unless
-//! `RAY_FOOTPRINT_DEVICE` names another adapter), checked against the Rust mirror.
+//! `SHADER_PROPTEST_DEVICE` names another adapter), checked against the Rust mirror.
 
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone;
@@ -68,7 +68,7 @@ fn main() -> ExitCode {
 }
 
 async fn adapter(instance: &wgpu::Instance) -> Result<wgpu::Adapter, String> {
-    let wanted = std::env::var("RAY_FOOTPRINT_DEVICE")
+    let wanted = std::env::var("SHADER_PROPTEST_DEVICE")
         .ok()
         .map(|name| name.to_lowercase());
     let adapters = instance.enumerate_adapters(wgpu::Backends::VULKAN).await;

@@ -1,0 +1,335 @@
+//! The gallery: renders what the ray-cone helpers do, with real acceleration structures and the
+//! GLSL ray-tracing pipeline, on the local Vulkan device (lavapipe unless `SHADER_PROPTEST_DEVICE`
+//! names another), validation layer on, into a folder of PNGs.
+//!
+//! For each mode: the ground plane at grazing angles (`ground_<mode>.png`) and a close-up of the
+//! mirror sphere (`reflection_<mode>.png`). With the wireframe mode, also a close-up of the dense
+//! torus under each wireframe preset (`wireframe_<preset>.png`) and all of them side by side
+//! (`wireframe_presets.png`). With `--mode all` (the default) also side-by-side strips: every mode
+//! on the ground plane (`ground_modes.png`, in the order of `--help`), the isotropic and the
+//! anisotropic ways to pick a level of detail (`ground_gradients.png`: mip0, cone, ray_diff,
+//! bary_gradients), the reflection without and with curvature (`reflection_curvature.png`), and
+//! `tex_grad_scale` 0, 1 and 3 (`tex_grad_scale.png`).
+//!
+//! `cargo run --release -p ray-footprint-lab --example gallery -- [--width N] [--height N] [--mode NAME|all] [--out DIR]`
+
+use ray_footprint::wireframe::WireframeSettings;
+use ray_footprint_lab::rt::{open_device, Camera, Error, Frame, Mode, Renderer, Scene};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// `tex_grad_scale` of the `tex_grad_scale` mode's own images: visibly blurred (1 matches `cone`).
+const BLUR_SCALE: f32 = 3.0;
+/// Largest accepted width or height.
+const MAX_SIZE: u32 = 8192;
+
+/// What to render, from the command line.
+struct Options {
+    width: u32,
+    height: u32,
+    modes: Vec<Mode>,
+    out: PathBuf,
+}
+
+fn usage() -> String {
+    let names: Vec<_> = Mode::ALL
+        .iter()
+        .map(|m| format!("  {:<16}{}", m.name(), m.description()))
+        .collect();
+    format!(
+        "usage: gallery [--width N] [--height N] [--mode NAME|all] [--out DIR]\n\
+         defaults: --width 480 --height 270 --mode all --out gallery\nmodes:\n{}",
+        names.join("\n")
+    )
+}
+
+fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+    let mut options = Options {
+        width: 480,
+        height: 270,
+        modes: Mode::ALL.to_vec(),
+        out: PathBuf::from("gallery"),
+    };
+    while let Some(flag) = args.next() {
+        if flag == "--help" || flag == "-h" {
+            return Err(String::new());
+        }
+        if !["--width", "--height", "--mode", "--out"].contains(&flag.as_str()) {
+            return Err(format!("unknown argument '{flag}'"));
+        }
+        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+        match flag.as_str() {
+            "--width" => options.width = size(&flag, &value)?,
+            "--height" => options.height = size(&flag, &value)?,
+            "--mode" if value == "all" => options.modes = Mode::ALL.to_vec(),
+            "--mode" => {
+                let mode = Mode::from_name(&value).ok_or_else(|| format!("unknown mode '{value}'"))?;
+                options.modes = vec![mode];
+            }
+            "--out" if value.is_empty() => return Err("--out needs a folder name".into()),
+            _ => options.out = PathBuf::from(value),
+        }
+    }
+    Ok(options)
+}
+
+fn size(flag: &str, value: &str) -> Result<u32, String> {
+    match value.parse::<u32>() {
+        Ok(n) if (1..=MAX_SIZE).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "{flag} must be an integer from 1 to {MAX_SIZE}, got '{value}'"
+        )),
+    }
+}
+
+fn main() -> ExitCode {
+    let options = match parse_args(std::env::args().skip(1)) {
+        Ok(options) => options,
+        Err(message) if message.is_empty() => {
+            println!("{}", usage());
+            return ExitCode::SUCCESS;
+        }
+        Err(message) => {
+            eprintln!("error: {message}\n{}", usage());
+            return ExitCode::from(2);
+        }
+    };
+    if let Err(e) = std::fs::create_dir_all(&options.out) {
+        eprintln!(
+            "error: cannot create the output folder {}: {e}",
+            options.out.display()
+        );
+        return ExitCode::from(2);
+    }
+    match run(&options) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Renders every image and strip, printing progress, the files and the time per frame.
+fn run(options: &Options) -> Result<(), String> {
+    let gpu = open_device().map_err(|e| e.to_string())?;
+    let renderer = Renderer::new(&gpu, Scene::gallery()).map_err(|e| e.to_string())?;
+    let triangles: usize = renderer.scene().meshes.iter().map(|m| m.triangle_count()).sum();
+    println!("device: {}", gpu.name());
+    println!(
+        "image size: {} x {}; scene: {triangles} triangles",
+        options.width, options.height
+    );
+    match renderer.anisotropy() {
+        Some(max) => println!("sampler: trilinear, anisotropic up to {max}x"),
+        None => println!("sampler: trilinear (the device has no samplerAnisotropy)"),
+    }
+    let mut gallery = Gallery {
+        renderer: &renderer,
+        options,
+        written: Vec::new(),
+        timings: Vec::new(),
+    };
+    gallery.warm_up().map_err(|e| e.to_string())?;
+    let views = [("ground", Camera::ground()), ("reflection", Camera::reflection())];
+    let mut frames = Vec::new();
+    for (index, &mode) in options.modes.iter().enumerate() {
+        for (view, camera) in &views {
+            println!(
+                "[{}/{}] {view} view, mode {mode} ...",
+                index + 1,
+                options.modes.len()
+            );
+            let frame = gallery
+                .render(view, camera, mode, scale_of(mode), DEFAULT_PRESET)
+                .map_err(|e| e.to_string())?;
+            gallery.save(&format!("{view}_{mode}.png"), &[&frame])?;
+            frames.push(((*view, mode), frame));
+        }
+    }
+    if options.modes.contains(&Mode::Wireframe) {
+        gallery.wireframes()?;
+    }
+    if options.modes.len() == Mode::ALL.len() {
+        gallery.strips(&frames)?;
+    }
+    gallery.report();
+    Ok(())
+}
+
+/// A wireframe preset and its display name ([`WireframeSettings::PRESETS`]).
+type Preset = (&'static str, WireframeSettings);
+
+/// The preset of every image but the wireframe close-ups.
+const DEFAULT_PRESET: Preset = WireframeSettings::PRESETS[0];
+
+/// The file-name form of a preset's name: "Wire dot" -> "wire_dot".
+fn slug(name: &str) -> String {
+    name.to_lowercase().replace(' ', "_")
+}
+
+/// The `tex_grad_scale` a mode renders with.
+fn scale_of(mode: Mode) -> f32 {
+    if mode == Mode::TexGradScale {
+        BLUR_SCALE
+    } else {
+        1.0
+    }
+}
+
+struct Gallery<'a, 'g> {
+    renderer: &'a Renderer<'g>,
+    options: &'a Options,
+    written: Vec<PathBuf>,
+    timings: Vec<(String, f64)>,
+}
+
+impl Gallery<'_, '_> {
+    /// One untimed frame, so the first timing does not include the driver's shader compilation.
+    fn warm_up(&self) -> Result<(), Error> {
+        println!("warming up (first frame compiles the pipeline) ...");
+        let camera = Camera::ground();
+        let push = self.renderer.push_constants(&camera, Mode::Cone, 1.0, 16, 16);
+        let uniforms = camera.uniforms((16, 16), WireframeSettings::default());
+        self.renderer.render(&push, &uniforms).map(|_| ())
+    }
+
+    /// Traces one frame of `camera` in `mode`, timed; the wireframe mode draws `preset`.
+    fn render(
+        &mut self,
+        view: &str,
+        camera: &Camera,
+        mode: Mode,
+        tex_grad_scale: f32,
+        (preset, settings): Preset,
+    ) -> Result<Frame, Error> {
+        let (width, height) = (self.options.width, self.options.height);
+        let push = self
+            .renderer
+            .push_constants(camera, mode, tex_grad_scale, width, height);
+        let uniforms = camera.uniforms((width, height), settings);
+        let frame = self.renderer.render(&push, &uniforms)?;
+        let ms = frame.trace_time.as_secs_f64() * 1e3;
+        println!("    {ms:.1} ms per frame");
+        let setting = if mode == Mode::Wireframe {
+            format!("preset {preset}")
+        } else {
+            format!("tex_grad_scale {tex_grad_scale}")
+        };
+        self.timings
+            .push((format!("{view:<10} {mode:<15} {setting}"), ms));
+        Ok(frame)
+    }
+
+    /// The torus close-up under every wireframe preset, one image each and a strip.
+    fn wireframes(&mut self) -> Result<(), String> {
+        let mut frames = Vec::new();
+        for (index, &preset) in WireframeSettings::PRESETS.iter().enumerate() {
+            println!(
+                "[wireframe {}/{}] torus view, preset {} ...",
+                index + 1,
+                WireframeSettings::PRESETS.len(),
+                preset.0
+            );
+            let frame = self
+                .render("torus", &Camera::torus(), Mode::Wireframe, 1.0, preset)
+                .map_err(|e| e.to_string())?;
+            self.save(&format!("wireframe_{}.png", slug(preset.0)), &[&frame])?;
+            frames.push(frame);
+        }
+        self.save("wireframe_presets.png", &frames.iter().collect::<Vec<_>>())
+    }
+
+    /// The strips: every mode on the ground, the reflection without and with curvature, and
+    /// tex_grad_scale 0, 1 and 3.
+    fn strips(&mut self, frames: &[((&str, Mode), Frame)]) -> Result<(), String> {
+        let find = |view: &str, mode: Mode| {
+            frames
+                .iter()
+                .find(|((v, m), _)| *v == view && *m == mode)
+                .map(|(_, frame)| frame)
+                .expect("every mode was rendered in every view")
+        };
+        let ground: Vec<&Frame> = Mode::ALL.iter().map(|&mode| find("ground", mode)).collect();
+        self.save("ground_modes.png", &ground)?;
+        let gradients = [Mode::Mip0, Mode::Cone, Mode::RayDiff, Mode::BaryGradients];
+        self.save(
+            "ground_gradients.png",
+            &gradients.map(|mode| find("ground", mode)),
+        )?;
+        let reflection = [
+            find("reflection", Mode::Cone),
+            find("reflection", Mode::ConeCurvature),
+        ];
+        self.save("reflection_curvature.png", &reflection)?;
+        println!("[strip] ground view, tex_grad_scale 0 and 1 ...");
+        let mut scaled = Vec::new();
+        for scale in [0.0, 1.0] {
+            scaled.push(
+                self.render(
+                    "ground",
+                    &Camera::ground(),
+                    Mode::TexGradScale,
+                    scale,
+                    DEFAULT_PRESET,
+                )
+                .map_err(|e| e.to_string())?,
+            );
+        }
+        let strip = [&scaled[0], &scaled[1], find("ground", Mode::TexGradScale)];
+        self.save("tex_grad_scale.png", &strip)
+    }
+
+    /// Writes `frames` side by side (4-pixel white gaps) as `name` in the output folder.
+    fn save(&mut self, name: &str, frames: &[&Frame]) -> Result<(), String> {
+        let path = self.options.out.join(name);
+        let (width, height, pixels) = side_by_side(frames);
+        write_png(&path, width, height, &pixels).map_err(|e| format!("writing {}: {e}", path.display()))?;
+        self.written.push(path);
+        Ok(())
+    }
+
+    fn report(&self) {
+        println!(
+            "\ntime per frame ({} x {}, trace only):",
+            self.options.width, self.options.height
+        );
+        for (what, ms) in &self.timings {
+            println!("  {what:<45} {ms:>8.1} ms");
+        }
+        println!("\nfiles written ({}):", self.written.len());
+        for path in &self.written {
+            println!("  {}", path.display());
+        }
+    }
+}
+
+/// Gap between images in a strip, in pixels.
+const GAP: u32 = 4;
+
+/// Lays frames of equal size out in a row with white gaps: width, height and RGBA bytes.
+fn side_by_side(frames: &[&Frame]) -> (u32, u32, Vec<u8>) {
+    let (w, h) = (frames[0].width, frames[0].height);
+    let count = frames.len() as u32;
+    let width = count * w + (count - 1) * GAP;
+    let mut pixels = vec![255u8; (width * h * 4) as usize];
+    for (i, frame) in frames.iter().enumerate() {
+        let left = i as u32 * (w + GAP);
+        for (y, row) in frame.pixels.chunks_exact(w as usize).enumerate() {
+            let start = ((y as u32 * width + left) * 4) as usize;
+            pixels[start..start + row.len() * 4].copy_from_slice(bytemuck::cast_slice(row));
+        }
+    }
+    (width, h, pixels)
+}
+
+fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut encoder = png::Encoder::new(file, width, height);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(rgba)?;
+    writer.finish()?;
+    Ok(())
+}

@@ -1,0 +1,64 @@
+//! The agreement suite: every shader function of every module, checked against its Rust mirror
+//! with shader-proptest, one check per function in the module's order.
+//!
+//! Each check's tolerance is derived from the operations its function performs (Vulkan's
+//! precision rules, `shader_proptest::tolerance`), either by hand (a bound per output component,
+//! with a comment saying how) or mechanically, as the width of an interval enclosure of the
+//! function (`shader_proptest::interval`).
+
+pub mod ray_cone;
+pub mod ray_diff;
+pub mod ray_diff_f64;
+pub mod strategy;
+pub mod wireframe;
+
+use proptest::strategy::BoxedStrategy;
+use ray_footprint::shaders::Module;
+use shader_proptest::interval::Interval;
+use shader_proptest::{Args, Check, FunctionCheck, Tolerance, Value};
+
+/// A check of `rf_<function>` whose tolerance is `bound(arguments, component, expected)`.
+pub fn per_component<A: Args, R: Value>(
+    function: &str,
+    strategy: fn() -> BoxedStrategy<A>,
+    mirror: fn(A) -> R,
+    bound: fn(&A, usize, f32) -> f32,
+) -> FunctionCheck<A, R> {
+    FunctionCheck::new(format!("rf_{function}"), strategy, mirror).tolerance(Tolerance::per_component(bound))
+}
+
+/// A check of `rf_<function>` whose tolerance is the width of `enclosure`'s interval for each
+/// output component: the function re-evaluated in interval arithmetic with the rounding Vulkan
+/// allows the device and the mirror.
+pub fn enclosed<A: Args, R: Value>(
+    function: &str,
+    strategy: fn() -> BoxedStrategy<A>,
+    mirror: fn(A) -> R,
+    enclosure: fn(&A) -> Vec<Interval>,
+) -> FunctionCheck<A, R> {
+    let widths = move |args: &A, _: &[f32]| {
+        enclosure(args)
+            .iter()
+            .map(|interval| interval.tolerance())
+            .collect()
+    };
+    FunctionCheck::new(format!("rf_{function}"), strategy, mirror).tolerance(Tolerance::per_case(widths))
+}
+
+/// Every check of one module, in the module's function order.
+pub fn checks(module: Module) -> Vec<Box<dyn Check>> {
+    match module {
+        Module::RayCone => ray_cone::checks(),
+        Module::RayDiff => ray_diff::checks(),
+        Module::RayDiffF64 => ray_diff_f64::checks(),
+        Module::Wireframe => wireframe::checks(),
+    }
+}
+
+/// Every check of every module with its module, in module order.
+pub fn all_checks() -> Vec<(Module, Box<dyn Check>)> {
+    Module::ALL
+        .iter()
+        .flat_map(|&module| checks(module).into_iter().map(move |check| (module, check)))
+        .collect()
+}

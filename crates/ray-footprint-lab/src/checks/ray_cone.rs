@@ -1,0 +1,413 @@
+//! Agreement checks of the ray-cone module, one per function, in the module's order.
+//!
+//! Each tolerance is derived from the operations the function performs (see
+//! [`shader_proptest::tolerance`]); the comment next to it says how.
+
+use super::per_component;
+use super::strategy::{
+    angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle,
+    uv_triangle, vec3,
+};
+use glam::{Mat4, Vec2, Vec3, Vec3Swizzles};
+use proptest::prelude::*;
+use ray_footprint::ray_cone::{self as rc, PackedRayCone, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use shader_proptest::tolerance::{atan_error, dot_error, log2_error, tan_error, ulps, ULP};
+use shader_proptest::{Check, FunctionCheck};
+
+fn ray_cone() -> BoxedStrategy<RayCone> {
+    (scalar(), angle())
+        .prop_map(|(width, spread_angle)| RayCone { width, spread_angle })
+        .boxed()
+}
+
+/// A packed cone whose halves are finite f16 (exponent field below 31).
+fn packed_ray_cone() -> BoxedStrategy<PackedRayCone> {
+    let finite_half = any::<u16>().prop_filter("finite f16", |h| (h >> 10) & 0x1f != 0x1f);
+    (finite_half.clone(), finite_half)
+        .prop_map(|(lo, hi)| PackedRayCone(u32::from(lo) | u32::from(hi) << 16))
+        .boxed()
+}
+
+/// An inverse projection matrix of a perspective camera (y-flipped or not), or an arbitrary matrix.
+fn proj_inv() -> BoxedStrategy<Mat4> {
+    let perspective =
+        (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>()).prop_map(|(fov, aspect, near, vulkan)| {
+            let projection = if vulkan {
+                glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)
+            } else {
+                glam::camera::rh::proj::opengl::perspective(fov, aspect, near, near * 1000.0)
+            };
+            projection.inverse()
+        });
+    let arbitrary = prop::array::uniform16(scalar()).prop_map(|cols| Mat4::from_cols_array(&cols));
+    prop_oneof![3 => perspective, 1 => arbitrary].boxed()
+}
+
+/// `|cos|` as the functions clamp it.
+fn clamped_cos(normal: Vec3, direction: Vec3) -> f32 {
+    normal.dot(direction).abs().max(MIN_COS)
+}
+
+/// Error of `2 * tan(fov / 2) / H` with the clamps: `tan`'s error scaled by `2 / H`, plus 3.5 ULP.
+fn tan_ratio_error(fov: f32, height: f32) -> f32 {
+    let angle = 0.5 * fov.clamp(0.0, MAX_FOV_Y);
+    2.0 * tan_error(angle) / height.max(1.0) + ulps(3.5, rc::pixel_spread_angle_small(fov, height))
+}
+
+/// Error of a triangle's doubled world area: each cross-product component `a*b - c*d` is off by at
+/// most 2 ULP of `|a*b| + |c*d|` (the edges are computed identically); the scaling division
+/// (2.5 ULP), `length` (8 ULP) and the rescaling product (0.5 ULP) add 11 ULP of the result.
+pub fn world_area2_error(p: [Vec3; 3]) -> f32 {
+    let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
+    let terms = (e1.yzx() * e2.zxy()).abs() + (e1.zxy() * e2.yzx()).abs();
+    ulps(2.0, terms.element_sum()) + ulps(11.0, rc::triangle_world_area2(p[0], p[1], p[2]))
+}
+
+/// Error of a triangle's doubled UV area: 2 ULP of `|e1.x*e2.y| + |e1.y*e2.x|`.
+pub fn uv_area2_error(uv: [Vec2; 3]) -> f32 {
+    let (e1, e2) = (uv[1] - uv[0], uv[2] - uv[0]);
+    ulps(2.0, (e1.x * e2.y).abs() + (e1.y * e2.x).abs())
+}
+
+/// Widest change of `f(uv_area2, world_area2)` when each area moves within its error bound; `f` is
+/// monotonic in each area, so the extremes lie at the corners. Evaluated in f64.
+pub fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) -> f32 {
+    let uv_area = f64::from(rc::triangle_uv_area2(uv[0], uv[1], uv[2]));
+    let world_area = f64::from(rc::triangle_world_area2(p[0], p[1], p[2]));
+    let (uv_err, world_err) = (f64::from(uv_area2_error(uv)), f64::from(world_area2_error(p)));
+    let centre = f(uv_area, world_area);
+    [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)]
+        .iter()
+        .map(|(a, b)| {
+            (f(
+                (uv_area + a * uv_err).max(0.0),
+                (world_area + b * world_err).max(0.0),
+            ) - centre)
+                .abs()
+        })
+        .fold(0.0, f64::max) as f32
+}
+
+/// Error of [`rc::edge_curvature`]: the dot product's rounding over the squared length, and the
+/// relative error of the squared length (3 ULP) and the division (2.5 ULP) times the result.
+pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
+    let edge = p_j - p_i;
+    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
+        + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
+}
+
+/// Every check of the module.
+pub fn checks() -> Vec<Box<dyn Check>> {
+    vec![
+        Box::new(per_component(
+            "pack_ray_cone",
+            || ray_cone().prop_map(|c| (c,)).boxed(),
+            |(cone,)| rc::pack_ray_cone(cone),
+            // The rounding mode of packHalf2x16 is the implementation's: one f16 ULP (2^-10
+            // relative, 2^-24 absolute for f16 subnormals).
+            |_, _, expected| (expected.abs() / 1024.0).max(1.0 / 16_777_216.0),
+        )),
+        Box::new(per_component(
+            "unpack_ray_cone",
+            || packed_ray_cone().prop_map(|p| (p,)).boxed(),
+            |(packed,)| rc::unpack_ray_cone(packed),
+            // f16 to f32 is exact.
+            |_, _, _| 0.0,
+        )),
+        Box::new(per_component(
+            "pixel_spread_angle",
+            || (fov_y(), pixels()).boxed(),
+            |(fov, height)| rc::pixel_spread_angle(fov, height),
+            // atan of the tan ratio: the ratio's error through atan, plus atan's 4096 ULP.
+            |&(fov, height), _, _| {
+                atan_error(
+                    rc::pixel_spread_angle_small(fov, height),
+                    tan_ratio_error(fov, height),
+                )
+            },
+        )),
+        Box::new(per_component(
+            "pixel_spread_angle_small",
+            || (fov_y(), pixels()).boxed(),
+            |(fov, height)| rc::pixel_spread_angle_small(fov, height),
+            // tan's error (inherited from sin / cos) scaled by 2 / H.
+            |&(fov, height), _, _| tan_ratio_error(fov, height),
+        )),
+        Box::new(per_component(
+            "pixel_spread_angle_from_proj_inv",
+            || (proj_inv(), pixels()).boxed(),
+            |(proj_inv, height)| rc::pixel_spread_angle_from_proj_inv(proj_inv, height),
+            // The ratio 2|m|/H has one division (2.5 ULP) and the mirror's rounding; then atan.
+            |&(proj_inv, height), _, _| {
+                let ratio = 2.0 * proj_inv.y_axis.y.abs() / height.max(1.0);
+                atan_error(ratio, ulps(3.5, ratio))
+            },
+        )),
+        Box::new(per_component(
+            "pinhole_ray_cone",
+            || angle().prop_map(|a| (a,)).boxed(),
+            |(spread,)| rc::pinhole_ray_cone(spread),
+            // No arithmetic.
+            |_, _, _| 0.0,
+        )),
+        Box::new(per_component(
+            "orthographic_ray_cone",
+            || (magnitude(), pixels()).boxed(),
+            |(view_height, height)| rc::orthographic_ray_cone(view_height, height),
+            // One division: 2.5 ULP on the device, 0.5 in the mirror.
+            |_, _, expected| ulps(3.0, expected),
+        )),
+        Box::new(per_component(
+            "thin_lens_ray_cone",
+            || (angle(), magnitude(), scalar()).boxed(),
+            |(spread, aperture, focus)| rc::thin_lens_ray_cone(spread, aperture, focus),
+            // Width: a copy. Spread: a division (2.5 ULP + 0.5) then a subtraction (0.5 + 0.5 ULP
+            // of the larger operand).
+            |&(spread, aperture, focus), index, _| {
+                let quotient = aperture / focus.max(MIN_MAGNITUDE);
+                if index == 0 {
+                    0.0
+                } else {
+                    ulps(4.0, spread.abs() + quotient.abs())
+                }
+            },
+        )),
+        Box::new(per_component(
+            "width_at",
+            || (ray_cone(), distance()).boxed(),
+            |(cone, t)| rc::width_at(cone, t),
+            // width + spread * t, possibly fused: 2 ULP of the larger term.
+            |&(cone, t), _, _| ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()),
+        )),
+        Box::new(per_component(
+            "propagate",
+            || (ray_cone(), distance(), angle()).boxed(),
+            |(cone, t, beta)| rc::propagate(cone, t, beta),
+            // Width as width_at; spread: one correctly rounded addition, identical.
+            |&(cone, t, _), index, _| {
+                if index == 0 {
+                    ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs())
+                } else {
+                    0.0
+                }
+            },
+        )),
+        Box::new(per_component(
+            "normal_spread_angle",
+            || (small_vec3(), small_vec3()).boxed(),
+            |(dn_dx, dn_dy)| rc::normal_spread_angle(dn_dx, dn_dy),
+            // sqrt of a 6-term sum (3 ULP of the sum -> 1.5 relative, sqrt ~4.5, mirror 1): 9 ULP
+            // on the length, halved and propagated through atan, doubled; plus atan's 4096 ULP.
+            |&(dn_dx, dn_dy), _, _| {
+                let length = rc::normal_spread_angle_small(dn_dx, dn_dy);
+                2.0 * atan_error(0.5 * length, ulps(9.0, 0.5 * length))
+            },
+        )),
+        Box::new(per_component(
+            "normal_spread_angle_small",
+            || (small_vec3(), small_vec3()).boxed(),
+            |(dn_dx, dn_dy)| rc::normal_spread_angle_small(dn_dx, dn_dy),
+            // As above, without atan: 9 ULP.
+            |_, _, expected| ulps(9.0, expected),
+        )),
+        Box::new(per_component(
+            "curvature_sign",
+            || (small_vec3(), small_vec3(), small_vec3(), small_vec3()).boxed(),
+            |(dp_dx, dp_dy, dn_dx, dn_dy)| rc::curvature_sign(dp_dx, dp_dy, dn_dx, dn_dy),
+            // Exact, unless the sum is within its rounding error (6 terms, 8 ULP) of zero: then
+            // either sign is right.
+            |&(dp_dx, dp_dy, dn_dx, dn_dy), _, _| {
+                let sum = dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy);
+                let terms = (dp_dx * dn_dx).abs().element_sum() + (dp_dy * dn_dy).abs().element_sum();
+                if sum.abs() <= 8.0 * ULP * terms {
+                    2.0
+                } else {
+                    0.0
+                }
+            },
+        )),
+        Box::new(per_component(
+            "surface_spread_angle",
+            || {
+                (
+                    angle(),
+                    prop::sample::select(vec![1.0f32, -1.0]),
+                    -4.0f32..4.0,
+                    angle(),
+                )
+                    .boxed()
+            },
+            |(phi, sign, k1, k2)| rc::surface_spread_angle(phi, sign, k1, k2),
+            // Three products and a sum, possibly fused: 4 ULP of the larger term.
+            |&(phi, sign, k1, k2), _, _| ulps(4.0, (2.0 * k1 * sign * phi).abs() + k2.abs()),
+        )),
+        Box::new(per_component(
+            "edge_curvature",
+            || (vec3(), vec3(), small_vec3(), small_vec3()).boxed(),
+            |(p_i, p_j, n_i, n_j)| rc::edge_curvature(p_i, p_j, n_i, n_j),
+            |&(p_i, p_j, n_i, n_j), _, _| edge_curvature_error(p_i, p_j, n_i, n_j),
+        )),
+        Box::new(per_component(
+            "triangle_curvature",
+            || {
+                (triangle(), (small_vec3(), small_vec3(), small_vec3()))
+                    .prop_map(|(p, n)| (p[0], p[1], p[2], n.0, n.1, n.2))
+                    .boxed()
+            },
+            |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
+            // The three edge errors, then two additions and a division by 3 (5 ULP of the sum of
+            // magnitudes), all divided by 3.
+            |&(p0, p1, p2, n0, n1, n2), _, _| {
+                let edges = [(p0, p1, n0, n1), (p1, p2, n1, n2), (p2, p0, n2, n0)];
+                let errors: f32 = edges
+                    .iter()
+                    .map(|&(a, b, m, n)| edge_curvature_error(a, b, m, n))
+                    .sum();
+                let sizes: f32 = edges
+                    .iter()
+                    .map(|&(a, b, m, n)| rc::edge_curvature(a, b, m, n).abs())
+                    .sum();
+                (errors + ulps(5.0, sizes)) / 3.0
+            },
+        )),
+        Box::new(per_component(
+            "curvature_spread_angle",
+            || {
+                (scalar(), scalar(), normal_and_direction())
+                    .prop_map(|(k, w, (n, d))| (k, w, n, d))
+                    .boxed()
+            },
+            |(curvature, width, normal, direction)| {
+                rc::curvature_spread_angle(curvature, width, normal, direction)
+            },
+            // Relative: two products and a division (5 ULP), plus the dot's rounding over |cos|.
+            |&(_, _, normal, direction), _, expected| {
+                ulps(5.0, expected)
+                    + expected.abs() * dot_error(normal, direction) / clamped_cos(normal, direction)
+            },
+        )),
+        Box::new(per_component(
+            "world_footprint",
+            || {
+                (ray_cone(), distance(), normal_and_direction())
+                    .prop_map(|(c, t, (n, d))| (c, t, n, d))
+                    .boxed()
+            },
+            |(cone, t, normal, direction)| rc::world_footprint(cone, t, normal, direction),
+            // The width's error (as width_at) over |cos|, the division (3 ULP), and the dot's
+            // rounding over |cos| as a relative error.
+            |&(cone, t, normal, direction), _, expected| {
+                let cos = clamped_cos(normal, direction);
+                ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()) / cos
+                    + ulps(3.0, expected)
+                    + expected.abs() * dot_error(normal, direction) / cos
+            },
+        )),
+        Box::new(per_component(
+            "triangle_world_area2",
+            || triangle().prop_map(|p| (p[0], p[1], p[2])).boxed(),
+            |(p0, p1, p2)| rc::triangle_world_area2(p0, p1, p2),
+            |&(p0, p1, p2), _, _| world_area2_error([p0, p1, p2]),
+        )),
+        Box::new(per_component(
+            "triangle_uv_area2",
+            || uv_triangle().prop_map(|uv| (uv[0], uv[1], uv[2])).boxed(),
+            |(uv0, uv1, uv2)| rc::triangle_uv_area2(uv0, uv1, uv2),
+            |&(uv0, uv1, uv2), _, _| uv_area2_error([uv0, uv1, uv2]),
+        )),
+        Box::new(per_component(
+            "texel_density",
+            || {
+                (triangle(), uv_triangle())
+                    .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
+                    .boxed()
+            },
+            |(p0, p1, p2, uv0, uv1, uv2)| rc::texel_density(p0, p1, p2, uv0, uv1, uv2),
+            // The areas' errors through sqrt(uv) / sqrt(max(world, MIN)), plus two square roots
+            // (4.5 ULP each), the division (2.5) and the mirror's 3.
+            |&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
+                let min = f64::from(MIN_MAGNITUDE);
+                area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
+                    uv.sqrt() / world.max(min).sqrt()
+                }) + ulps(14.5, expected)
+            },
+        )),
+        Box::new(per_component(
+            "triangle_base_lod",
+            || {
+                (triangle(), uv_triangle())
+                    .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
+                    .boxed()
+            },
+            |(p0, p1, p2, uv0, uv1, uv2)| rc::triangle_base_lod(p0, p1, p2, uv0, uv1, uv2),
+            // The areas' errors through 0.5 * (log2 uv - log2 world) with the clamps, half of each
+            // log2's error, and the subtraction and halving (2 ULP).
+            |&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
+                let min = f64::from(MIN_MAGNITUDE);
+                let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
+                let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
+                area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
+                    0.5 * (uv.max(min).log2() - world.max(min).log2())
+                }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
+                    + ulps(2.0, expected)
+            },
+        )),
+        Box::new(texture_lod()),
+        Box::new(per_component(
+            "texture_gradient",
+            || (scalar(), -1.0f32..4.0).boxed(),
+            |(uv_footprint, scale)| rc::texture_gradient(uv_footprint, scale),
+            // One correctly rounded product.
+            |_, _, _| f32::MIN_POSITIVE,
+        )),
+        Box::new(per_component(
+            "environment_lod",
+            || (angle(), pixels()).boxed(),
+            |(spread, height)| rc::environment_lod(spread, height),
+            // A product and a division (3.5 ULP + the mirror's 1) through log2 (/ ln 2), plus log2's
+            // own error.
+            |_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected),
+        )),
+    ]
+}
+
+/// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
+pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);
+
+/// The check of `rf_texture_lod` (also measured by the harness benchmark).
+pub fn texture_lod() -> FunctionCheck<TextureLodArgs, f32> {
+    per_component(
+        "texture_lod",
+        || {
+            (
+                -20.0f32..20.0,
+                scalar(),
+                (pixels(), pixels()),
+                normal_and_direction(),
+            )
+                .prop_map(|(base, width, (w, h), (n, d))| (base, width, Vec2::new(w, h), n, d))
+                .boxed()
+        },
+        |(base, width, size, normal, direction)| rc::texture_lod(base, width, size, normal, direction),
+        // Four log2 (their own errors), the dot's rounding through log2 (relative error / ln 2),
+        // and four additions (4 ULP of the sum of term magnitudes).
+        |&(base, width, size, normal, direction), _, _| {
+            let size = size.max(Vec2::ONE);
+            let logs = [
+                width.abs().max(MIN_MAGNITUDE).log2(),
+                size.x.log2(),
+                size.y.log2(),
+            ];
+            let cos = clamped_cos(normal, direction);
+            let log_cos = cos.log2();
+            log2_error(logs[0])
+                + 0.5 * (log2_error(logs[1]) + log2_error(logs[2]))
+                + log2_error(log_cos)
+                + dot_error(normal, direction) / cos / std::f32::consts::LN_2
+                + ulps(
+                    4.0,
+                    base.abs() + logs[0].abs() + 0.5 * (logs[1] + logs[2]) + log_cos.abs(),
+                )
+        },
+    )
+}

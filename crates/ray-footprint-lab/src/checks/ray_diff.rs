@@ -1,0 +1,902 @@
+//! Agreement checks of the ray_diff module, one per function, in the module's order.
+//!
+//! Every tolerance is the width of an enclosure (`bound`): the check re-evaluates its function in
+//! interval arithmetic on the same inputs, widening after each operation by the rounding error that
+//! Vulkan's precision rules allow the device (and that the mirror makes), so both results lie inside.
+//! The `b_*` functions below are those re-evaluations, one per shader function, in the module's
+//! order of operations.
+
+use super::enclosed;
+use super::strategy::{
+    distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle, unit_vec3,
+    uv_triangle, vec3,
+};
+use glam::{Mat4, Quat, Vec2, Vec3, Vec4Swizzles};
+use proptest::prelude::*;
+use ray_footprint::ray_diff::{
+    self as rd, Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, DIFF_MAX_FOV_Y,
+    DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
+};
+use shader_proptest::interval::{
+    interval2 as v2, interval3 as v3, mat_vec, Interval as I, Interval2 as V2, Interval3 as V3,
+    IntervalVec as V, F32,
+};
+use shader_proptest::{Check, FunctionCheck};
+
+// ---------------------------------------------------------------------------------------------
+// Strategies
+// ---------------------------------------------------------------------------------------------
+
+/// A pixel inside an image (or, sometimes, outside it) and the image size (from [`pixels`]).
+pub fn pixel_and_size() -> BoxedStrategy<(Vec2, Vec2)> {
+    ((pixels(), pixels()), (0.0f32..1.0, 0.0f32..1.0), any::<bool>())
+        .prop_map(|((w, h), (fx, fy), outside)| {
+            let size = Vec2::new(w, h);
+            let pixel = if outside {
+                Vec2::new(fx, fy) * 40000.0 - 20000.0
+            } else {
+                (Vec2::new(fx, fy) * size.max(Vec2::ONE)).floor()
+            };
+            (pixel, size)
+        })
+        .boxed()
+}
+
+/// A rotation (axis-aligned ones included).
+fn rotation() -> BoxedStrategy<Quat> {
+    (unit_vec3(), 0.0f32..std::f32::consts::TAU)
+        .prop_map(|(axis, angle)| Quat::from_axis_angle(axis, angle))
+        .boxed()
+}
+
+/// A camera basis: right, up and view (towards the eye), orthonormal up to rounding.
+pub fn camera_basis() -> BoxedStrategy<(Vec3, Vec3, Vec3)> {
+    rotation()
+        .prop_map(|q| (q * Vec3::X, q * Vec3::Y, q * Vec3::Z))
+        .boxed()
+}
+
+/// A rigid transform with a translation from [`vec3`] (a camera-to-world matrix).
+pub fn rigid() -> BoxedStrategy<Mat4> {
+    (rotation(), vec3())
+        .prop_map(|(q, t)| Mat4::from_rotation_translation(q, t))
+        .boxed()
+}
+
+/// An inverse projection matrix: perspective (OpenGL or Vulkan, y-flipped), or arbitrary with
+/// moderate entries.
+pub fn proj_inv() -> BoxedStrategy<Mat4> {
+    let perspective =
+        (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>()).prop_map(|(fov, aspect, near, vulkan)| {
+            let projection = if vulkan {
+                glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)
+            } else {
+                glam::camera::rh::proj::opengl::perspective(fov, aspect, near, near * 1000.0)
+            };
+            projection.inverse()
+        });
+    let arbitrary = prop::array::uniform16(-10.0f32..10.0).prop_map(|cols| Mat4::from_cols_array(&cols));
+    prop_oneof![3 => perspective, 1 => arbitrary].boxed()
+}
+
+/// A differential vector: ordinary, small (pixel-sized), or anywhere in the domain.
+fn differential_vec3() -> BoxedStrategy<Vec3> {
+    prop_oneof![
+        3 => small_vec3(),
+        2 => small_vec3().prop_map(|v| v * 1.0e-4),
+        1 => vec3(),
+        1 => Just(Vec3::ZERO),
+    ]
+    .boxed()
+}
+
+/// A ray differential: origin differentials from `differential_vec3`, direction differentials
+/// ordinary or pixel-sized.
+pub fn ray_diff() -> BoxedStrategy<RayDiff> {
+    let direction = || prop_oneof![small_vec3(), small_vec3().prop_map(|v| v * 1.0e-4)];
+    (differential_vec3(), differential_vec3(), direction(), direction())
+        .prop_map(|(a, b, c, d)| RayDiff::new(a, b, c, d))
+        .boxed()
+}
+
+/// `(du, dv)` derivatives: ordinary, tiny or huge.
+fn derivatives2() -> BoxedStrategy<Derivatives2> {
+    let component = || prop_oneof![3 => -10.0f32..10.0, 1 => scalar()];
+    (component(), component(), component(), component())
+        .prop_map(|(a, b, c, d)| Derivatives2::new(Vec2::new(a, b), Vec2::new(c, d)))
+        .boxed()
+}
+
+/// Vector derivatives from [`differential_vec3`].
+fn derivatives3() -> BoxedStrategy<Derivatives3> {
+    (differential_vec3(), differential_vec3())
+        .prop_map(|(dx, dy)| Derivatives3::new(dx, dy))
+        .boxed()
+}
+
+/// A hit's barycentrics `(w, u, v)`, inside the triangle or not, summing to 1 up to rounding.
+fn hit_barycentrics() -> BoxedStrategy<Vec3> {
+    (-1.0f32..2.0, -1.0f32..2.0)
+        .prop_map(|(u, v)| Vec3::new(1.0 - u - v, u, v))
+        .boxed()
+}
+
+/// A world-to-object matrix: rotation, uniform scale in `[1e-3, 1e3]`, translation up to
+/// `10^max_exponent`.
+fn world_to_object(max_exponent: f32) -> BoxedStrategy<Mat4> {
+    (
+        rotation(),
+        -3.0f32..3.0,
+        small_vec3(),
+        -9.0f32..max_exponent + 1.0,
+    )
+        .prop_map(|(q, scale, t, e)| {
+            Mat4::from_scale_rotation_translation(Vec3::splat(10f32.powf(scale)), q, t * 10f32.powf(e) / 10.0)
+        })
+        .boxed()
+}
+
+/// A world ray origin up to `10^max_exponent`.
+fn world_origin(max_exponent: f32) -> BoxedStrategy<Vec3> {
+    (small_vec3(), -12.0f32..max_exponent - 1.0)
+        .prop_map(|(v, e)| v * 10f32.powf(e))
+        .boxed()
+}
+
+/// A unit direction or a moderately scaled one (functions that take non-normalized directions).
+fn any_direction() -> BoxedStrategy<Vec3> {
+    prop_oneof![3 => unit_vec3(), 1 => small_vec3()].boxed()
+}
+
+/// A G-buffer pixel: unit eye direction, distance, unit normal.
+fn gbuffer_sample() -> BoxedStrategy<GBufferSample> {
+    (normal_and_direction(), distance())
+        .prop_map(|((normal, eye_direction), distance)| GBufferSample {
+            eye_direction,
+            distance,
+            normal,
+        })
+        .boxed()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Enclosures of the module's functions (same order of operations as src/ray_diff.rs)
+// ---------------------------------------------------------------------------------------------
+
+fn s(x: f32) -> I {
+    I::exact(x)
+}
+
+fn zero3() -> V3 {
+    V([I::c(0.0); 3])
+}
+
+/// A `RayDiff`'s 16 components, pads exactly 0.
+fn b_ray_diff(o_dx: V3, o_dy: V3, d_dx: V3, d_dy: V3) -> Vec<I> {
+    [o_dx, o_dy, d_dx, d_dy]
+        .iter()
+        .flat_map(|v| v.components().into_iter().chain([I::c(0.0)]))
+        .collect()
+}
+
+fn b_derivatives2(dx: V2, dy: V2) -> Vec<I> {
+    [dx.components(), dy.components()].concat()
+}
+
+fn b_derivatives3(dx: V3, dy: V3) -> Vec<I> {
+    [dx.components(), dy.components()].concat()
+}
+
+fn b_eye_ray_extent(image_size: Vec2, fov_y: f32) -> V2 {
+    let size = image_size.max(Vec2::ONE);
+    let f = I::tan_exact(0.5 * fov_y.clamp(0.0, DIFF_MAX_FOV_Y));
+    V([s(size.x) / s(size.y) * f, f])
+}
+
+fn b_pixel_ndc(pixel: Vec2, image_size: Vec2) -> V2 {
+    let size = image_size.max(Vec2::ONE);
+    V(std::array::from_fn(|i| {
+        (s(pixel[i]) + I::c(0.5)) / s(size[i]) * I::c(2.0) - I::c(1.0)
+    }))
+}
+
+type Camera = (Vec2, Vec2, f32, Vec3, Vec3, Vec3);
+
+fn b_eye_ray_direction(&(pixel, size, fov, right, up, view): &Camera) -> V3 {
+    let c = b_pixel_ndc(pixel, size);
+    let extent = b_eye_ray_extent(size, fov);
+    v3(right) * (c.0[0] * extent.0[0]) - v3(up) * (c.0[1] * extent.0[1]) - v3(view)
+}
+
+fn b_normalized_derivative(v: V3, dv: V3) -> V3 {
+    let length2 = v.dot(v).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    (dv - v * (v.dot(dv) / length2)) / length2.sqrt()
+}
+
+fn b_eye_ray_diff(camera: &Camera) -> Vec<I> {
+    let &(_, image_size, fov, right, up, _) = camera;
+    let d = b_eye_ray_direction(camera);
+    let size = image_size.max(Vec2::ONE);
+    let extent = b_eye_ray_extent(image_size, fov);
+    let dd_dx = v3(right) * (I::c(2.0) * extent.0[0] / s(size.x));
+    let dd_dy = v3(up) * -(I::c(2.0) * extent.0[1] / s(size.y));
+    b_ray_diff(
+        zero3(),
+        zero3(),
+        b_normalized_derivative(d, dd_dx),
+        b_normalized_derivative(d, dd_dy),
+    )
+}
+
+fn b_safe_normalize(v: V3) -> V3 {
+    v / v.dot(v).max_c(f64::from(DIFF_MIN_MAGNITUDE)).sqrt()
+}
+
+fn b_matrix_ray_direction(ndc: V2, view_inv: Mat4, proj_inv: Mat4) -> V3 {
+    let far_point = mat_vec(proj_inv, V([ndc.0[0], ndc.0[1], I::c(1.0)]), I::c(1.0), F32);
+    mat_vec(view_inv, b_safe_normalize(far_point), I::c(0.0), F32)
+}
+
+/// The arguments of the matrix camera functions: pixel, image size, view_inv, proj_inv.
+pub type Matrices = (Vec2, Vec2, Mat4, Mat4);
+
+fn b_eye_ray_direction_from_matrices(&(pixel, size, view_inv, proj_inv): &Matrices) -> V3 {
+    b_matrix_ray_direction(b_pixel_ndc(pixel, size), view_inv, proj_inv)
+}
+
+fn b_eye_ray_diff_from_matrices(&(pixel, image_size, view_inv, proj_inv): &Matrices) -> Vec<I> {
+    let size = image_size.max(Vec2::ONE);
+    let ndc = b_pixel_ndc(pixel, image_size);
+    let far_point = mat_vec(proj_inv, V([ndc.0[0], ndc.0[1], I::c(1.0)]), I::c(1.0), F32);
+    let dfar_dx = v3(proj_inv.x_axis.xyz()) * (I::c(2.0) / s(size.x));
+    let dfar_dy = v3(proj_inv.y_axis.xyz()) * (I::c(2.0) / s(size.y));
+    let dd_dx = mat_vec(
+        view_inv,
+        b_normalized_derivative(far_point, dfar_dx),
+        I::c(0.0),
+        F32,
+    );
+    let dd_dy = mat_vec(
+        view_inv,
+        b_normalized_derivative(far_point, dfar_dy),
+        I::c(0.0),
+        F32,
+    );
+    b_ray_diff(zero3(), zero3(), dd_dx, dd_dy)
+}
+
+fn b_pixel_directions(&(pixel, size, view_inv, proj_inv): &Matrices) -> Vec<I> {
+    let ndc = b_pixel_ndc(pixel, size);
+    let next = b_pixel_ndc(pixel + 1.0, size);
+    let right = b_matrix_ray_direction(V([next.0[0], ndc.0[1]]), view_inv, proj_inv);
+    let below = b_matrix_ray_direction(V([ndc.0[0], next.0[1]]), view_inv, proj_inv);
+    b_derivatives3(right, below)
+}
+
+fn b_transferred_origin(d_origin: Vec3, d_direction: Vec3, direction: Vec3, t: f32, normal: Vec3) -> V3 {
+    let cosine = v3(direction).dot(v3(normal));
+    let q = v3(d_origin) + v3(d_direction) * s(t);
+    let dt = (-q.dot(v3(normal))).div_away(cosine, f64::from(DIFF_MIN_COS));
+    q + v3(direction) * dt
+}
+
+fn b_transfer(&(diff, direction, t, normal): &(RayDiff, Vec3, f32, Vec3)) -> Vec<I> {
+    b_ray_diff(
+        b_transferred_origin(diff.d_origin_dx, diff.d_direction_dx, direction, t, normal),
+        b_transferred_origin(diff.d_origin_dy, diff.d_direction_dy, direction, t, normal),
+        v3(diff.d_direction_dx),
+        v3(diff.d_direction_dy),
+    )
+}
+
+/// `x / k` clamped to `DIFF_MAX_VALUE`, `k` clamped away from 0 to `DIFF_MIN_MAGNITUDE`.
+fn b_barycentric_quotient(numerator: I, k: I) -> I {
+    let max = f64::from(DIFF_MAX_VALUE);
+    numerator
+        .div_away(k, f64::from(DIFF_MIN_MAGNITUDE))
+        .clamp_c(-max, max)
+}
+
+/// The arguments of `barycentric_derivatives`: differential, direction, t, the triangle.
+pub type BarycentricArgs = (RayDiff, Vec3, f32, Vec3, Vec3, Vec3);
+
+fn b_barycentric_derivatives(&(diff, direction, t, p0, p1, p2): &BarycentricArgs) -> Vec<I> {
+    let d = v3(direction);
+    let e1 = v3(p1) - v3(p0);
+    let e2 = v3(p2) - v3(p0);
+    let k = e1.cross(e2).dot(d);
+    let cu = e2.cross(d);
+    let cv = d.cross(e1);
+    let q = v3(diff.d_origin_dx) + v3(diff.d_direction_dx) * s(t);
+    let r = v3(diff.d_origin_dy) + v3(diff.d_direction_dy) * s(t);
+    let quotient = |n: I| b_barycentric_quotient(n, k);
+    b_derivatives2(
+        V([quotient(cu.dot(q)), quotient(cv.dot(q))]),
+        V([quotient(cu.dot(r)), quotient(cv.dot(r))]),
+    )
+}
+
+fn b_texture_derivatives(b: Derivatives2, t0: Vec2, t1: Vec2, t2: Vec2) -> (V2, V2) {
+    let g1 = v2(t1) - v2(t0);
+    let g2 = v2(t2) - v2(t0);
+    (g1 * s(b.dx.x) + g2 * s(b.dx.y), g1 * s(b.dy.x) + g2 * s(b.dy.y))
+}
+
+fn b_secondary_origin_derivatives(&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3)) -> Vec<I> {
+    let e1 = v3(p1) - v3(p0);
+    let e2 = v3(p2) - v3(p0);
+    b_derivatives3(e1 * s(b.dx.x) + e2 * s(b.dx.y), e1 * s(b.dy.x) + e2 * s(b.dy.y))
+}
+
+fn b_lod_isotropic(g: Derivatives2) -> I {
+    let rho2 = v2(g.dx).dot(v2(g.dx)).max(v2(g.dy).dot(v2(g.dy)));
+    I::c(0.5) * rho2.max_c(f64::from(DIFF_MIN_MAGNITUDE)).log2()
+}
+
+fn b_lod_box(g: Derivatives2) -> I {
+    let extent = v2(g.dx).abs() + v2(g.dy).abs();
+    extent.0[0]
+        .max(extent.0[1])
+        .max_c(f64::from(DIFF_MIN_MAGNITUDE))
+        .log2()
+}
+
+type NormalArgs = (Vec3, Vec3, Vec3, Vec2, Derivatives2);
+
+fn b_normal_derivatives(&(n0, n1, n2, uv, b): &NormalArgs) -> Vec<I> {
+    let (n0, n1, n2) = (v3(n0), v3(n1), v3(n2));
+    let n = n0 * (I::c(1.0) - s(uv.x) - s(uv.y)) + n1 * s(uv.x) + n2 * s(uv.y);
+    let dn_dx = (n1 - n0) * s(b.dx.x) + (n2 - n0) * s(b.dx.y);
+    let dn_dy = (n1 - n0) * s(b.dy.x) + (n2 - n0) * s(b.dy.y);
+    b_derivatives3(
+        b_normalized_derivative(n, dn_dx),
+        b_normalized_derivative(n, dn_dy),
+    )
+}
+
+fn b_reflected_direction(d_direction: Vec3, direction: Vec3, normal: Vec3, d_normal: Vec3) -> V3 {
+    let (dd, d, n, dn) = (v3(d_direction), v3(direction), v3(normal), v3(d_normal));
+    let cosine = d.dot(n);
+    dd - (dn * cosine + n * (dd.dot(n) + d.dot(dn))) * I::c(2.0)
+}
+
+type ReflectArgs = (RayDiff, Vec3, Vec3, Derivatives3);
+
+fn b_reflect_ray_diff(&(diff, direction, normal, dn): &ReflectArgs) -> Vec<I> {
+    b_ray_diff(
+        v3(diff.d_origin_dx),
+        v3(diff.d_origin_dy),
+        b_reflected_direction(diff.d_direction_dx, direction, normal, dn.dx),
+        b_reflected_direction(diff.d_direction_dy, direction, normal, dn.dy),
+    )
+}
+
+type RefractArgs = (RayDiff, Vec3, Vec3, Derivatives3, f32);
+
+/// The refracted branch, for the part of `k`'s interval that is `>= 0`.
+fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I> {
+    let (d, n, eta) = (v3(direction), v3(normal), s(eta));
+    let cosine = d.dot(n);
+    let root = I {
+        lo: k.lo.max(0.0),
+        ..k
+    }
+    .sqrt();
+    let transmitted_cos = if cosine.hi <= 0.0 {
+        -root
+    } else if cosine.lo > 0.0 {
+        root
+    } else {
+        root.hull(-root)
+    };
+    let mu = eta * cosine - transmitted_cos;
+    let rate = eta - (eta * eta * cosine).div_away(transmitted_cos, f64::from(DIFF_MIN_COS));
+    let refracted = |dd: Vec3, dnormal: Vec3| {
+        let (dd, dnormal) = (v3(dd), v3(dnormal));
+        let d_cos = dd.dot(n) + d.dot(dnormal);
+        dd * eta - (dnormal * mu + n * (rate * d_cos))
+    };
+    b_ray_diff(
+        v3(diff.d_origin_dx),
+        v3(diff.d_origin_dy),
+        refracted(diff.d_direction_dx, dn.dx),
+        refracted(diff.d_direction_dy, dn.dy),
+    )
+}
+
+/// Either branch, or the hull of both (flag `[0, 1]`) when `k`'s sign is uncertain.
+fn b_refract_ray_diff(args: &RefractArgs) -> Vec<I> {
+    let &(diff, direction, normal, dn, eta) = args;
+    let (d, n, eta_i) = (v3(direction), v3(normal), s(eta));
+    let cosine = d.dot(n);
+    let k = I::c(1.0) - eta_i * eta_i * (I::c(1.0) - cosine * cosine);
+    let reflected = || {
+        [
+            b_reflect_ray_diff(&(diff, direction, normal, dn)),
+            vec![I::c(1.0)],
+        ]
+        .concat()
+    };
+    let refracted = || [b_refracted(args, k), vec![I::c(0.0)]].concat();
+    if k.hi < 0.0 {
+        reflected()
+    } else if k.lo >= 0.0 {
+        refracted()
+    } else {
+        reflected()
+            .into_iter()
+            .zip(refracted())
+            .map(|(a, b)| a.hull(b))
+            .collect()
+    }
+}
+
+/// The neighbour choice, in f32 exactly as the device makes it (a correctly rounded subtraction and
+/// comparisons: no rounding freedom).
+fn use_backward(
+    center: GBufferSample,
+    forward: GBufferSample,
+    backward: GBufferSample,
+    epsilon: f32,
+) -> bool {
+    let forward_step = (forward.distance - center.distance).abs();
+    let backward_step = (backward.distance - center.distance).abs();
+    forward_step > epsilon && backward_step < forward_step
+}
+
+fn b_gbuffer_steps(start: GBufferSample, end: GBufferSample) -> (V3, V3) {
+    let reflect = |g: GBufferSample| {
+        let (e, n) = (v3(g.eye_direction), v3(g.normal));
+        e - n * (I::c(2.0) * n.dot(e))
+    };
+    (
+        v3(end.eye_direction) * s(end.distance) - v3(start.eye_direction) * s(start.distance),
+        reflect(end) - reflect(start),
+    )
+}
+
+type GBufferArgs = (
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    f32,
+);
+
+fn b_gbuffer_ray_diff(&(center, right, left, below, above, epsilon): &GBufferArgs) -> Vec<I> {
+    let pair = |forward, backward| {
+        if use_backward(center, forward, backward, epsilon) {
+            b_gbuffer_steps(backward, center)
+        } else {
+            b_gbuffer_steps(center, forward)
+        }
+    };
+    let (x, y) = (pair(right, left), pair(below, above));
+    b_ray_diff(x.0, y.0, x.1, y.1)
+}
+
+fn b_tangent_plane_offset(rd: Vec3, rd_neighbour: Vec3, t: f32, normal: Vec3) -> V3 {
+    let (rd, rdn, n) = (v3(rd), v3(rd_neighbour), v3(normal));
+    let ratio = rd.dot(n).div_away(rdn.dot(n), f64::from(DIFF_MIN_COS));
+    (rdn * ratio - rd) * s(t)
+}
+
+fn b_triplanar_weights(normal: Vec3, sharpness: f32) -> Vec<I> {
+    let k = sharpness.clamp(0.0, DIFF_MAX_SHARPNESS);
+    let m: [I; 3] = std::array::from_fn(|i| I::pow_exact(normal[i].abs().max(DIFF_MIN_MAGNITUDE), k));
+    let sum = (m[0] + m[1] + m[2]).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    m.iter().map(|&x| x / sum).collect()
+}
+
+fn b_scaled_length(v: V3) -> I {
+    let a = v.abs();
+    let m = a.0[0]
+        .max(a.0[1])
+        .max(a.0[2].max_c(f64::from(DIFF_MIN_MAGNITUDE)));
+    let unit = v / m;
+    m * unit.dot(unit).sqrt()
+}
+
+fn b_intersect_triangle_plane(origin: V3, direction: V3, p0: V3, p1: V3, p2: V3) -> V3 {
+    let e1 = p1 - p0;
+    let e2 = p2 - p0;
+    let s0 = origin - p0;
+    let k = e1.cross(e2).dot(direction);
+    let u = b_barycentric_quotient(e2.cross(direction).dot(s0), k);
+    let v = b_barycentric_quotient(direction.cross(e1).dot(s0), k);
+    V([I::c(1.0) - u - v, u, v])
+}
+
+/// The arguments of the re-intersection functions (here and in the f64 module).
+pub type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
+
+fn b_barycentric_offsets(&(w2o, origin, p0, p1, p2, dir_x, dir_y, hit): &OffsetArgs) -> (V3, V3) {
+    let transform = |p: V3| mat_vec(w2o, p, I::c(1.0), F32);
+    let object_origin = transform(v3(origin));
+    let object_x = transform(v3(origin) + v3(dir_x)) - object_origin;
+    let object_y = transform(v3(origin) + v3(dir_y)) - object_origin;
+    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    (
+        b_intersect_triangle_plane(object_origin, object_x, p0, p1, p2) - v3(hit),
+        b_intersect_triangle_plane(object_origin, object_y, p0, p1, p2) - v3(hit),
+    )
+}
+
+fn b_cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> Vec<I> {
+    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    let area2 = b_scaled_length((p1 - p0).cross(p2 - p0)).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    [p2 - p1, p2 - p0, p1 - p0]
+        .iter()
+        .map(|&edge| (s(footprint.abs()) * b_scaled_length(edge) / area2).min_c(f64::from(DIFF_MAX_VALUE)))
+        .collect()
+}
+
+/// Largest exponent of the world origin and translation for the f32 re-intersection checks. Beyond
+/// about 1e6 the f32 sum `O + direction` loses the unit direction entirely and both sides compute
+/// rounding noise (the f64 variant exists for that range, and its checks go to 1e8).
+pub const F32_ORIGIN_EXPONENT: f32 = 5.0;
+
+/// Inputs of the re-intersection functions: a transform and a world origin up to
+/// `10^max_exponent`, an object-space triangle, two unit neighbour directions and hit barycentrics.
+pub fn offset_args(max_exponent: f32) -> BoxedStrategy<OffsetArgs> {
+    (
+        (world_to_object(max_exponent), world_origin(max_exponent)),
+        triangle(),
+        (unit_vec3(), unit_vec3()),
+        hit_barycentrics(),
+    )
+        .prop_map(|((w2o, origin), p, (x, y), hit)| (w2o, origin, p[0], p[1], p[2], x, y, hit))
+        .boxed()
+}
+
+fn camera() -> BoxedStrategy<Camera> {
+    (pixel_and_size(), fov_y(), camera_basis())
+        .prop_map(|((pixel, size), fov, (r, u, v))| (pixel, size, fov, r, u, v))
+        .boxed()
+}
+
+fn matrices() -> BoxedStrategy<Matrices> {
+    (pixel_and_size(), rigid(), proj_inv())
+        .prop_map(|((pixel, size), view_inv, proj_inv)| (pixel, size, view_inv, proj_inv))
+        .boxed()
+}
+
+/// `rf_eye_ray_diff_from_matrices`: the enclosure of every component.
+pub fn eye_ray_diff_from_matrices() -> FunctionCheck<Matrices, RayDiff> {
+    enclosed(
+        "eye_ray_diff_from_matrices",
+        matrices,
+        |(pixel, size, view_inv, proj_inv)| rd::eye_ray_diff_from_matrices(pixel, size, view_inv, proj_inv),
+        b_eye_ray_diff_from_matrices,
+    )
+}
+
+/// `rf_pixel_directions`: the enclosure of both directions.
+pub fn pixel_directions() -> FunctionCheck<Matrices, NeighbourDirections> {
+    enclosed(
+        "pixel_directions",
+        matrices,
+        |(pixel, size, view_inv, proj_inv)| rd::pixel_directions(pixel, size, view_inv, proj_inv),
+        b_pixel_directions,
+    )
+}
+
+/// `rf_barycentric_derivatives`: the enclosure of the four derivatives.
+pub fn barycentric_derivatives() -> FunctionCheck<BarycentricArgs, Derivatives2> {
+    enclosed(
+        "barycentric_derivatives",
+        || {
+            (ray_diff(), any_direction(), distance(), triangle())
+                .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
+                .boxed()
+        },
+        |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
+        b_barycentric_derivatives,
+    )
+}
+
+/// `rf_texture_derivatives`: the enclosure of the UV gradients.
+pub fn texture_derivatives() -> FunctionCheck<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2> {
+    enclosed(
+        "texture_derivatives",
+        || {
+            (derivatives2(), uv_triangle())
+                .prop_map(|(b, t)| (b, t[0], t[1], t[2]))
+                .boxed()
+        },
+        |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
+        |&(b, t0, t1, t2)| {
+            let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
+            b_derivatives2(dx, dy)
+        },
+    )
+}
+
+/// `rf_lod_isotropic`: the enclosure of the LOD.
+pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
+    enclosed(
+        "lod_isotropic",
+        || derivatives2().prop_map(|g| (g,)).boxed(),
+        |(g,)| rd::lod_isotropic(g),
+        |&(g,)| vec![b_lod_isotropic(g)],
+    )
+}
+
+/// `rf_barycentric_offsets`: the enclosure of the signed differences.
+pub fn barycentric_offsets() -> FunctionCheck<OffsetArgs, Derivatives3> {
+    enclosed(
+        "barycentric_offsets",
+        || offset_args(F32_ORIGIN_EXPONENT),
+        // Where a neighbour ray is parallel to the triangle plane within rounding (its determinant
+        // `k` encloses 0), the device and the mirror may clamp to opposite +-DIFF_MAX_VALUE, and
+        // the enclosure (clamped to that range) is 2 * DIFF_MAX_VALUE wide: either side is right.
+        // Elsewhere the enclosure is tight. Origins stay below 1e5 (`F32_ORIGIN_EXPONENT`), where
+        // `O + direction` keeps the direction; beyond, the ray_diff_f64 module is the tool.
+        |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_offsets(m, o, p0, p1, p2, x, y, b),
+        |a| {
+            let (dx, dy) = b_barycentric_offsets(a);
+            b_derivatives3(dx, dy)
+        },
+    )
+}
+
+/// `rf_barycentric_deltas`: the enclosure of the deltas.
+pub fn barycentric_deltas() -> FunctionCheck<OffsetArgs, Vec3> {
+    enclosed(
+        "barycentric_deltas",
+        || offset_args(F32_ORIGIN_EXPONENT),
+        |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
+        |a| {
+            let (dx, dy) = b_barycentric_offsets(a);
+            (dx.abs() + dy.abs()).components()
+        },
+    )
+}
+
+/// `rf_uv_gradients_from_offsets`: the enclosure of the UV gradients.
+pub fn uv_gradients_from_offsets() -> FunctionCheck<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
+    enclosed(
+        "uv_gradients_from_offsets",
+        || {
+            (derivatives3(), uv_triangle())
+                .prop_map(|(o, uv)| (o, uv[0], uv[1], uv[2]))
+                .boxed()
+        },
+        |(o, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(o, uv0, uv1, uv2),
+        |&(o, uv0, uv1, uv2)| {
+            let sum = |w: Vec3| v2(uv0) * s(w.x) + v2(uv1) * s(w.y) + v2(uv2) * s(w.z);
+            b_derivatives2(sum(o.dx), sum(o.dy))
+        },
+    )
+}
+
+/// `rf_cone_barycentric_deltas`: the enclosure of the deltas.
+pub fn cone_barycentric_deltas() -> FunctionCheck<(f32, Vec3, Vec3, Vec3), Vec3> {
+    enclosed(
+        "cone_barycentric_deltas",
+        || {
+            (scalar(), triangle())
+                .prop_map(|(f, p)| (f, p[0], p[1], p[2]))
+                .boxed()
+        },
+        |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
+        b_cone_barycentric_deltas,
+    )
+}
+
+/// Every check of the module.
+pub fn checks() -> Vec<Box<dyn Check>> {
+    vec![
+        Box::new(enclosed(
+            "eye_ray_direction",
+            camera,
+            |(pixel, size, fov, r, u, v)| rd::eye_ray_direction(pixel, size, fov, r, u, v),
+            |a| b_eye_ray_direction(a).components(),
+        )),
+        Box::new(enclosed(
+            "normalized_derivative",
+            || (any_direction(), differential_vec3()).boxed(),
+            |(v, dv)| rd::normalized_derivative(v, dv),
+            |&(v, dv)| b_normalized_derivative(v3(v), v3(dv)).components(),
+        )),
+        Box::new(enclosed(
+            "eye_ray_diff",
+            camera,
+            |(pixel, size, fov, r, u, v)| rd::eye_ray_diff(pixel, size, fov, r, u, v),
+            b_eye_ray_diff,
+        )),
+        Box::new(enclosed(
+            "eye_ray_direction_from_matrices",
+            matrices,
+            |(pixel, size, view_inv, proj_inv)| {
+                rd::eye_ray_direction_from_matrices(pixel, size, view_inv, proj_inv)
+            },
+            |a| b_eye_ray_direction_from_matrices(a).components(),
+        )),
+        Box::new(eye_ray_diff_from_matrices()),
+        Box::new(pixel_directions()),
+        Box::new(enclosed(
+            "transfer",
+            || {
+                (ray_diff(), normal_and_direction(), distance())
+                    .prop_map(|(diff, (n, d), t)| (diff, d, t, n))
+                    .boxed()
+            },
+            |(diff, direction, t, normal)| rd::transfer(diff, direction, t, normal),
+            b_transfer,
+        )),
+        Box::new(barycentric_derivatives()),
+        Box::new(enclosed(
+            "barycentric_w_derivatives",
+            || derivatives2().prop_map(|b| (b,)).boxed(),
+            |(b,)| rd::barycentric_w_derivatives(b),
+            |&(b,)| {
+                let (dx, dy) = (v2(b.dx), v2(b.dy));
+                vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]]
+            },
+        )),
+        Box::new(texture_derivatives()),
+        Box::new(enclosed(
+            "texel_derivatives",
+            || {
+                (derivatives2(), uv_triangle(), (pixels(), pixels()))
+                    .prop_map(|(b, t, (w, h))| (b, t[0], t[1], t[2], Vec2::new(w, h)))
+                    .boxed()
+            },
+            |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
+            |&(b, t0, t1, t2, size)| {
+                let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
+                let size = v2(size.max(Vec2::ONE));
+                b_derivatives2(dx * size, dy * size)
+            },
+        )),
+        Box::new(enclosed(
+            "secondary_origin_derivatives",
+            || {
+                (derivatives2(), triangle())
+                    .prop_map(|(b, p)| (b, p[0], p[1], p[2]))
+                    .boxed()
+            },
+            |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
+            b_secondary_origin_derivatives,
+        )),
+        Box::new(lod_isotropic()),
+        Box::new(enclosed(
+            "lod_box",
+            || derivatives2().prop_map(|g| (g,)).boxed(),
+            |(g,)| rd::lod_box(g),
+            |&(g,)| vec![b_lod_box(g)],
+        )),
+        Box::new(enclosed(
+            "sample_grad_gradients",
+            || (derivatives2(), -1.0f32..4.0).boxed(),
+            |(g, scale)| rd::sample_grad_gradients(g, scale),
+            |&(g, scale)| {
+                let scale = s(scale.max(0.0));
+                b_derivatives2(v2(g.dx) * scale, v2(g.dy) * scale)
+            },
+        )),
+        Box::new(enclosed(
+            "normal_derivatives",
+            || {
+                (
+                    (unit_vec3(), unit_vec3(), unit_vec3()),
+                    (-1.0f32..2.0, -1.0f32..2.0),
+                    derivatives2(),
+                )
+                    .prop_map(|((n0, n1, n2), (u, v), b)| (n0, n1, n2, Vec2::new(u, v), b))
+                    .boxed()
+            },
+            |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
+            b_normal_derivatives,
+        )),
+        Box::new(enclosed(
+            "reflect_ray_diff",
+            || {
+                (ray_diff(), normal_and_direction(), derivatives3())
+                    .prop_map(|(diff, (n, d), dn)| (diff, d, n, dn))
+                    .boxed()
+            },
+            |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
+            b_reflect_ray_diff,
+        )),
+        Box::new(enclosed(
+            "refract_ray_diff",
+            // Near the critical angle the sign of k may differ: the hull of both branches, flag [0, 1].
+            || {
+                let eta =
+                    prop_oneof![4 => 0.3f32..3.0, 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => 0.0f32..0.01];
+                (ray_diff(), normal_and_direction(), derivatives3(), eta)
+                    .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
+                    .boxed()
+            },
+            |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
+            b_refract_ray_diff,
+        )),
+        Box::new(enclosed(
+            "gbuffer_ray_diff",
+            // The neighbour choice compares correctly rounded differences: the device makes the same
+            // choice as the mirror, so only the chosen branch is enclosed.
+            || {
+                (
+                    gbuffer_sample(),
+                    (gbuffer_sample(), gbuffer_sample()),
+                    (gbuffer_sample(), gbuffer_sample()),
+                    magnitude(),
+                )
+                    .prop_map(|(c, (r, l), (b, a), eps)| (c, r, l, b, a, eps))
+                    .boxed()
+            },
+            |(c, r, l, b, a, eps)| rd::gbuffer_ray_diff(c, r, l, b, a, eps),
+            b_gbuffer_ray_diff,
+        )),
+        Box::new(enclosed(
+            "tangent_plane_offsets",
+            || {
+                (normal_and_direction(), (unit_vec3(), unit_vec3()), distance())
+                    .prop_map(|((n, rd), (rdx, rdy), t)| (rd, rdx, rdy, t, n))
+                    .boxed()
+            },
+            |(rd, rdx, rdy, t, n)| rd::tangent_plane_offsets(rd, rdx, rdy, t, n),
+            |&(r, rdx, rdy, t, n)| {
+                let dx = b_tangent_plane_offset(r, rdx, t, n);
+                let dy = b_tangent_plane_offset(r, rdy, t, n);
+                b_derivatives3(dx, dy)
+            },
+        )),
+        Box::new(enclosed(
+            "planar_mapping_gradients",
+            || {
+                (derivatives3(), (-10.0f32..10.0, -10.0f32..10.0))
+                    .prop_map(|(dp, (a, b))| (dp, Vec2::new(a, b)))
+                    .boxed()
+            },
+            |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
+            |&(dp, scale)| {
+                let project = |v: Vec3| v2(Vec2::new(v.x, v.z)) * v2(scale);
+                b_derivatives2(project(dp.dx), project(dp.dy))
+            },
+        )),
+        Box::new(enclosed(
+            "triplanar_weights",
+            || {
+                let normal = prop_oneof![8 => unit_vec3(), 1 => Just(Vec3::ZERO)];
+                (normal, prop_oneof![4 => 0.0f32..16.0, 1 => -2.0f32..100.0]).boxed()
+            },
+            |(normal, sharpness)| rd::triplanar_weights(normal, sharpness),
+            |&(normal, sharpness)| b_triplanar_weights(normal, sharpness),
+        )),
+        Box::new(enclosed(
+            "triplanar_gradients",
+            || (derivatives3(), -10.0f32..10.0).boxed(),
+            |(dp, scale)| rd::triplanar_gradients(dp, scale),
+            |&(dp, scale)| {
+                let (dx, dy) = (v3(dp.dx) * s(scale), v3(dp.dy) * s(scale));
+                let pick = |v: V3, a: usize, b: usize| V([v.0[a], v.0[b]]);
+                let planes = [(1, 2), (2, 0), (0, 1)];
+                let all: Vec<I> = planes
+                    .iter()
+                    .flat_map(|&(a, b)| b_derivatives2(pick(dx, a, b), pick(dy, a, b)))
+                    .collect();
+                all
+            },
+        )),
+        Box::new(enclosed(
+            "intersect_triangle_plane",
+            || {
+                (vec3(), any_direction(), triangle())
+                    .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
+                    .boxed()
+            },
+            |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
+            |&(o, d, p0, p1, p2)| {
+                b_intersect_triangle_plane(v3(o), v3(d), v3(p0), v3(p1), v3(p2)).components()
+            },
+        )),
+        Box::new(barycentric_offsets()),
+        Box::new(barycentric_deltas()),
+        Box::new(uv_gradients_from_offsets()),
+        Box::new(cone_barycentric_deltas()),
+    ]
+}

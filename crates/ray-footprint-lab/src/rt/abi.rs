@@ -1,0 +1,164 @@
+//! The structs the renderer's shaders share with Rust (declared in `shaders/rt_abi.glsl` and
+//! `shaders/ray_query.wgsl`, not by a library module), as `#[repr(C)]` bytemuck `Pod` mirrors; the
+//! renderer's per-pixel test compares their layouts in Rust, WGSL, std430 and scalar.
+
+use bytemuck::{Pod, Zeroable};
+use glam::Vec3;
+use ray_footprint::abi::{RayCone, RayConePushConstants, WireframePushConstants, PUSH_CONSTANT_LIMIT};
+
+/// Push constants of [the ray-tracing renderer](crate::rt) (`RtPushConstants`, declared by
+/// the renderer's shaders in `src/rt/shaders/`, not by a library module). 80 bytes, 16-byte
+/// aligned: the pinhole camera, the render mode, the ray-cone push constants and the image size.
+///
+/// The camera basis is orthonormal; pixel `(x, y)` looks along
+/// `normalize(forward + c.x * aspect * tan_half_fov_y * right - c.y * tan_half_fov_y * up)` with
+/// `c = 2 * ((x, y) + 0.5) / (width, height) - 1`.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RtPushConstants {
+    /// Camera position.
+    pub eye: Vec3,
+    /// `tan(fov_y / 2)`.
+    pub tan_half_fov_y: f32,
+    /// Camera right axis (unit).
+    pub right: Vec3,
+    /// Image width over height.
+    pub aspect: f32,
+    /// Camera up axis (unit).
+    pub up: Vec3,
+    /// Texture width (= height) in texels, for the texture LOD (RTG Eq. 34).
+    pub texture_size: f32,
+    /// Viewing direction (unit).
+    pub forward: Vec3,
+    /// The render mode ([`crate::rt::Mode::id`]).
+    pub mode: u32,
+    /// `textureGrad` scale and pixel spread angle.
+    pub cone: RayConePushConstants,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+}
+
+/// What the renderer measured at a pixel's primary hit (`RtPixelRecord`, declared by the
+/// renderer's shaders): the hit data, every ray-cone value the shader computed from it, and the
+/// ray-differential and wireframe values ([`RtDiffRecord`]). 272 bytes, 16-byte aligned. A miss
+/// has `hit == 0` and zeros elsewhere.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RtPixelRecord {
+    /// Unit shading normal at the hit (interpolated vertex normals).
+    pub normal: Vec3,
+    /// Hit distance along the unit ray direction.
+    pub t: f32,
+    /// Unit ray direction.
+    pub direction: Vec3,
+    /// Instance custom index: the mesh ([`crate::rt::Scene::meshes`]).
+    pub instance: u32,
+    /// Hit barycentrics `(u, v)` of vertices 1 and 2.
+    pub barycentrics: glam::Vec2,
+    /// Triangle index within the mesh.
+    pub primitive: u32,
+    /// 1 for a hit, 0 for a miss.
+    pub hit: u32,
+    /// The cone at the ray's origin.
+    pub cone: RayCone,
+    /// `rf_width_at(cone, t)`.
+    pub width: f32,
+    /// `rf_world_footprint(cone, t, normal, direction)`.
+    pub footprint: f32,
+    /// `rf_texel_density` of the triangle.
+    pub texel_density: f32,
+    /// `rf_triangle_base_lod` of the triangle.
+    pub base_lod: f32,
+    /// `rf_texture_lod(base_lod, width, texture size, normal, direction)`.
+    pub lod: f32,
+    /// `rf_texture_gradient(footprint * texel_density, tex_grad_scale)`.
+    pub gradient: f32,
+    /// `rf_triangle_curvature` from the vertex normals.
+    pub curvature: f32,
+    /// `rf_curvature_spread_angle(curvature, width, normal, direction)`.
+    pub curvature_spread: f32,
+    /// `rf_propagate(cone, t, curvature_spread)`: the cone a reflection leaves with.
+    pub reflected: RayCone,
+    /// The ray-differential, re-intersection and wireframe values.
+    pub diff: RtDiffRecord,
+}
+
+/// What the renderer measured at a pixel's primary hit with the `ray_diff` and `wireframe`
+/// modules (`RtDiffRecord`, inside [`RtPixelRecord`]). 176 bytes, 16-byte aligned; every pad is 0.
+///
+/// The eye-ray differential and the neighbour directions come from the inverse matrices of
+/// [`RtUniforms`]; the re-intersection uses the world-to-object matrix of the hit instance (the
+/// identity in the renderer's scenes) and the hit barycentrics `(1 - u - v, u, v)`. Texel
+/// gradients for the LODs are the UV gradients times the texture size, a power of two (exact).
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct RtDiffRecord {
+    /// `d_direction_dx` of `rf_eye_ray_diff_from_matrices` (its origin differentials are 0).
+    pub eye_d_direction_dx: Vec3,
+    /// `rf_lod_isotropic` of the ray-differential texel gradients (`uv_dx`, `uv_dy` times the size).
+    pub lod: f32,
+    /// `d_direction_dy` of `rf_eye_ray_diff_from_matrices`.
+    pub eye_d_direction_dy: Vec3,
+    /// `rf_lod_isotropic` of the re-intersection texel gradients (`offset_uv_*` times the size).
+    pub offset_lod: f32,
+    /// `rf_barycentric_derivatives(eye diff, direction, t, p0, p1, p2).dx`: `(du/dx, dv/dx)`.
+    pub barycentric_dx: glam::Vec2,
+    /// `(du/dy, dv/dy)` of the same call.
+    pub barycentric_dy: glam::Vec2,
+    /// `rf_texture_derivatives(barycentric, uv0, uv1, uv2).dx`: the `textureGrad` ddx at scale 1.
+    pub uv_dx: glam::Vec2,
+    /// `.dy` of the same call.
+    pub uv_dy: glam::Vec2,
+    /// `rf_pixel_directions(...).right`: the unit direction through the right neighbour.
+    pub neighbour_right: Vec3,
+    /// `rf_process_wireframe` of the frame's wireframe settings, `b` and `deltas`.
+    pub coverage: f32,
+    /// `rf_pixel_directions(...).below`: the unit direction through the lower neighbour.
+    pub neighbour_below: Vec3,
+    /// Always 0.
+    pub pad0: u32,
+    /// `rf_barycentric_offsets(...).dx`: `b_x - b` for the right neighbour, `(w, u, v)`.
+    pub offset_dx: Vec3,
+    /// Always 0.
+    pub pad1: u32,
+    /// `rf_barycentric_offsets(...).dy`: `b_y - b` for the lower neighbour.
+    pub offset_dy: Vec3,
+    /// Always 0.
+    pub pad2: u32,
+    /// `rf_uv_gradients_from_offsets(offsets, uv0, uv1, uv2).dx`.
+    pub offset_uv_dx: glam::Vec2,
+    /// `.dy` of the same call.
+    pub offset_uv_dy: glam::Vec2,
+    /// `rf_barycentric_deltas(...)`: the per-pixel barycentric deltas the wireframe uses.
+    pub deltas: Vec3,
+    /// Always 0.
+    pub pad3: u32,
+    /// `rf_cone_barycentric_deltas(footprint, p0, p1, p2)`: the closed-form alternative, used
+    /// for the wireframe seen in reflections.
+    pub cone_deltas: Vec3,
+    /// Always 0.
+    pub pad4: u32,
+}
+
+/// Per-frame uniforms of the ray-tracing renderer (`RtUniforms`, a uniform buffer at binding 7):
+/// the inverse view and projection matrices that `rf_eye_ray_diff_from_matrices` and
+/// `rf_pixel_directions` take (128 bytes: they would not fit in the push constants next to
+/// [`RtPushConstants`]), and the wireframe colour and settings. 176 bytes, 16-byte aligned; the
+/// same layout under std140 (the uniform block), std430, scalar and WGSL.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct RtUniforms {
+    /// Camera to world: columns right, up, view (towards the camera) and the eye.
+    pub view_inv: glam::Mat4,
+    /// Inverse of a Vulkan-style (y-down) perspective projection of the camera's field of view
+    /// and aspect ratio, so `rf_pixel_ndc`'s y = -1 is the top row.
+    pub proj_inv: glam::Mat4,
+    /// Wireframe line colour and settings.
+    pub wireframe: WireframePushConstants,
+}
+
+const _: () = assert!(std::mem::size_of::<RtPushConstants>() <= PUSH_CONSTANT_LIMIT);
+const _: () =
+    assert!(std::mem::size_of::<RtPixelRecord>() == 272 && std::mem::size_of::<RtUniforms>() == 176);

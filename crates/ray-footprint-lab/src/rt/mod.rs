@@ -1,0 +1,105 @@
+//! Ray tracing with the modules: acceleration structures, a GLSL ray-tracing pipeline and, where
+//! the device has ray queries, a WGSL ray-query compute shader, on a shader-proptest device with
+//! the validation layer on.
+//!
+//! A [`Renderer`] uploads a [`Scene`] built in code (a large textured ground plane, a mirror sphere,
+//! a dense torus), builds one bottom-level acceleration structure per mesh and a top-level one,
+//! makes a checker texture and a mip-colour texture with full mip chains, a trilinear sampler with
+//! `maxLod = VK_LOD_CLAMP_NONE` (anisotropic where the device allows), and two pipelines:
+//!
+//! - GLSL (`shaders/raygen.rgen`, `miss.rmiss`, `closest_hit.rchit`, compiled with glslang with the
+//!   library's GLSL directory on the include path): the closest-hit shader `#include`s
+//!   `ray_cone.glsl`, `ray_diff.glsl` and `wireframe.glsl`, carries the cone in an `RfHitPayload`,
+//!   reads `RfRayConePushConstants` inside the renderer's push constants and the inverse camera
+//!   matrices and `RfWireframePushConstants` from a uniform buffer ([`RtUniforms`]), measures every
+//!   ray-cone value at the hit and, on primary hits, the ray differentials, the re-intersected
+//!   barycentric offsets and the wireframe coverage, and shades in the chosen [`Mode`];
+//! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
+//!   with a ray query over the same acceleration structures and measuring the same values with
+//!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.
+//!
+//! Both record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so the
+//! Rust mirror can recompute every value from the same hit data.
+//!
+//! ```no_run
+//! use ray_footprint::wireframe::WireframeSettings;
+//! use ray_footprint_lab::rt::{open_device, Camera, Mode, Renderer, Scene};
+//!
+//! let gpu = open_device()?;
+//! let renderer = Renderer::new(&gpu, Scene::gallery())?;
+//! let camera = Camera::ground();
+//! let push = renderer.push_constants(&camera, Mode::Cone, 1.0, 320, 180);
+//! let uniforms = camera.uniforms((320, 180), WireframeSettings::default());
+//! let frame = renderer.render(&push, &uniforms)?;
+//! println!("{} pixels in {:?}", frame.pixels.len(), frame.trace_time);
+//! # Ok::<(), ray_footprint_lab::rt::Error>(())
+//! ```
+//!
+//! [`RtPixelRecord`]: abi::RtPixelRecord
+//! [`RtUniforms`]: abi::RtUniforms
+
+pub mod abi;
+mod accel;
+mod mode;
+mod pipeline;
+mod renderer;
+mod scene;
+mod texture;
+
+pub use mode::Mode;
+pub use pipeline::{ray_query_source, SHADER_DIR};
+pub use renderer::{open_device, Frame, Renderer, DEVICE_REQUEST};
+pub use scene::{
+    ground_plane, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex, VERTEX_FLOATS, WIRE_COLOUR,
+};
+pub use texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE};
+
+use std::fmt;
+
+/// Why a frame was not traced.
+#[derive(Debug)]
+pub enum Error {
+    /// The device, a compiler or the validation layer failed.
+    Gpu(shader_proptest::Error),
+    /// The frame has more pixels than its per-pixel buffers can hold on this device.
+    FrameTooLarge {
+        /// Pixels asked for.
+        pixels: u64,
+        /// Pixels the device allows per frame.
+        max: u64,
+    },
+    /// A frame without pixels was asked for.
+    EmptyFrame {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// The device lacks what this way of tracing needs: the reason. Report it as not run.
+    NotSupported(String),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Gpu(error) => write!(f, "{error}"),
+            Error::FrameTooLarge { pixels, max } => write!(
+                f,
+                "a frame of {pixels} pixels is too large: this device's maxStorageBufferRange holds \
+                 the per-pixel records of at most {max} pixels"
+            ),
+            Error::EmptyFrame { width, height } => {
+                write!(f, "a frame of {width} x {height} pixels has no pixels")
+            }
+            Error::NotSupported(reason) => write!(f, "not supported: {reason}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl From<shader_proptest::Error> for Error {
+    fn from(error: shader_proptest::Error) -> Error {
+        Error::Gpu(error)
+    }
+}

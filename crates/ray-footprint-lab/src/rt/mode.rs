@@ -1,0 +1,92 @@
+//! Render modes: how the closest-hit shader picks a texture level of detail.
+
+use std::fmt;
+
+/// A render mode. The discriminant is the `RT_MODE_*` constant of `shaders/rt_common.glsl`.
+///
+/// Every mode traces the same rays and records the same per-pixel values
+/// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
+/// reflection off the sphere widens its cone by the surface curvature, and whether the wireframe
+/// is drawn. The gradient modes need a primary hit: what the mirror reflects is sampled at the
+/// ray-cone LOD in them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u32)]
+pub enum Mode {
+    /// Always mip 0: aliases wherever a pixel covers more than a texel.
+    Mip0 = 0,
+    /// Isotropic ray-cone LOD (RTG Eq. 34); reflections treat the sphere as a planar mirror.
+    Cone = 1,
+    /// Ray-cone LOD; reflections widen the cone by the triangle curvature (JCGT 2021).
+    ConeCurvature = 2,
+    /// `textureGrad` with the ray-cone gradient times `tex_grad_scale` (0: mip 0, 1: matching, >1: blurred).
+    TexGradScale = 3,
+    /// Ray-cone LOD into a texture whose mip levels are flat colours (RTG Fig. 20-9/20-10).
+    MipLevels = 4,
+    /// `textureGrad` with anisotropic UV gradients from the eye-ray differentials (Igehy; RTG
+    /// Eq. 8-21), times `tex_grad_scale`.
+    RayDiff = 5,
+    /// `textureGrad` with anisotropic UV gradients from the neighbour pixels' rays re-intersected
+    /// with the hit triangle's plane (signed barycentric offsets), times `tex_grad_scale`.
+    BaryGradients = 6,
+    /// Ray-cone LOD under an anti-aliased wireframe (per-pixel barycentric deltas by
+    /// re-intersection; the closed-form cone deltas in reflections).
+    Wireframe = 7,
+}
+
+impl Mode {
+    /// Every mode, in gallery order.
+    pub const ALL: [Mode; 8] = [
+        Mode::Mip0,
+        Mode::Cone,
+        Mode::ConeCurvature,
+        Mode::TexGradScale,
+        Mode::MipLevels,
+        Mode::RayDiff,
+        Mode::BaryGradients,
+        Mode::Wireframe,
+    ];
+
+    /// The value the shaders compare with `RT_MODE_*`.
+    pub fn id(self) -> u32 {
+        self as u32
+    }
+
+    /// The command-line and file name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Mip0 => "mip0",
+            Mode::Cone => "cone",
+            Mode::ConeCurvature => "cone_curvature",
+            Mode::TexGradScale => "tex_grad_scale",
+            Mode::MipLevels => "mip_levels",
+            Mode::RayDiff => "ray_diff",
+            Mode::BaryGradients => "bary_gradients",
+            Mode::Wireframe => "wireframe",
+        }
+    }
+
+    /// One line saying what the mode shows.
+    pub fn description(self) -> &'static str {
+        match self {
+            Mode::Mip0 => "mip 0 everywhere (aliases at grazing angles)",
+            Mode::Cone => "isotropic ray-cone LOD, reflections as off a planar mirror",
+            Mode::ConeCurvature => "isotropic ray-cone LOD, reflected cones widened by curvature",
+            Mode::TexGradScale => "textureGrad with the ray-cone gradient times tex_grad_scale",
+            Mode::MipLevels => "ray-cone LOD into a texture with one colour per mip level",
+            Mode::RayDiff => "textureGrad with anisotropic ray-differential gradients",
+            Mode::BaryGradients => "textureGrad with gradients from re-intersected neighbour rays",
+            Mode::Wireframe => "ray-cone LOD under an anti-aliased wireframe",
+        }
+    }
+
+    /// The mode called `name`, or `None`.
+    pub fn from_name(name: &str) -> Option<Mode> {
+        Mode::ALL.into_iter().find(|mode| mode.name() == name)
+    }
+}
+
+impl fmt::Display for Mode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}

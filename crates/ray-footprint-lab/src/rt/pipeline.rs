@@ -1,0 +1,309 @@
+//! Shaders and pipelines: the GLSL ray-tracing pipeline with its shader binding table, and the
+//! WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
+
+use super::abi::RtPushConstants;
+use ash::vk;
+use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR};
+use shader_proptest::compile::{
+    base_capabilities, compile_glsl as glslang, compile_wgsl as naga, Stage, Target,
+};
+use shader_proptest::{vulkan, Buffer, Error, Feature, Object, Owner};
+use std::path::Path;
+
+/// Directory of the renderer's shaders (ray generation, miss, closest hit, ray query).
+pub const SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/rt/shaders");
+
+/// The library modules the renderer's shaders use.
+const MODULES: [Module; 3] = [Module::RayCone, Module::RayDiff, Module::Wireframe];
+
+/// The renderer's WGSL ray-query source, as compiled: the extension, the ray-cone, ray-differential
+/// and wireframe modules, the shader.
+pub fn ray_query_source() -> String {
+    format!(
+        "enable wgpu_ray_query;\n{}\n{}",
+        wgsl_prelude(&MODULES),
+        include_str!("shaders/ray_query.wgsl")
+    )
+}
+
+/// Every stage that reads the descriptor set or the push constants: the ray-tracing stages, and
+/// compute where the device has ray queries (the WGSL path).
+fn stages(owner: &Owner<'_>) -> vk::ShaderStageFlags {
+    let ray_tracing = vk::ShaderStageFlags::RAYGEN_KHR
+        | vk::ShaderStageFlags::MISS_KHR
+        | vk::ShaderStageFlags::CLOSEST_HIT_KHR;
+    if owner.gpu.has(Feature::RayQuery) {
+        ray_tracing | vk::ShaderStageFlags::COMPUTE
+    } else {
+        ray_tracing
+    }
+}
+
+/// The descriptor types of bindings 0 to 7 (see `rt_common.glsl`) and their counts.
+pub(super) const BINDINGS: [(vk::DescriptorType, u32); 8] = [
+    (vk::DescriptorType::ACCELERATION_STRUCTURE_KHR, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::STORAGE_BUFFER, 1),
+    (vk::DescriptorType::COMBINED_IMAGE_SAMPLER, 2),
+    (vk::DescriptorType::UNIFORM_BUFFER, 1),
+];
+
+/// The descriptor-set layout of [`BINDINGS`] and a pipeline layout with it and the push constants.
+pub(super) fn layouts(owner: &mut Owner<'_>) -> Result<(vk::DescriptorSetLayout, vk::PipelineLayout), Error> {
+    let bindings: Vec<_> = BINDINGS
+        .iter()
+        .enumerate()
+        .map(|(binding, &(ty, count))| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(binding as u32)
+                .descriptor_type(ty)
+                .descriptor_count(count)
+                .stage_flags(stages(owner))
+        })
+        .collect();
+    // SAFETY: valid create-info structs; objects are handed to the owner.
+    unsafe {
+        let set_layout = owner
+            .device()
+            .create_descriptor_set_layout(
+                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
+                None,
+            )
+            .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
+        owner.keep(set_layout, Object::SetLayout);
+        let ranges = [vk::PushConstantRange::default()
+            .stage_flags(stages(owner))
+            .size(std::mem::size_of::<RtPushConstants>() as u32)];
+        let set_layouts = [set_layout];
+        let info = vk::PipelineLayoutCreateInfo::default()
+            .set_layouts(&set_layouts)
+            .push_constant_ranges(&ranges);
+        let layout = owner
+            .device()
+            .create_pipeline_layout(&info, None)
+            .map_err(vulkan("vkCreatePipelineLayout"))?;
+        Ok((set_layout, owner.keep(layout, Object::PipelineLayout)))
+    }
+}
+
+/// Pushes `push` for every stage of the layout.
+pub(super) fn push(
+    owner: &Owner<'_>,
+    command_buffer: vk::CommandBuffer,
+    layout: vk::PipelineLayout,
+    push: &RtPushConstants,
+) {
+    // SAFETY: the range matches the layout's single push-constant range.
+    unsafe {
+        owner
+            .device()
+            .cmd_push_constants(command_buffer, layout, stages(owner), 0, bytemuck::bytes_of(push))
+    }
+}
+
+/// A ray-tracing pipeline and its shader binding table regions (ray generation, miss, hit,
+/// callable).
+pub(super) struct RayTracing {
+    pub pipeline: vk::Pipeline,
+    pub regions: [vk::StridedDeviceAddressRegionKHR; 4],
+    pub loader: ash::khr::ray_tracing_pipeline::Device,
+}
+
+/// The ray-generation, miss and closest-hit shaders of [`SHADER_DIR`] in one pipeline (groups:
+/// 0 ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the mirror's reflection).
+pub(super) fn ray_tracing(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<RayTracing, Error> {
+    let properties = ray_tracing_properties(owner);
+    if properties.max_ray_recursion_depth < 2 {
+        return Err(Error::Setup(String::from(
+            "the device's maxRayRecursionDepth is below 2 (the renderer traces reflections)",
+        )));
+    }
+    let files = [
+        (
+            "raygen.rgen",
+            Stage::RayGeneration,
+            vk::ShaderStageFlags::RAYGEN_KHR,
+        ),
+        ("miss.rmiss", Stage::Miss, vk::ShaderStageFlags::MISS_KHR),
+        (
+            "closest_hit.rchit",
+            Stage::ClosestHit,
+            vk::ShaderStageFlags::CLOSEST_HIT_KHR,
+        ),
+    ];
+    let spirv = files
+        .iter()
+        .map(|&(file, stage, _)| compile_glsl(&Path::new(SHADER_DIR).join(file), stage))
+        .collect::<Result<Vec<_>, _>>()?;
+    let modules = spirv
+        .iter()
+        .map(|words| shader_module(owner, words))
+        .collect::<Result<Vec<_>, _>>()?;
+    let stage_infos: Vec<_> = files
+        .iter()
+        .zip(&modules)
+        .map(|(&(_, _, stage), &module)| {
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(stage)
+                .module(module)
+                .name(c"main")
+        })
+        .collect();
+    let general = |shader: u32| {
+        vk::RayTracingShaderGroupCreateInfoKHR::default()
+            .ty(vk::RayTracingShaderGroupTypeKHR::GENERAL)
+            .general_shader(shader)
+            .closest_hit_shader(vk::SHADER_UNUSED_KHR)
+            .any_hit_shader(vk::SHADER_UNUSED_KHR)
+            .intersection_shader(vk::SHADER_UNUSED_KHR)
+    };
+    let groups = [
+        general(0),
+        general(1),
+        general(vk::SHADER_UNUSED_KHR)
+            .ty(vk::RayTracingShaderGroupTypeKHR::TRIANGLES_HIT_GROUP)
+            .closest_hit_shader(2),
+    ];
+    let info = vk::RayTracingPipelineCreateInfoKHR::default()
+        .stages(&stage_infos)
+        .groups(&groups)
+        .max_pipeline_ray_recursion_depth(2)
+        .layout(layout);
+    let loader = ash::khr::ray_tracing_pipeline::Device::new(owner.gpu.instance(), owner.gpu.device());
+    // SAFETY: a valid create-info; the modules are no longer needed once the pipeline exists.
+    let created = unsafe {
+        let created = loader.create_ray_tracing_pipelines(
+            vk::DeferredOperationKHR::null(),
+            vk::PipelineCache::null(),
+            &[info],
+            None,
+        );
+        modules
+            .iter()
+            .for_each(|&module| owner.device().destroy_shader_module(module, None));
+        created
+    };
+    let pipeline = created.map_err(|(_, result)| Error::Vulkan("vkCreateRayTracingPipelinesKHR", result))?[0];
+    owner.keep(pipeline, Object::Pipeline);
+    let regions = binding_table(owner, &loader, pipeline, &properties, groups.len() as u32)?;
+    owner.gpu.check_messages()?;
+    Ok(RayTracing {
+        pipeline,
+        regions,
+        loader,
+    })
+}
+
+fn ray_tracing_properties(owner: &Owner<'_>) -> vk::PhysicalDeviceRayTracingPipelinePropertiesKHR<'static> {
+    let mut ray_tracing = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
+    let mut properties = vk::PhysicalDeviceProperties2::default().push_next(&mut ray_tracing);
+    // SAFETY: a plain query.
+    unsafe {
+        owner
+            .gpu
+            .instance()
+            .get_physical_device_properties2(owner.gpu.physical_device(), &mut properties);
+    }
+    ray_tracing.p_next = std::ptr::null_mut();
+    ray_tracing
+}
+
+/// The shader binding table: one record per group, each region starting at a multiple of
+/// `shaderGroupBaseAlignment`, with a stride of the handle size rounded up to
+/// `shaderGroupHandleAlignment` (the ray-generation region's size must equal its stride).
+fn binding_table(
+    owner: &mut Owner<'_>,
+    loader: &ash::khr::ray_tracing_pipeline::Device,
+    pipeline: vk::Pipeline,
+    properties: &vk::PhysicalDeviceRayTracingPipelinePropertiesKHR<'_>,
+    groups: u32,
+) -> Result<[vk::StridedDeviceAddressRegionKHR; 4], Error> {
+    let handle_size = properties.shader_group_handle_size as usize;
+    let stride = properties
+        .shader_group_handle_size
+        .next_multiple_of(properties.shader_group_handle_alignment);
+    let region_bytes = stride.next_multiple_of(properties.shader_group_base_alignment) as usize;
+    // SAFETY: a plain query on a pipeline with `groups` groups.
+    let handles = unsafe {
+        loader.get_ray_tracing_shader_group_handles(pipeline, 0, groups, groups as usize * handle_size)
+    }
+    .map_err(vulkan("vkGetRayTracingShaderGroupHandlesKHR"))?;
+    let mut table = vec![0u8; region_bytes * groups as usize];
+    for (group, handle) in handles.chunks_exact(handle_size).enumerate() {
+        table[group * region_bytes..][..handle_size].copy_from_slice(handle);
+    }
+    let buffer: Buffer = owner.upload(
+        &table,
+        vk::BufferUsageFlags::SHADER_BINDING_TABLE_KHR,
+        u64::from(properties.shader_group_base_alignment),
+    )?;
+    let region = |group: u64| {
+        vk::StridedDeviceAddressRegionKHR::default()
+            .device_address(buffer.address + group * region_bytes as u64)
+            .stride(u64::from(stride))
+            .size(u64::from(stride))
+    };
+    Ok([
+        region(0),
+        region(1),
+        region(2),
+        vk::StridedDeviceAddressRegionKHR::default(),
+    ])
+}
+
+/// The WGSL ray-query compute pipeline ([`ray_query_source`]).
+pub(super) fn ray_query(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<vk::Pipeline, Error> {
+    let module = shader_module(owner, &compile_wgsl(&ray_query_source())?)?;
+    let stage = vk::PipelineShaderStageCreateInfo::default()
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(module)
+        .name(c"main");
+    let info = [vk::ComputePipelineCreateInfo::default()
+        .stage(stage)
+        .layout(layout)];
+    // SAFETY: a valid create-info; the module is no longer needed once the pipeline exists.
+    let created = unsafe {
+        let created = owner
+            .device()
+            .create_compute_pipelines(vk::PipelineCache::null(), &info, None);
+        owner.device().destroy_shader_module(module, None);
+        created
+    };
+    let pipeline = created.map_err(|(_, result)| Error::Vulkan("vkCreateComputePipelines", result))?[0];
+    owner.gpu.check_messages()?;
+    Ok(owner.keep(pipeline, Object::Pipeline))
+}
+
+fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, Error> {
+    // SAFETY: valid SPIR-V words from glslang or naga.
+    unsafe {
+        owner
+            .device()
+            .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(spirv), None)
+    }
+    .map_err(vulkan("vkCreateShaderModule"))
+}
+
+/// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.5), with the library's
+/// GLSL directory and [`SHADER_DIR`] on the include path.
+fn compile_glsl(path: &Path, stage: Stage) -> Result<Vec<u32>, Error> {
+    let source =
+        std::fs::read_to_string(path).map_err(|e| Error::Compile(format!("{}: {e}", path.display())))?;
+    let includes = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    glslang(&source, stage, Target::Vulkan1_2, &includes)
+        .map_err(|error| Error::Compile(format!("{}:\n{error}", path.display())))
+}
+
+/// Compiles the ray-query shader with naga: the library modules' capabilities plus ray queries
+/// and push constants (`var<immediate>`).
+fn compile_wgsl(source: &str) -> Result<Vec<u32>, Error> {
+    let capabilities = MODULES.into_iter().fold(base_capabilities(), |all, module| {
+        all | module.naga_capabilities()
+    }) | naga::valid::Capabilities::RAY_QUERY
+        | naga::valid::Capabilities::IMMEDIATES;
+    naga(source, "ray_query.wgsl", capabilities, Target::Vulkan1_2)
+        .map_err(|error| Error::Compile(error.to_string()))
+}

@@ -1,0 +1,323 @@
+//! The scene, built in code: a large textured ground plane, a mirror sphere and a dense torus.
+//!
+//! Meshes are in world space (every instance transform is the identity), so the Rust side can
+//! look up the exact vertices a hit refers to and recompute what the shaders computed.
+
+use super::abi::{RtPushConstants, RtUniforms};
+use glam::{Mat4, Vec2, Vec3, Vec4};
+use ray_footprint::abi::{RayConePushConstants, WireframePushConstants};
+use ray_footprint::ray_cone;
+use ray_footprint::wireframe::WireframeSettings;
+use std::f32::consts::{PI, TAU};
+
+/// Floats per vertex in the vertex buffer: position xyz, u, normal xyz, v (the shaders' layout).
+pub const VERTEX_FLOATS: usize = 8;
+
+/// A mesh vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// World-space position.
+    pub position: Vec3,
+    /// Unit vertex normal.
+    pub normal: Vec3,
+    /// Texture coordinates (the sampler repeats).
+    pub uv: Vec2,
+}
+
+/// How a mesh is shaded. The discriminant is the `RT_MATERIAL_*` constant of the shaders.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u32)]
+pub enum Material {
+    /// Samples the texture at the mode's level of detail.
+    Textured = 0,
+    /// A mirror: traces a reflected ray carrying the propagated cone.
+    Mirror = 1,
+}
+
+/// An indexed triangle mesh.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    /// What the mesh is, for messages.
+    pub name: &'static str,
+    /// Vertices.
+    pub vertices: Vec<Vertex>,
+    /// Three indices per triangle, into `vertices`.
+    pub indices: Vec<u32>,
+    /// How it is shaded.
+    pub material: Material,
+}
+
+impl Mesh {
+    /// Number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+
+    /// The three vertices of triangle `primitive`.
+    pub fn triangle(&self, primitive: u32) -> [Vertex; 3] {
+        let first = 3 * primitive as usize;
+        [0, 1, 2].map(|k| self.vertices[self.indices[first + k] as usize])
+    }
+}
+
+/// A square in the plane y = 0, `2 * half_size` wide, normal +y, its texture repeating every
+/// `repeat` world units.
+pub fn ground_plane(half_size: f32, repeat: f32) -> Mesh {
+    let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+    let vertices = corners
+        .iter()
+        .map(|&(x, z)| {
+            let position = Vec3::new(x * half_size, 0.0, z * half_size);
+            Vertex {
+                position,
+                normal: Vec3::Y,
+                uv: Vec2::new(position.x, position.z) / repeat,
+            }
+        })
+        .collect();
+    Mesh {
+        name: "ground plane",
+        vertices,
+        indices: vec![0, 2, 1, 0, 3, 2],
+        material: Material::Textured,
+    }
+}
+
+/// Triangles of a `rows` x `columns` grid of quads over `(rows + 1) * (columns + 1)` vertices,
+/// leaving out the triangles `skip` names (by row and whether it is the quad's first triangle).
+fn grid_indices(rows: u32, columns: u32, skip: impl Fn(u32, bool) -> bool) -> Vec<u32> {
+    let mut indices = Vec::new();
+    for row in 0..rows {
+        for column in 0..columns {
+            let a = row * (columns + 1) + column;
+            let b = a + columns + 1;
+            if !skip(row, true) {
+                indices.extend([a, b, a + 1]);
+            }
+            if !skip(row, false) {
+                indices.extend([a + 1, b, b + 1]);
+            }
+        }
+    }
+    indices
+}
+
+/// A latitude-longitude sphere with exact vertex normals and no zero-area triangles at the poles.
+pub fn uv_sphere(centre: Vec3, radius: f32, rings: u32, segments: u32) -> Mesh {
+    let mut vertices = Vec::new();
+    for ring in 0..=rings {
+        let theta = PI * ring as f32 / rings as f32;
+        for segment in 0..=segments {
+            let phi = TAU * segment as f32 / segments as f32;
+            let normal = Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
+            vertices.push(Vertex {
+                position: centre + radius * normal,
+                normal,
+                uv: Vec2::new(
+                    4.0 * segment as f32 / segments as f32,
+                    2.0 * ring as f32 / rings as f32,
+                ),
+            });
+        }
+    }
+    let pole = |row: u32, first: bool| (row == 0 && first) || (row == rings - 1 && !first);
+    Mesh {
+        name: "sphere",
+        vertices,
+        indices: grid_indices(rings, segments, pole),
+        material: Material::Mirror,
+    }
+}
+
+/// A torus around the z axis through `centre`: tube radius `minor` around a circle of radius
+/// `major`, `rings` x `segments` quads (two triangles each).
+pub fn torus(centre: Vec3, major: f32, minor: f32, rings: u32, segments: u32) -> Mesh {
+    let mut vertices = Vec::new();
+    for ring in 0..=rings {
+        let u = TAU * ring as f32 / rings as f32;
+        let axis = Vec3::new(u.cos(), u.sin(), 0.0);
+        for segment in 0..=segments {
+            let v = TAU * segment as f32 / segments as f32;
+            let normal = v.cos() * axis + v.sin() * Vec3::Z;
+            vertices.push(Vertex {
+                position: centre + major * axis + minor * normal,
+                normal,
+                uv: Vec2::new(
+                    8.0 * ring as f32 / rings as f32,
+                    2.0 * segment as f32 / segments as f32,
+                ),
+            });
+        }
+    }
+    Mesh {
+        name: "torus",
+        vertices,
+        indices: grid_indices(rings, segments, |_, _| false),
+        material: Material::Textured,
+    }
+}
+
+/// The meshes of a scene; mesh `i` is TLAS instance `i` with instance custom index `i`.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// The meshes.
+    pub meshes: Vec<Mesh>,
+}
+
+impl Scene {
+    /// The gallery scene: a 400 x 400 ground plane whose texture repeats every 8 units, a mirror
+    /// sphere of radius 1 (3,968 triangles) and a torus of 16,384
+    /// triangles standing on the ground.
+    pub fn gallery() -> Scene {
+        Scene {
+            meshes: vec![
+                ground_plane(200.0, 8.0),
+                uv_sphere(Vec3::new(1.3, 1.0, -1.5), 1.0, 32, 64),
+                torus(Vec3::new(-1.5, 1.15, -2.5), 0.8, 0.3, 128, 64),
+            ],
+        }
+    }
+
+    /// Every vertex of every mesh, [`VERTEX_FLOATS`] floats each, mesh after mesh.
+    pub fn vertex_floats(&self) -> Vec<f32> {
+        let vertices = self.meshes.iter().flat_map(|mesh| &mesh.vertices);
+        vertices
+            .flat_map(|v| {
+                let (p, n) = (v.position, v.normal);
+                [p.x, p.y, p.z, v.uv.x, n.x, n.y, n.z, v.uv.y]
+            })
+            .collect()
+    }
+
+    /// Every index of every mesh (relative to its mesh's first vertex), mesh after mesh.
+    pub fn indices(&self) -> Vec<u32> {
+        self.meshes
+            .iter()
+            .flat_map(|mesh| mesh.indices.iter().copied())
+            .collect()
+    }
+
+    /// Per mesh: its first index, its first vertex and its [`Material`] (the shaders' mesh table).
+    pub fn mesh_table(&self) -> Vec<u32> {
+        let (mut first_index, mut first_vertex) = (0, 0);
+        let mut table = Vec::new();
+        for mesh in &self.meshes {
+            table.extend([first_index, first_vertex, mesh.material as u32]);
+            first_index += mesh.indices.len() as u32;
+            first_vertex += mesh.vertices.len() as u32;
+        }
+        table
+    }
+}
+
+/// Colour of the wireframe lines (RGBA): orange, visible on both checker colours.
+pub const WIRE_COLOUR: Vec4 = Vec4::new(1.0, 0.45, 0.05, 1.0);
+
+/// Near and far planes of the projection in [`Camera::uniforms`]. Only its inverse's directions
+/// are used, which do not depend on them.
+const CLIP_PLANES: (f32, f32) = (0.01, 1000.0);
+
+/// A pinhole camera.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    /// Position.
+    pub eye: Vec3,
+    /// A point it looks at.
+    pub target: Vec3,
+    /// Vertical field of view in radians.
+    pub fov_y: f32,
+}
+
+impl Camera {
+    /// Eye height 1 over the ground plane, looking almost level, so the plane recedes to a
+    /// grazing horizon; the sphere and the torus stand in front.
+    pub fn ground() -> Camera {
+        Camera {
+            eye: Vec3::new(0.0, 1.0, 4.0),
+            target: Vec3::new(0.0, 0.55, -6.0),
+            fov_y: 50f32.to_radians(),
+        }
+    }
+
+    /// Close to the mirror sphere, which fills most of the view and reflects the ground plane
+    /// out to its horizon.
+    pub fn reflection() -> Camera {
+        Camera {
+            eye: Vec3::new(1.3, 1.35, 1.2),
+            target: Vec3::new(1.3, 0.95, -1.5),
+            fov_y: 45f32.to_radians(),
+        }
+    }
+
+    /// A narrow view of the top of the torus, its silhouette against the ground and the sky in
+    /// the upper part: its quads are about 30 pixels wide in a 480 x 270 image (the wireframe view).
+    pub fn torus() -> Camera {
+        Camera {
+            eye: Vec3::new(-1.1, 2.25, -1.65),
+            target: Vec3::new(-1.5, 2.17, -2.5),
+            fov_y: 16f32.to_radians(),
+        }
+    }
+
+    /// The orthonormal basis: forward (viewing direction), right (= forward x +y) and up.
+    fn basis(&self) -> (Vec3, Vec3, Vec3) {
+        let forward = (self.target - self.eye).normalize();
+        let right = forward.cross(Vec3::Y).normalize();
+        (forward, right, right.cross(forward))
+    }
+
+    /// The renderer's push constants for this camera: orthonormal basis (right = forward x +y),
+    /// and the exact pixel spread angle (RTG Eq. 30) for an image `height` pixels tall.
+    pub fn push_constants(
+        &self,
+        mode: u32,
+        tex_grad_scale: f32,
+        view: (u32, u32),
+        texture_size: u32,
+    ) -> RtPushConstants {
+        let (width, height) = view;
+        let (forward, right, up) = self.basis();
+        RtPushConstants {
+            eye: self.eye,
+            tan_half_fov_y: (0.5 * self.fov_y).tan(),
+            right,
+            aspect: width as f32 / height as f32,
+            up,
+            texture_size: texture_size as f32,
+            forward,
+            mode,
+            cone: RayConePushConstants {
+                tex_grad_scale,
+                pixel_spread_angle: ray_cone::pixel_spread_angle(self.fov_y, height as f32),
+            },
+            width,
+            height,
+        }
+    }
+
+    /// The renderer's per-frame uniforms for this camera on a `view` = (width, height) image:
+    /// the camera-to-world matrix of the same basis (the view axis points back to the camera),
+    /// the inverse of a Vulkan-style (y-down) perspective projection with the same field of view
+    /// and aspect ratio, so the matrix functions of `ray_diff` see the rays the renderer traces;
+    /// and the wireframe `settings` in [`WIRE_COLOUR`].
+    pub fn uniforms(&self, view: (u32, u32), settings: WireframeSettings) -> RtUniforms {
+        let (forward, right, up) = self.basis();
+        let view_inv = Mat4::from_cols(
+            right.extend(0.0),
+            up.extend(0.0),
+            (-forward).extend(0.0),
+            self.eye.extend(1.0),
+        );
+        let aspect = view.0 as f32 / view.1 as f32;
+        let (near, far) = CLIP_PLANES;
+        let projection = glam::camera::rh::proj::vulkan::perspective(self.fov_y, aspect, near, far);
+        RtUniforms {
+            view_inv,
+            proj_inv: projection.inverse(),
+            wireframe: WireframePushConstants {
+                colour: WIRE_COLOUR,
+                settings: settings.pack(),
+            },
+        }
+    }
+}

@@ -1,0 +1,106 @@
+//! Every shader function agrees with its Rust mirror, in WGSL and in GLSL.
+//!
+//! Each test prints one line per function: cases checked, largest error, that error as a fraction
+//! of the function's tolerance, and the share of cases whose tolerance is vacuous.
+
+use super::gpu;
+use ray_footprint::ray_cone;
+use ray_footprint::shaders::Module;
+use ray_footprint_lab::checks;
+use shader_proptest::{FunctionCheck, Language, Outcome, RunConfig};
+
+fn agree(module: Module, language: Language) {
+    let gpu = gpu();
+    println!("device: {} ({})", gpu.name(), gpu.driver());
+    let checks = checks::checks(module);
+    assert!(!checks.is_empty(), "module {} has no checks", module.stem());
+    let shader = module.shader(language);
+    let mut failures = Vec::new();
+    for check in checks {
+        let report = check
+            .run(&gpu, &shader, &RunConfig::default())
+            .unwrap_or_else(|error| panic!("{} ({}): {error}", check.function(), language.name()));
+        println!("{report}");
+        if !report.passed() {
+            failures.push(report.to_string());
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} function(s) disagree:\n{}",
+        failures.len(),
+        failures.join("\n\n")
+    );
+}
+
+#[test]
+fn ray_cone_wgsl() {
+    agree(Module::RayCone, Language::Wgsl);
+}
+
+#[test]
+fn ray_cone_glsl() {
+    agree(Module::RayCone, Language::Glsl);
+}
+
+/// The harness catches a mirror that is off by one part in a million, and shrinks the case.
+#[test]
+fn harness_reports_a_wrong_mirror() {
+    use proptest::prelude::*;
+    let wrong = FunctionCheck::new(
+        "rf_width_at",
+        || {
+            (1.0f32..2.0, 0.0f32..1.0, 0.0f32..10.0)
+                .prop_map(|(width, spread_angle, t)| (ray_cone::RayCone { width, spread_angle }, t))
+        },
+        |(cone, t)| ray_cone::width_at(cone, t) * 1.000_001,
+    )
+    .tolerance(shader_proptest::Tolerance::Ulps(2.0));
+    let gpu = gpu();
+    for language in Language::ALL {
+        let config = RunConfig {
+            cases: 1000,
+            batch: 256,
+            ..RunConfig::default()
+        };
+        let report = wrong
+            .run(&gpu, &Module::RayCone.shader(language), &config)
+            .expect("the harness runs");
+        let Outcome::Failed(failure) = &report.outcome else {
+            panic!("a mirror off by 1e-6 must be reported: {report}")
+        };
+        assert!(failure.reason.contains("differs by"), "{report}");
+        assert!(failure.kernel.contains("rf_width_at("), "{report}");
+        println!("{report}");
+    }
+}
+
+#[test]
+fn wireframe_wgsl() {
+    agree(Module::Wireframe, Language::Wgsl);
+}
+
+#[test]
+fn wireframe_glsl() {
+    agree(Module::Wireframe, Language::Glsl);
+}
+
+#[test]
+fn ray_diff_wgsl() {
+    agree(Module::RayDiff, Language::Wgsl);
+}
+
+#[test]
+fn ray_diff_glsl() {
+    agree(Module::RayDiff, Language::Glsl);
+}
+
+#[test]
+fn ray_diff_f64_wgsl() {
+    agree(Module::RayDiffF64, Language::Wgsl);
+}
+
+#[test]
+fn ray_diff_f64_glsl() {
+    agree(Module::RayDiffF64, Language::Glsl);
+}

@@ -1,0 +1,24 @@
+//! Every GPU test of ray-footprint, in one binary, on the local Vulkan device (lavapipe unless
+//! `SHADER_PROPTEST_DEVICE` names another) with the validation layer on: any validation message
+//! fails a test.
+//!
+//! - [`agreement`]: every shader function against its Rust mirror, in WGSL and GLSL;
+//! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
+//! - [`degenerate`]: the degenerate-input table on the CPU and the GPU;
+//! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror.
+
+mod abi;
+mod agreement;
+mod degenerate;
+mod rt;
+
+use shader_proptest::Gpu;
+
+/// The command that installs what the GPU tests need on Debian 12.
+const SETUP_COMMAND: &str = "scripts/setup.sh";
+
+/// The compute device; panics with what to install when there is none (a GPU test never passes
+/// by skipping).
+fn gpu() -> Gpu {
+    Gpu::new().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
+}

@@ -1,0 +1,654 @@
+//! Ray tracing with real acceleration structures.
+//!
+//! The GLSL closest-hit shader and the WGSL ray-query shader record, per pixel, the primary hit
+//! (distance, normal, barycentrics, instance, triangle), every ray-cone value they computed
+//! there, and the ray-differential, re-intersection and wireframe values. The Rust mirror
+//! recomputes each value from the same hit data, the scene's own vertices and the frame's
+//! uniforms; each function is given exactly the inputs the shader gave it, so each comparison
+//! measures one library function, within the tolerance derived for it in `src/checks/`
+//! (restated below for the ray-cone values, and reused where the suite exports the check: every
+//! ray_diff and wireframe value).
+
+use super::SETUP_COMMAND;
+use glam::{Mat4, Vec2, Vec3};
+use ray_footprint::layout::{self, GlslPacking, StructLayout};
+use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
+use ray_footprint::rust_layout;
+use ray_footprint::shaders::GLSL_INCLUDE_DIR;
+use ray_footprint::wireframe::WireframeSettings;
+use ray_footprint_lab::checks as suite;
+use ray_footprint_lab::checks::ray_cone::{area_corners, edge_curvature_error};
+use ray_footprint_lab::rt::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
+use ray_footprint_lab::rt::{
+    open_device, ray_query_source, Camera, Error, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR,
+};
+use shader_proptest::tolerance::{dot_error, log2_error, ulps};
+use shader_proptest::{FunctionCheck, Gpu, Value};
+use std::path::Path;
+
+/// The test image: small, so the test is quick on lavapipe, with every mesh in view.
+const WIDTH: u32 = 64;
+const HEIGHT: u32 = 48;
+/// The torus close-up's image: large enough that its quads are over 10 pixels wide, so the
+/// wireframe has gaps between its lines.
+const TORUS_VIEW: (u32, u32) = (200, 150);
+/// A `tex_grad_scale` other than 1, so the gradient's scaling is exercised.
+const TEX_GRAD_SCALE: f32 = 2.0;
+/// The torus' mesh index in [`Scene::gallery`].
+const TORUS: u32 = 2;
+
+fn gpu() -> Gpu {
+    open_device().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
+}
+
+/// The renderer's shared structs have one layout in Rust, WGSL (naga), GLSL std430 and GLSL
+/// scalar (glslang), field by field; the uniform block's struct also under std140.
+#[test]
+fn renderer_structs_have_one_layout() {
+    let rust = [
+        rust_layout!(RtPushConstants {
+            eye,
+            tan_half_fov_y,
+            right,
+            aspect,
+            up,
+            texture_size,
+            forward,
+            mode,
+            cone,
+            width,
+            height
+        }),
+        rust_layout!(RtPixelRecord {
+            normal,
+            t,
+            direction,
+            instance,
+            barycentrics,
+            primitive,
+            hit,
+            cone,
+            width,
+            footprint,
+            texel_density,
+            base_lod,
+            lod,
+            gradient,
+            curvature,
+            curvature_spread,
+            reflected,
+            diff
+        }),
+        rust_layout!(RtDiffRecord {
+            eye_d_direction_dx,
+            lod,
+            eye_d_direction_dy,
+            offset_lod,
+            barycentric_dx,
+            barycentric_dy,
+            uv_dx,
+            uv_dy,
+            neighbour_right,
+            coverage,
+            neighbour_below,
+            pad0,
+            offset_dx,
+            pad1,
+            offset_dy,
+            pad2,
+            offset_uv_dx,
+            offset_uv_dy,
+            deltas,
+            pad3,
+            cone_deltas,
+            pad4
+        }),
+    ];
+    for rust in rust {
+        compare_layouts(&rust, &[GlslPacking::Std430, GlslPacking::Scalar]);
+    }
+    let uniforms = rust_layout!(RtUniforms {
+        view_inv,
+        proj_inv,
+        wireframe
+    });
+    compare_layouts(
+        &uniforms,
+        &[GlslPacking::Std140, GlslPacking::Std430, GlslPacking::Scalar],
+    );
+}
+
+/// Compares `rust` with its WGSL declaration in the ray-query source and its GLSL declaration in
+/// `rt_abi.glsl` under each of `packings`, and prints the table.
+fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
+    let include_dirs = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    let wgsl = layout::wgsl_layout(&ray_query_source(), &rust.name).unwrap_or_else(|e| panic!("{e}"));
+    let glsl: Vec<_> = packings
+        .iter()
+        .map(|&packing| {
+            let layout = layout::glsl_layout("#include \"rt_abi.glsl\"", &rust.name, packing, &include_dirs)
+                .unwrap_or_else(|e| panic!("{e}"));
+            (packing.qualifier(), layout)
+        })
+        .collect();
+    let mut columns = vec![("WGSL", &wgsl)];
+    columns.extend(glsl.iter().map(|(name, layout)| (*name, layout)));
+    for (_, shader) in &columns {
+        layout::compare(rust, shader).unwrap_or_else(|e| panic!("{e}"));
+    }
+    println!("{}", layout::render_columns(rust, &columns));
+}
+
+/// The GLSL closest-hit shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn glsl_closest_hit_agrees_with_the_mirror() {
+    agree("GLSL closest hit", |renderer, push, uniforms| {
+        renderer.render(push, uniforms)
+    });
+}
+
+/// The WGSL ray-query shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn wgsl_ray_query_agrees_with_the_mirror() {
+    agree("WGSL ray query", |renderer, push, uniforms| {
+        renderer.trace_wgsl(push, uniforms)
+    });
+}
+
+/// The views every path traces: the ground view and the mirror close-up, and the torus close-up
+/// once per wireframe preset, each with its mode, wireframe settings and image size.
+fn views() -> Vec<(Camera, Mode, WireframeSettings, (u32, u32))> {
+    let small = (WIDTH, HEIGHT);
+    let mut views = vec![
+        (
+            Camera::ground(),
+            Mode::ConeCurvature,
+            WireframeSettings::default(),
+            small,
+        ),
+        (
+            Camera::reflection(),
+            Mode::ConeCurvature,
+            WireframeSettings::default(),
+            small,
+        ),
+    ];
+    let presets = WireframeSettings::PRESETS.iter();
+    views.extend(presets.map(|&(_, settings)| (Camera::torus(), Mode::Wireframe, settings, TORUS_VIEW)));
+    views
+}
+
+/// What a frame was traced with: the push constants and the uniforms.
+struct Inputs {
+    push: RtPushConstants,
+    uniforms: RtUniforms,
+}
+
+/// Traces every view with `trace`, checks every pixel and prints, per value, the pixels checked
+/// and the largest error, and per wireframe preset how much of the torus view its lines cover.
+fn agree(path: &str, trace: impl Fn(&Renderer<'_>, &RtPushConstants, &RtUniforms) -> Result<Frame, Error>) {
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
+    println!(
+        "device: {}; {path}, {WIDTH} x {HEIGHT} per view, the torus at {} x {}",
+        gpu.name(),
+        TORUS_VIEW.0,
+        TORUS_VIEW.1
+    );
+    let mut stats = Stats::default();
+    let mut hits_per_mesh = vec![0usize; renderer.scene().meshes.len()];
+    for (camera, mode, settings, (width, height)) in views() {
+        let inputs = Inputs {
+            push: renderer.push_constants(&camera, mode, TEX_GRAD_SCALE, width, height),
+            uniforms: camera.uniforms((width, height), settings),
+        };
+        let frame = trace(&renderer, &inputs.push, &inputs.uniforms).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(frame.records.len(), (width * height) as usize);
+        for (index, record) in frame.records.iter().enumerate() {
+            let pixel = Vec2::new((index as u32 % width) as f32, (index as u32 / width) as f32);
+            check_pixel(renderer.scene(), &inputs, pixel, record, &mut stats);
+            if record.hit == 1 {
+                hits_per_mesh[record.instance as usize] += 1;
+            }
+        }
+        if mode == Mode::Wireframe {
+            check_line_coverage(&frame, settings);
+        }
+    }
+    let names: Vec<_> = renderer.scene().meshes.iter().map(|m| m.name).collect();
+    println!(
+        "hits per mesh {names:?}: {hits_per_mesh:?}; misses: {}",
+        stats.misses
+    );
+    print!("{}", stats.table());
+    assert!(hits_per_mesh.iter().all(|&n| n > 0), "every mesh must be hit");
+    assert!(stats.misses > 0, "some pixels must see the sky");
+    assert!(
+        stats.failures.is_empty(),
+        "{} value(s) out of tolerance:\n{}",
+        stats.failures.len(),
+        stats.failures.join("\n")
+    );
+}
+
+/// Largest error and largest error over tolerance of one value, over the pixels checked.
+#[derive(Default)]
+struct Stat {
+    pixels: usize,
+    max_error: f32,
+    max_ratio: f32,
+}
+
+/// Every value's [`Stat`], in the order first seen, and the first disagreements.
+#[derive(Default)]
+struct Stats {
+    values: Vec<(&'static str, Stat)>,
+    misses: usize,
+    failures: Vec<String>,
+}
+
+impl Stats {
+    /// Compares `got` (shader) with `expected` (mirror) for `value` within `tolerance`.
+    fn compare(
+        &mut self,
+        value: &'static str,
+        got: f32,
+        expected: f32,
+        tolerance: f32,
+        record: &RtPixelRecord,
+    ) {
+        self.compare_components(value, &[(got, expected, tolerance)], record);
+    }
+
+    /// Compares one pixel's `value`, given as (shader, mirror, tolerance) per component.
+    fn compare_components(
+        &mut self,
+        value: &'static str,
+        components: &[(f32, f32, f32)],
+        record: &RtPixelRecord,
+    ) {
+        let index = match self.values.iter().position(|(name, _)| *name == value) {
+            Some(index) => index,
+            None => {
+                self.values.push((value, Stat::default()));
+                self.values.len() - 1
+            }
+        };
+        for &(got, expected, tolerance) in components {
+            let error = if got == expected {
+                0.0
+            } else {
+                (got - expected).abs()
+            };
+            if (error.is_nan() || error > tolerance) && self.failures.len() < 10 {
+                self.failures.push(format!(
+                    "{value}: shader {got:e}, mirror {expected:e}, error {error:e} > tolerance {tolerance:e}\n  {record:?}"
+                ));
+            }
+            let stat = &mut self.values[index].1;
+            stat.max_error = stat.max_error.max(error);
+            if tolerance > 0.0 {
+                stat.max_ratio = stat.max_ratio.max(error / tolerance);
+            }
+        }
+        self.values[index].1.pixels += 1;
+    }
+
+    fn table(&self) -> String {
+        self.values
+            .iter()
+            .map(|(name, s)| {
+                format!(
+                    "{name:<20} {:>6} pixels  max error {:>9.3e}  ({:.4} of tolerance)\n",
+                    s.pixels, s.max_error, s.max_ratio
+                )
+            })
+            .collect()
+    }
+}
+
+/// Checks one pixel's record: a miss carries only the primary cone; a hit is looked up in the
+/// scene and every value is recomputed by the mirror from the shader's own inputs.
+fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelRecord, stats: &mut Stats) {
+    let push = &inputs.push;
+    let cone = rc::pinhole_ray_cone(push.cone.pixel_spread_angle);
+    assert_eq!(
+        record.cone, cone,
+        "the primary cone is the push constant's, bit for bit"
+    );
+    if record.hit == 0 {
+        assert_eq!(record.diff, RtDiffRecord::default(), "a miss measures nothing");
+        stats.misses += 1;
+        return;
+    }
+    assert_eq!(record.hit, 1, "hit flag: {record:?}");
+    let mesh = scene
+        .meshes
+        .get(record.instance as usize)
+        .expect("instance names a mesh");
+    assert!(
+        (record.primitive as usize) < mesh.triangle_count(),
+        "primitive in range: {record:?}"
+    );
+    let tri = mesh.triangle(record.primitive);
+    check_hit_data(&tri, push, record, stats);
+    check_values(&tri, push, record, stats);
+    check_differentials(&tri, inputs, pixel, record, stats);
+    check_reintersection(&tri, inputs, record, stats);
+}
+
+/// Compares the shader's `got` with the mirror of the suite's `check` on `args`, component by
+/// component, each within the check's own tolerance for it.
+fn compare_with<A: shader_proptest::Args, R: Value>(
+    stats: &mut Stats,
+    value: &'static str,
+    check: FunctionCheck<A, R>,
+    (args, got): (A, R),
+    record: &RtPixelRecord,
+) {
+    let expected = check.mirror(args.clone());
+    let bounds = check.bounds(&args, &expected);
+    let (mut shader, mut mirror) = (Vec::new(), Vec::new());
+    got.components(&mut shader);
+    expected.components(&mut mirror);
+    assert_eq!(shader.len(), mirror.len());
+    let components: Vec<_> = shader
+        .iter()
+        .zip(&mirror)
+        .zip(bounds)
+        .map(|((&got, &expected), bound)| (got, expected, bound))
+        .collect();
+    stats.compare_components(value, &components, record);
+}
+
+/// UV gradients in texels of the renderer's square texture (a power of two: exact).
+fn texels(uv: Derivatives2, push: &RtPushConstants) -> Derivatives2 {
+    Derivatives2::new(uv.dx * push.texture_size, uv.dy * push.texture_size)
+}
+
+/// The hit barycentrics `(w, u, v)` as the shaders form them.
+fn weights(record: &RtPixelRecord) -> Vec3 {
+    let (u, v) = (record.barycentrics.x, record.barycentrics.y);
+    Vec3::new(1.0 - u - v, u, v)
+}
+
+/// The eye-ray differential of `pixel` from the uniforms' matrices, carried to the hit as
+/// barycentric and UV derivatives, and their LOD: each against the mirror on the shader's inputs.
+fn check_differentials(
+    tri: &[Vertex; 3],
+    inputs: &Inputs,
+    pixel: Vec2,
+    record: &RtPixelRecord,
+    stats: &mut Stats,
+) {
+    use suite::ray_diff as checks;
+    let (d, push, uniforms) = (&record.diff, &inputs.push, &inputs.uniforms);
+    let size = Vec2::new(push.width as f32, push.height as f32);
+    let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
+    let matrices = (pixel, size, uniforms.view_inv, uniforms.proj_inv);
+    let eye = RayDiff::new(Vec3::ZERO, Vec3::ZERO, d.eye_d_direction_dx, d.eye_d_direction_dy);
+    let eye_check = checks::eye_ray_diff_from_matrices();
+    compare_with(stats, "eye ray diff", eye_check, (matrices, eye), record);
+    let barycentric = Derivatives2::new(d.barycentric_dx, d.barycentric_dy);
+    let transfer_args = (eye, record.direction, record.t, p[0], p[1], p[2]);
+    let barycentric_check = checks::barycentric_derivatives();
+    compare_with(
+        stats,
+        "barycentric derivs",
+        barycentric_check,
+        (transfer_args, barycentric),
+        record,
+    );
+    let gradients = Derivatives2::new(d.uv_dx, d.uv_dy);
+    let uv_args = (barycentric, uv[0], uv[1], uv[2]);
+    compare_with(
+        stats,
+        "uv gradients",
+        checks::texture_derivatives(),
+        (uv_args, gradients),
+        record,
+    );
+    let lod_args = (texels(gradients, push),);
+    compare_with(
+        stats,
+        "ray diff lod",
+        checks::lod_isotropic(),
+        (lod_args, d.lod),
+        record,
+    );
+}
+
+/// The neighbour pixels' directions, the re-intersected barycentric offsets, their UV gradients
+/// and LOD, the deltas and the wireframe coverage they give, and the closed-form cone deltas:
+/// each against the mirror on the shader's inputs. The scene's instances have identity
+/// transforms, so the world-to-object matrix is the identity; primary rays start at the eye.
+fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelRecord, stats: &mut Stats) {
+    use suite::ray_diff as checks;
+    let (d, push) = (&record.diff, &inputs.push);
+    let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
+    let next = NeighbourDirections {
+        right: d.neighbour_right,
+        below: d.neighbour_below,
+    };
+    let w = weights(record);
+    let offset_args = (
+        Mat4::IDENTITY,
+        push.eye,
+        p[0],
+        p[1],
+        p[2],
+        next.right,
+        next.below,
+        w,
+    );
+    let offsets = Derivatives3::new(d.offset_dx, d.offset_dy);
+    compare_with(
+        stats,
+        "bary offsets",
+        checks::barycentric_offsets(),
+        (offset_args, offsets),
+        record,
+    );
+    let gradients = Derivatives2::new(d.offset_uv_dx, d.offset_uv_dy);
+    let uv_args = (offsets, uv[0], uv[1], uv[2]);
+    let uv_check = checks::uv_gradients_from_offsets();
+    compare_with(
+        stats,
+        "offset uv gradients",
+        uv_check,
+        (uv_args, gradients),
+        record,
+    );
+    let lod_args = (texels(gradients, push),);
+    compare_with(
+        stats,
+        "offset lod",
+        checks::lod_isotropic(),
+        (lod_args, d.offset_lod),
+        record,
+    );
+    compare_with(
+        stats,
+        "bary deltas",
+        checks::barycentric_deltas(),
+        (offset_args, d.deltas),
+        record,
+    );
+    let settings = inputs.uniforms.wireframe.settings.unpack();
+    let coverage_check = suite::wireframe::process_wireframe();
+    compare_with(
+        stats,
+        "coverage",
+        coverage_check,
+        ((settings, w, d.deltas), d.coverage),
+        record,
+    );
+    let cone_args = (record.footprint, p[0], p[1], p[2]);
+    let cone_check = checks::cone_barycentric_deltas();
+    compare_with(
+        stats,
+        "cone deltas",
+        cone_check,
+        (cone_args, d.cone_deltas),
+        record,
+    );
+    assert_eq!([d.pad0, d.pad1, d.pad2, d.pad3, d.pad4], [0; 5], "pads are 0");
+}
+
+/// The wireframe of `settings` on the torus view: some pixels on a line, some between lines,
+/// and, where the preset anti-aliases (smoothing > 0), some partly covered. Prints the shares.
+fn check_line_coverage(frame: &Frame, settings: WireframeSettings) {
+    let torus: Vec<f32> = frame
+        .records
+        .iter()
+        .filter(|r| r.hit == 1 && r.instance == TORUS)
+        .map(|r| r.diff.coverage)
+        .collect();
+    let share =
+        |keep: fn(f32) -> bool| torus.iter().filter(|&&c| keep(c)).count() as f32 / torus.len() as f32;
+    let (none, partial, full) = (
+        share(|c| c == 0.0),
+        share(|c| c > 0.0 && c < 1.0),
+        share(|c| c == 1.0),
+    );
+    println!(
+        "wireframe {settings:?}\n  torus pixels {}: uncovered {:.1}%, partly covered {:.1}%, fully covered {:.1}%",
+        torus.len(),
+        100.0 * none,
+        100.0 * partial,
+        100.0 * full
+    );
+    assert!(!torus.is_empty(), "the torus view must show the torus");
+    assert!(none > 0.0 && none < 1.0, "lines and gaps between them");
+    if settings.smoothing > 0.0 {
+        assert!(partial > 0.0, "anti-aliased lines have partly covered pixels");
+    }
+}
+
+/// The hit data is the scene's: the normal is the interpolated vertex normal at the recorded
+/// barycentrics, and the hit point lies on the recorded triangle.
+fn check_hit_data(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecord, stats: &mut Stats) {
+    let (u, v) = (record.barycentrics.x, record.barycentrics.y);
+    let w = [1.0 - u - v, u, v];
+    let terms = [0, 1, 2].map(|i| w[i] * tri[i].normal);
+    let sum = terms[0] + terms[1] + terms[2];
+    let normal = sum.normalize();
+    // Each component: two products and two additions, possibly fused (2.5 ULP of the sum of
+    // the terms' magnitudes on each side: 5). A perturbation d of the sum moves its
+    // normalization by at most |d| / |sum|; normalize itself (dot 3 ULP -> 1.5, inversesqrt 2,
+    // product 0.5) adds 4 ULP, the mirror's 3 more.
+    let magnitudes = terms[0].abs() + terms[1].abs() + terms[2].abs();
+    let tolerance = ulps(5.0, magnitudes.element_sum()) / sum.length() + ulps(7.0, 1.0);
+    let (worst, _) = (0..3)
+        .map(|axis| (axis, (record.normal[axis] - normal[axis]).abs()))
+        .fold((0, -1.0), |best, next| if next.1 > best.1 { next } else { best });
+    stats.compare("normal", record.normal[worst], normal[worst], tolerance, record);
+    // Not a Vulkan precision rule (ray-triangle intersection has none): the point at distance t
+    // along the ray and the point at the barycentrics must coincide to a part in 10^4 of the
+    // distance travelled, which a hit attributed to a wrong triangle or instance misses by far.
+    let along_ray = push.eye + record.t * record.direction; // primary rays start at the eye
+    let on_triangle = w[0] * tri[0].position + w[1] * tri[1].position + w[2] * tri[2].position;
+    let gap = (along_ray - on_triangle).length();
+    stats.compare(
+        "hit point",
+        gap,
+        0.0,
+        1.0e-4 * (record.t + push.eye.length()),
+        record,
+    );
+}
+
+/// Every ray-cone value, recomputed by the mirror from the inputs the shader used.
+fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecord, stats: &mut Stats) {
+    let r = record;
+    let (cone, t, n, d) = (r.cone, r.t, r.normal, r.direction);
+    let p = tri.map(|v| v.position);
+    let uv = tri.map(|v| v.uv);
+    let normals = tri.map(|v| v.normal);
+    let cos = n.dot(d).abs().max(MIN_COS);
+    let width_error = ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs());
+
+    // width_at: width + spread * t, possibly fused: 2 ULP of the larger term.
+    stats.compare("width", r.width, rc::width_at(cone, t), width_error, r);
+
+    // world_footprint: the width's error over |cos|, the division (3 ULP), and the dot
+    // product's rounding over |cos| as a relative error.
+    let footprint = rc::world_footprint(cone, t, n, d);
+    let footprint_error = width_error / cos + ulps(3.0, footprint) + footprint.abs() * dot_error(n, d) / cos;
+    stats.compare("footprint", r.footprint, footprint, footprint_error, r);
+
+    // texel_density: the areas' errors through sqrt(uv) / sqrt(world), two square roots, a
+    // division and the mirror (14.5 ULP).
+    let density = rc::texel_density(p[0], p[1], p[2], uv[0], uv[1], uv[2]);
+    let density_error = area_corners(p, uv, |uv, world| {
+        uv.sqrt() / world.max(f64::from(MIN_MAGNITUDE)).sqrt()
+    }) + ulps(14.5, density);
+    stats.compare("texel_density", r.texel_density, density, density_error, r);
+
+    // triangle_base_lod: the areas' errors through 0.5 * (log2 uv - log2 world), half of each
+    // log2's own error, the subtraction and the halving (2 ULP).
+    let base_lod = rc::triangle_base_lod(p[0], p[1], p[2], uv[0], uv[1], uv[2]);
+    let uv_area2 = rc::triangle_uv_area2(uv[0], uv[1], uv[2]).max(MIN_MAGNITUDE);
+    let world_area2 = rc::triangle_world_area2(p[0], p[1], p[2]).max(MIN_MAGNITUDE);
+    let min = f64::from(MIN_MAGNITUDE);
+    let base_lod_error = area_corners(p, uv, |uv, world| {
+        0.5 * (uv.max(min).log2() - world.max(min).log2())
+    }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
+        + ulps(2.0, base_lod);
+    stats.compare("base_lod", r.base_lod, base_lod, base_lod_error, r);
+
+    // texture_lod: the suite's own tolerance, on the shader's base LOD and width.
+    let size = Vec2::splat(push.texture_size);
+    let lod_args = (r.base_lod, r.width, size, n, d);
+    let lod = rc::texture_lod(r.base_lod, r.width, size, n, d);
+    let lod_check = suite::ray_cone::texture_lod();
+    stats.compare("lod", r.lod, lod, lod_check.bounds(&lod_args, &lod)[0], r);
+
+    // texture_gradient of footprint * density: two correctly rounded products, the same on both
+    // sides (the denormal floor only).
+    let gradient = rc::texture_gradient(r.footprint * r.texel_density, push.cone.tex_grad_scale);
+    stats.compare("gradient", r.gradient, gradient, f32::MIN_POSITIVE, r);
+
+    // triangle_curvature: the three edges' errors, two additions and the division by 3.
+    let curvature = rc::triangle_curvature(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
+    let edges = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| (p[i], p[j], normals[i], normals[j]));
+    let edge_errors: f32 = edges
+        .iter()
+        .map(|&(a, b, m, k)| edge_curvature_error(a, b, m, k))
+        .sum();
+    let edge_sizes: f32 = edges
+        .iter()
+        .map(|&(a, b, m, k)| rc::edge_curvature(a, b, m, k).abs())
+        .sum();
+    stats.compare(
+        "curvature",
+        r.curvature,
+        curvature,
+        (edge_errors + ulps(5.0, edge_sizes)) / 3.0,
+        r,
+    );
+
+    // curvature_spread_angle: two products and a division (5 ULP), and the dot product's
+    // rounding over |cos| as a relative error.
+    let spread = rc::curvature_spread_angle(r.curvature, r.width, n, d);
+    let spread_error = ulps(5.0, spread) + spread.abs() * dot_error(n, d) / cos;
+    stats.compare("curvature_spread", r.curvature_spread, spread, spread_error, r);
+
+    // propagate: the width as width_at; the spread is one correctly rounded addition.
+    let reflected = rc::propagate(cone, t, r.curvature_spread);
+    stats.compare(
+        "reflected width",
+        r.reflected.width,
+        reflected.width,
+        width_error,
+        r,
+    );
+    stats.compare(
+        "reflected spread",
+        r.reflected.spread_angle,
+        reflected.spread_angle,
+        0.0,
+        r,
+    );
+}

@@ -1,0 +1,693 @@
+//! Checks: a shader function against its Rust mirror, on batches of generated cases.
+//!
+//! A check generates each batch of cases from its own seed with a proptest strategy, on as many
+//! threads as the machine has, while the device runs the previous batch: one dispatch of a
+//! generated kernel per batch. Every output component is compared with the mirror's within the
+//! check's [`Tolerance`]; for finite inputs both outputs must be finite too. A failing case is
+//! shrunk with proptest (re-generated from its batch's seed, then simplified one dispatch at a
+//! time) and reported with its inputs, both outputs, the tolerance, the seed that replays the run
+//! and the kernel's source.
+
+use super::compute::ComputeKernel;
+use super::device::{Error, Gpu};
+use crate::compile::Language;
+use crate::kernel::kernel_source;
+use crate::layout::{compare, glsl_layout, wgsl_layout, GlslPacking, LayoutError};
+use crate::shader::Shader;
+use crate::tolerance::Tolerance;
+use crate::value::{Args, ShaderType, StructType, Value};
+use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use std::fmt;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::mpsc::sync_channel;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// Environment variable that sets [`RunConfig::seed`] (decimal, or hexadecimal after `0x`), to
+/// replay a run.
+pub const SEED_ENV: &str = "SHADER_PROPTEST_SEED";
+
+/// Strategy rejections (`prop_filter`) tolerated in a row before a check gives up.
+const MAX_REJECTIONS: usize = 10_000;
+
+/// How many cases a check runs, how they are batched and generated.
+#[derive(Clone, Copy, Debug)]
+pub struct RunConfig {
+    /// At least this many cases are checked (before any shrinking).
+    pub cases: usize,
+    /// Cases per batch (one dispatch).
+    pub batch: usize,
+    /// The seed of the run; batch `i` is generated from a seed derived from it and `i`. `None`: a
+    /// fresh seed, printed in the report.
+    pub seed: Option<u64>,
+    /// Threads that generate cases and run the mirror.
+    pub threads: usize,
+    /// Most shrinking steps (one dispatch each) after a failure.
+    pub shrink_steps: usize,
+}
+
+impl Default for RunConfig {
+    /// 100,000 cases in batches of 8,192, the seed from [`SEED_ENV`] if set (else fresh), one
+    /// thread per processor, up to 1,024 shrinking steps.
+    fn default() -> Self {
+        RunConfig {
+            cases: 100_000,
+            batch: 8192,
+            seed: std::env::var(SEED_ENV).ok().and_then(|text| parse_seed(&text)),
+            threads: std::thread::available_parallelism().map_or(1, usize::from),
+            shrink_steps: 1024,
+        }
+    }
+}
+
+fn parse_seed(text: &str) -> Option<u64> {
+    match text.strip_prefix("0x") {
+        Some(hex) => u64::from_str_radix(hex, 16).ok(),
+        None => text.parse().ok(),
+    }
+}
+
+/// A seed no earlier run used: the clock's nanoseconds mixed with the process id.
+fn fresh_seed() -> u64 {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |elapsed| elapsed.as_nanos() as u64);
+    splitmix(nanos ^ u64::from(std::process::id()).rotate_left(32))
+}
+
+/// SplitMix64's finaliser: spreads the bits of `x`.
+fn splitmix(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// The proptest runner that generates batch `batch` of a run seeded with `seed`.
+fn batch_runner(seed: u64, batch: usize) -> TestRunner {
+    let first = splitmix(seed ^ splitmix(batch as u64));
+    let mut bytes = [0u8; 16];
+    bytes[..8].copy_from_slice(&first.to_le_bytes());
+    bytes[8..].copy_from_slice(&splitmix(first).to_le_bytes());
+    TestRunner::new_with_rng(
+        Config::default(),
+        TestRng::from_seed(RngAlgorithm::XorShift, &bytes),
+    )
+}
+
+/// How a check ended.
+#[derive(Clone, Debug)]
+pub enum Outcome {
+    /// Every case agreed.
+    Passed,
+    /// A case disagreed (or the layouts differ).
+    Failed(Box<Failure>),
+    /// The device lacks something the shader needs: the reason. Never counted as passed.
+    NotRun(String),
+}
+
+/// A disagreement, after shrinking.
+#[derive(Clone, Debug)]
+pub struct Failure {
+    /// What differs: a component beyond its tolerance, a non-finite output, or a layout.
+    pub reason: String,
+    /// The (shrunk) arguments.
+    pub input: String,
+    /// The mirror's result.
+    pub mirror: String,
+    /// The shader's result.
+    pub shader: String,
+    /// Shrinking steps taken (dispatches of one case).
+    pub shrink_steps: usize,
+    /// The generated kernel.
+    pub kernel: String,
+}
+
+/// The outcome of one check in one language.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// The shader function.
+    pub function: String,
+    /// The language that ran.
+    pub language: Language,
+    /// Cases compared (shrinking excluded).
+    pub cases: usize,
+    /// Largest `|shader - mirror|` over every output component.
+    pub max_error: f32,
+    /// Largest error as a fraction of its tolerance (1 is the limit).
+    pub max_ratio: f32,
+    /// Share of the cases with a vacuous tolerance: at least as wide as the spread of that
+    /// component's mirror outputs over the case's batch (a tolerance that no plausible output
+    /// could exceed).
+    pub vacuous: f64,
+    /// The seed that replays this run ([`RunConfig::seed`], [`SEED_ENV`]).
+    pub seed: u64,
+    /// Wall time of the whole check.
+    pub elapsed: Duration,
+    /// Passed, failed or not run.
+    pub outcome: Outcome,
+}
+
+impl Report {
+    /// Whether every case agreed.
+    pub fn passed(&self) -> bool {
+        matches!(self.outcome, Outcome::Passed)
+    }
+
+    /// Panics with the report unless the check passed (a check that did not run fails too).
+    pub fn assert_passed(&self) {
+        assert!(self.passed(), "{self}");
+    }
+}
+
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let verdict = match &self.outcome {
+            Outcome::Passed => String::from("pass"),
+            Outcome::Failed(_) => String::from("FAIL"),
+            Outcome::NotRun(reason) => format!("not run: {reason}"),
+        };
+        write!(
+            f,
+            "{:<38} {:<5} {:>9} cases  max error {:>9.3e}  ({:>6.4} of tolerance)  vacuous {:>6.2}%  {verdict}",
+            self.function,
+            self.language.name(),
+            self.cases,
+            self.max_error,
+            self.max_ratio,
+            100.0 * self.vacuous,
+        )?;
+        if let Outcome::Failed(failure) = &self.outcome {
+            write!(
+                f,
+                "\n  {}\n  input:  {}\n  mirror: {}\n  shader: {}\n  shrunk in {} steps; replay with {SEED_ENV}={:#x}\n  kernel:\n{}",
+                failure.reason,
+                failure.input,
+                failure.mirror,
+                failure.shader,
+                failure.shrink_steps,
+                self.seed,
+                failure.kernel
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// A type-erased check, for a registry of checks of different signatures.
+pub trait Check: Send + Sync {
+    /// The shader function.
+    fn function(&self) -> &str;
+    /// The source of the kernel that runs the function of `shader`.
+    fn kernel(&self, shader: &Shader) -> String;
+    /// Runs the check on the function of `shader`. `Err`: the harness could not run (device,
+    /// compiler, validation layer); a disagreement is a [`Report`] whose outcome is
+    /// [`Outcome::Failed`].
+    fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error>;
+}
+
+/// One shader function, its mirror, the inputs to try and the tolerance.
+///
+/// ```no_run
+/// use glam::Vec3;
+/// use proptest::prelude::*;
+/// use shader_proptest::{FunctionCheck, Gpu, RunConfig, Shader, Tolerance};
+///
+/// let gpu = Gpu::new()?;
+/// let shader = Shader::wgsl("fn luminance(c: vec3<f32>) -> f32 { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }");
+/// let check = FunctionCheck::new(
+///     "luminance",
+///     || (0.0f32..1.0, 0.0f32..1.0, 0.0f32..1.0).prop_map(|(r, g, b)| (Vec3::new(r, g, b),)),
+///     |(c,): (Vec3,)| c.dot(Vec3::new(0.2126, 0.7152, 0.0722)),
+/// )
+/// .tolerance(Tolerance::Ulps(4.0));
+/// check.run(&gpu, &shader, &RunConfig::default())?.assert_passed();
+/// # Ok::<(), shader_proptest::Error>(())
+/// ```
+pub struct FunctionCheck<A, R> {
+    function: String,
+    strategy: Arc<dyn Fn() -> BoxedStrategy<A> + Send + Sync>,
+    mirror: Arc<dyn Fn(A) -> R + Send + Sync>,
+    tolerance: Tolerance<A>,
+}
+
+/// Counters of a run.
+#[derive(Default)]
+struct Stats {
+    cases: usize,
+    max_error: f32,
+    max_ratio: f32,
+    vacuous: usize,
+}
+
+/// A batch generated by a worker: the cases, their words, the mirror's components and bounds.
+struct Prepared<A> {
+    index: usize,
+    cases: Vec<A>,
+    input: Vec<u32>,
+    expected: Vec<f32>,
+    bounds: Vec<f32>,
+    vacuous: usize,
+}
+
+/// Where a case first disagreed, and how.
+struct Mismatch {
+    batch: usize,
+    case: usize,
+    reason: String,
+}
+
+impl<A: Args, R: Value> FunctionCheck<A, R> {
+    /// A check of the shader function `function` against `mirror`, on cases from the strategies
+    /// `strategy` makes (one per generating thread), bit-exact until [`FunctionCheck::tolerance`]
+    /// says otherwise.
+    pub fn new<S>(
+        function: impl Into<String>,
+        strategy: impl Fn() -> S + Send + Sync + 'static,
+        mirror: impl Fn(A) -> R + Send + Sync + 'static,
+    ) -> FunctionCheck<A, R>
+    where
+        S: Strategy<Value = A> + 'static,
+    {
+        FunctionCheck {
+            function: function.into(),
+            strategy: Arc::new(move || strategy().boxed()),
+            mirror: Arc::new(mirror),
+            tolerance: Tolerance::Exact,
+        }
+    }
+
+    /// The same check with `tolerance`.
+    pub fn tolerance(self, tolerance: Tolerance<A>) -> FunctionCheck<A, R> {
+        FunctionCheck { tolerance, ..self }
+    }
+
+    /// The shader function.
+    pub fn function(&self) -> &str {
+        &self.function
+    }
+
+    /// The mirror's result for `args`.
+    pub fn mirror(&self, args: A) -> R {
+        (self.mirror)(args)
+    }
+
+    /// A strategy for the check's arguments.
+    pub fn strategy(&self) -> BoxedStrategy<A> {
+        (self.strategy)()
+    }
+
+    /// The tolerance of each of `expected`'s components for the case `args`.
+    pub fn bounds(&self, args: &A, expected: &R) -> Vec<f32> {
+        let mut bounds = Vec::new();
+        self.tolerance.bounds(args, &components(expected), &mut bounds);
+        bounds
+    }
+
+    /// Compares the shader's result `got` for `args` with the mirror's, within the tolerance: the
+    /// largest error as a fraction of its tolerance, or what differs.
+    pub fn compare(&self, args: &A, got: &R) -> Result<f32, String> {
+        let expected = components(&self.mirror(args.clone()));
+        let mut bounds = Vec::new();
+        self.tolerance.bounds(args, &expected, &mut bounds);
+        let mut stats = Stats::default();
+        judge(args.is_finite(), &components(got), &expected, &bounds, &mut stats)?;
+        Ok(stats.max_ratio)
+    }
+
+    /// The source of the kernel that runs the function of `shader`.
+    pub fn kernel(&self, shader: &Shader) -> String {
+        kernel_source(shader, &self.function, A::TYPES, R::TYPE)
+    }
+
+    /// Runs the check on the function of `shader` (see [`Check::run`]).
+    pub fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
+        let started = Instant::now();
+        let seed = config.seed.unwrap_or_else(fresh_seed);
+        let mut report = Report {
+            function: self.function.clone(),
+            language: shader.language(),
+            cases: 0,
+            max_error: 0.0,
+            max_ratio: 0.0,
+            vacuous: 0.0,
+            seed,
+            elapsed: Duration::ZERO,
+            outcome: Outcome::Passed,
+        };
+        let kernel = self.kernel(shader);
+        if let Some(reason) = missing_feature(gpu, shader) {
+            report.outcome = Outcome::NotRun(reason);
+        } else if let Err(error) = check_layouts(shader, A::TYPES, R::TYPE) {
+            report.outcome = Outcome::Failed(Box::new(Failure {
+                reason: format!("the Rust and shader layouts differ: {error}"),
+                input: String::new(),
+                mirror: String::new(),
+                shader: String::new(),
+                shrink_steps: 0,
+                kernel,
+            }));
+        } else {
+            let pipeline = ComputeKernel::new(gpu, &compile(shader, &kernel)?, 0)?;
+            let mut stats = Stats::default();
+            let mismatch = self.run_batches(&pipeline, config, seed, &mut stats)?;
+            report.cases = stats.cases;
+            report.max_error = stats.max_error;
+            report.max_ratio = stats.max_ratio;
+            report.vacuous = stats.vacuous as f64 / stats.cases.max(1) as f64;
+            if let Some(mismatch) = mismatch {
+                report.outcome =
+                    Outcome::Failed(Box::new(self.shrink(&pipeline, config, seed, mismatch, kernel)?));
+            }
+        }
+        report.elapsed = started.elapsed();
+        Ok(report)
+    }
+
+    /// Generates the batches on worker threads and runs them on the device as they arrive; returns
+    /// the first disagreement (lowest batch, then case) among the batches run.
+    fn run_batches(
+        &self,
+        pipeline: &ComputeKernel<'_>,
+        config: &RunConfig,
+        seed: u64,
+        stats: &mut Stats,
+    ) -> Result<Option<Mismatch>, Error> {
+        let batch = config.batch.max(1);
+        let total = config.cases.max(1);
+        let batches = total.div_ceil(batch);
+        let next = AtomicUsize::new(0);
+        let stop = AtomicBool::new(false);
+        let (sender, receiver) = sync_channel::<Result<Prepared<A>, Error>>(config.threads.max(1));
+        std::thread::scope(|scope| {
+            for _ in 0..config.threads.max(1) {
+                let sender = sender.clone();
+                let (next, stop) = (&next, &stop);
+                scope.spawn(move || loop {
+                    let index = next.fetch_add(1, Ordering::Relaxed);
+                    if index >= batches || stop.load(Ordering::Relaxed) {
+                        break;
+                    }
+                    let size = batch.min(total - index * batch);
+                    if sender.send(self.prepare(seed, index, size)).is_err() {
+                        break;
+                    }
+                });
+            }
+            drop(sender);
+            let mut first: Option<Mismatch> = None;
+            let mut error = None;
+            for prepared in receiver {
+                let outcome = prepared.and_then(|prepared| self.dispatch_batch(pipeline, &prepared, stats));
+                match outcome {
+                    Ok(None) => {}
+                    Ok(Some(mismatch)) => {
+                        stop.store(true, Ordering::Relaxed);
+                        if first
+                            .as_ref()
+                            .is_none_or(|f| (mismatch.batch, mismatch.case) < (f.batch, f.case))
+                        {
+                            first = Some(mismatch);
+                        }
+                    }
+                    Err(e) => {
+                        stop.store(true, Ordering::Relaxed);
+                        error.get_or_insert(e);
+                    }
+                }
+            }
+            match error {
+                Some(e) => Err(e),
+                None => Ok(first),
+            }
+        })
+    }
+
+    /// Generates batch `index` (`size` cases) and runs the mirror and the tolerance on it.
+    fn prepare(&self, seed: u64, index: usize, size: usize) -> Result<Prepared<A>, Error> {
+        let mut runner = batch_runner(seed, index);
+        let strategy = (self.strategy)();
+        let mut prepared = Prepared {
+            index,
+            cases: Vec::with_capacity(size),
+            input: Vec::new(),
+            expected: Vec::new(),
+            bounds: Vec::new(),
+            vacuous: 0,
+        };
+        for _ in 0..size {
+            let args = generate(&strategy, &mut runner)?.current();
+            args.write(&mut prepared.input);
+            let start = prepared.expected.len();
+            self.mirror(args.clone()).components(&mut prepared.expected);
+            self.tolerance
+                .bounds(&args, &prepared.expected[start..], &mut prepared.bounds);
+            prepared.cases.push(args);
+        }
+        prepared.vacuous = count_vacuous(&prepared.expected, &prepared.bounds, size);
+        Ok(prepared)
+    }
+
+    /// Runs one prepared batch and compares it: the first disagreeing case, if any.
+    fn dispatch_batch(
+        &self,
+        pipeline: &ComputeKernel<'_>,
+        prepared: &Prepared<A>,
+        stats: &mut Stats,
+    ) -> Result<Option<Mismatch>, Error> {
+        let count = prepared.cases.len();
+        let output = pipeline.dispatch(count, &prepared.input, count * R::TYPE.words())?;
+        let per_case = prepared.expected.len() / count.max(1);
+        let mut words = &output[..];
+        let mut got = Vec::with_capacity(per_case);
+        stats.vacuous += prepared.vacuous;
+        for (case, args) in prepared.cases.iter().enumerate() {
+            got.clear();
+            R::read(&mut words).components(&mut got);
+            let range = case * per_case..(case + 1) * per_case;
+            if let Err(reason) = judge(
+                args.is_finite(),
+                &got,
+                &prepared.expected[range.clone()],
+                &prepared.bounds[range],
+                stats,
+            ) {
+                return Ok(Some(Mismatch {
+                    batch: prepared.index,
+                    case,
+                    reason,
+                }));
+            }
+        }
+        Ok(None)
+    }
+
+    /// Re-generates the failing case from its batch's seed and simplifies it while it still
+    /// fails, one dispatch per step.
+    fn shrink(
+        &self,
+        pipeline: &ComputeKernel<'_>,
+        config: &RunConfig,
+        seed: u64,
+        mismatch: Mismatch,
+        kernel: String,
+    ) -> Result<Failure, Error> {
+        let mut runner = batch_runner(seed, mismatch.batch);
+        let strategy = (self.strategy)();
+        let mut tree = generate(&strategy, &mut runner)?;
+        for _ in 0..mismatch.case {
+            tree = generate(&strategy, &mut runner)?;
+        }
+        let mut smallest = (tree.current(), mismatch.reason);
+        let mut steps = 0;
+        let mut simplified = tree.simplify();
+        while simplified && steps < config.shrink_steps {
+            steps += 1;
+            let candidate = tree.current();
+            match self.evaluate_one(pipeline, &candidate)? {
+                Err(reason) => {
+                    smallest = (candidate, reason);
+                    simplified = tree.simplify();
+                }
+                Ok(()) => simplified = tree.complicate(),
+            }
+        }
+        let (args, reason) = smallest;
+        let shader = self.run_one(pipeline, &args)?;
+        Ok(Failure {
+            reason,
+            input: format!("{args:?}"),
+            mirror: format!("{:?}", self.mirror(args.clone())),
+            shader: format!("{shader:?}"),
+            shrink_steps: steps,
+            kernel,
+        })
+    }
+
+    fn run_one(&self, pipeline: &ComputeKernel<'_>, args: &A) -> Result<R, Error> {
+        let mut input = Vec::new();
+        args.write(&mut input);
+        let output = pipeline.dispatch(1, &input, R::TYPE.words())?;
+        Ok(R::read(&mut &output[..]))
+    }
+
+    /// Runs one case: `Ok(Err(reason))` when it disagrees.
+    fn evaluate_one(&self, pipeline: &ComputeKernel<'_>, args: &A) -> Result<Result<(), String>, Error> {
+        let got = self.run_one(pipeline, args)?;
+        Ok(self.compare(args, &got).map(|_| ()))
+    }
+}
+
+impl<A: Args, R: Value> Check for FunctionCheck<A, R> {
+    fn function(&self) -> &str {
+        &self.function
+    }
+
+    fn kernel(&self, shader: &Shader) -> String {
+        FunctionCheck::kernel(self, shader)
+    }
+
+    fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
+        FunctionCheck::run(self, gpu, shader, config)
+    }
+}
+
+/// Runs `function` of `shader` on each of `cases`, in one dispatch, and returns the results.
+pub fn evaluate<A: Args, R: Value>(
+    gpu: &Gpu,
+    shader: &Shader,
+    function: &str,
+    cases: &[A],
+) -> Result<Vec<R>, Error> {
+    let kernel = kernel_source(shader, function, A::TYPES, R::TYPE);
+    let pipeline = ComputeKernel::new(gpu, &compile(shader, &kernel)?, 0)?;
+    let mut input = Vec::new();
+    cases.iter().for_each(|args| args.write(&mut input));
+    let output = pipeline.dispatch(cases.len(), &input, cases.len() * R::TYPE.words())?;
+    let mut words = &output[..];
+    Ok(cases.iter().map(|_| R::read(&mut words)).collect())
+}
+
+/// Compiles a kernel of `shader`, naming the kernel in the error.
+pub(crate) fn compile(shader: &Shader, kernel: &str) -> Result<Vec<u32>, Error> {
+    shader
+        .compile_kernel(kernel)
+        .map_err(|error| Error::Compile(format!("{error}\n--- kernel ---\n{kernel}")))
+}
+
+/// The first feature `shader` needs that `gpu` lacks, as a reason.
+pub(crate) fn missing_feature(gpu: &Gpu, shader: &Shader) -> Option<String> {
+    shader
+        .features()
+        .iter()
+        .find(|&&feature| !gpu.has(feature))
+        .map(|feature| format!("{} lacks {}", gpu.name(), feature.name()))
+}
+
+/// Compares the Rust layout of every `pod` struct among the types with the shader's: naga's
+/// layout of the WGSL source, or the GLSL source's struct in a std430 block.
+fn check_layouts(shader: &Shader, parameters: &[ShaderType], result: ShaderType) -> Result<(), LayoutError> {
+    let mut structs: Vec<&'static StructType> = Vec::new();
+    parameters
+        .iter()
+        .chain([&result])
+        .for_each(|ty| ty.structs(&mut structs));
+    for ty in structs {
+        let Some(rust_layout) = ty.rust_layout else {
+            continue;
+        };
+        let shader_layout = match shader.language() {
+            Language::Wgsl => wgsl_layout(shader.source(), ty.name)?,
+            Language::Glsl => glsl_layout(
+                shader.source(),
+                ty.name,
+                GlslPacking::Std430,
+                &shader.include_dirs(),
+            )?,
+        };
+        compare(&rust_layout(), &shader_layout)?;
+    }
+    Ok(())
+}
+
+/// A value tree from `strategy`, retrying rejected values.
+fn generate<A: fmt::Debug>(
+    strategy: &BoxedStrategy<A>,
+    runner: &mut TestRunner,
+) -> Result<Box<dyn ValueTree<Value = A>>, Error> {
+    for _ in 0..MAX_REJECTIONS {
+        if let Ok(tree) = strategy.new_tree(runner) {
+            return Ok(tree);
+        }
+    }
+    Err(Error::Strategy(format!(
+        "the strategy rejected {MAX_REJECTIONS} values in a row"
+    )))
+}
+
+fn components<R: Value>(value: &R) -> Vec<f32> {
+    let mut out = Vec::new();
+    value.components(&mut out);
+    out
+}
+
+/// Compares one case's components: `Err` names the first that differs beyond its bound, or a
+/// non-finite output for finite inputs.
+fn judge(
+    finite_input: bool,
+    got: &[f32],
+    expected: &[f32],
+    bounds: &[f32],
+    stats: &mut Stats,
+) -> Result<(), String> {
+    let finite = |values: &[f32]| values.iter().all(|x| x.is_finite());
+    if finite_input && !(finite(got) && finite(expected)) {
+        return Err(String::from("non-finite output for finite input"));
+    }
+    for (index, ((&got, &expected), &bound)) in got.iter().zip(expected).zip(bounds).enumerate() {
+        let error = if got == expected {
+            0.0
+        } else {
+            (got - expected).abs()
+        };
+        if error.is_nan() || error > bound {
+            return Err(format!(
+                "component {index} differs by {error:e} (tolerance {bound:e})"
+            ));
+        }
+        stats.max_error = stats.max_error.max(error);
+        if bound > 0.0 {
+            stats.max_ratio = stats.max_ratio.max(error / bound);
+        }
+    }
+    stats.cases += 1;
+    Ok(())
+}
+
+/// How many of a batch's `cases` have a vacuous bound: one at least as wide as the spread of its
+/// component's (finite) mirror values over the batch, where that spread is not zero.
+fn count_vacuous(expected: &[f32], bounds: &[f32], cases: usize) -> usize {
+    let per_case = expected.len() / cases.max(1);
+    let spreads: Vec<f32> = (0..per_case)
+        .map(|component| {
+            let values = expected
+                .iter()
+                .skip(component)
+                .step_by(per_case.max(1))
+                .filter(|x| x.is_finite());
+            let (low, high) = values.fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &x| {
+                (lo.min(x), hi.max(x))
+            });
+            high - low
+        })
+        .collect();
+    (0..cases)
+        .filter(|case| {
+            (0..per_case).any(|component| {
+                let spread = spreads[component];
+                spread > 0.0 && bounds[case * per_case + component] >= spread
+            })
+        })
+        .count()
+}

@@ -1,0 +1,219 @@
+//! Compute kernels on the device: a pipeline over two storage buffers (binding 0 the input words,
+//! binding 1 the output words) and an optional push-constant block, dispatched once per batch.
+
+use super::device::{vulkan, Error, Gpu};
+use super::resources::{Location, Object, Owner};
+use crate::kernel::WORKGROUP_SIZE;
+use ash::vk;
+
+/// A compute pipeline for one kernel whose entry point is `main`; destroys itself when dropped.
+pub struct ComputeKernel<'g> {
+    owner: Owner<'g>,
+    pipeline: vk::Pipeline,
+    layout: vk::PipelineLayout,
+    set_layout: vk::DescriptorSetLayout,
+    push_constant_bytes: u32,
+}
+
+impl<'g> ComputeKernel<'g> {
+    /// A pipeline for the kernel `spirv`, with a push-constant range of `push_constant_bytes`
+    /// (0 for none).
+    pub fn new(gpu: &'g Gpu, spirv: &[u32], push_constant_bytes: u32) -> Result<ComputeKernel<'g>, Error> {
+        let mut owner = Owner::new(gpu);
+        let bindings = [0, 1].map(|binding| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(binding)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::COMPUTE)
+        });
+        let ranges = [vk::PushConstantRange::default()
+            .stage_flags(vk::ShaderStageFlags::COMPUTE)
+            .size(push_constant_bytes)];
+        let ranges = if push_constant_bytes == 0 {
+            &ranges[..0]
+        } else {
+            &ranges[..]
+        };
+        // SAFETY: valid create-info structs; every object is handed to the owner at once, and the
+        // shader module is destroyed once the pipeline exists.
+        unsafe {
+            let device = owner.device();
+            let set_layout = device
+                .create_descriptor_set_layout(
+                    &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
+                    None,
+                )
+                .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
+            owner.keep(set_layout, Object::SetLayout);
+            let set_layouts = [set_layout];
+            let layout_info = vk::PipelineLayoutCreateInfo::default()
+                .set_layouts(&set_layouts)
+                .push_constant_ranges(ranges);
+            let layout = owner
+                .device()
+                .create_pipeline_layout(&layout_info, None)
+                .map_err(vulkan("vkCreatePipelineLayout"))?;
+            owner.keep(layout, Object::PipelineLayout);
+            let module = owner
+                .device()
+                .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(spirv), None)
+                .map_err(vulkan("vkCreateShaderModule"))?;
+            let stage = vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::COMPUTE)
+                .module(module)
+                .name(c"main");
+            let info = [vk::ComputePipelineCreateInfo::default()
+                .stage(stage)
+                .layout(layout)];
+            let created = owner
+                .device()
+                .create_compute_pipelines(vk::PipelineCache::null(), &info, None);
+            owner.device().destroy_shader_module(module, None);
+            let pipeline =
+                created.map_err(|(_, result)| Error::Vulkan("vkCreateComputePipelines", result))?[0];
+            owner.keep(pipeline, Object::Pipeline);
+            gpu.check_messages()?;
+            Ok(ComputeKernel {
+                owner,
+                pipeline,
+                layout,
+                set_layout,
+                push_constant_bytes,
+            })
+        }
+    }
+
+    /// Runs `invocations` invocations over `input` and returns the first `output_words` words of
+    /// the output buffer. One dispatch, waited for; validation messages fail the call.
+    pub fn dispatch(
+        &self,
+        invocations: usize,
+        input: &[u32],
+        output_words: usize,
+    ) -> Result<Vec<u32>, Error> {
+        self.dispatch_with_push_constants(invocations, input, output_words, &[])
+    }
+
+    /// [`ComputeKernel::dispatch`] with `push_constants` (the range is filled from the start;
+    /// missing bytes are zero).
+    pub fn dispatch_with_push_constants(
+        &self,
+        invocations: usize,
+        input: &[u32],
+        output_words: usize,
+        push_constants: &[u8],
+    ) -> Result<Vec<u32>, Error> {
+        let gpu = self.owner.gpu;
+        let groups = invocations.div_ceil(WORKGROUP_SIZE as usize);
+        if groups > gpu.properties().limits.max_compute_work_group_count[0] as usize {
+            return Err(Error::BatchTooLarge(invocations));
+        }
+        let mut frame = Owner::new(gpu);
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let input_buffer = frame.buffer((input.len().max(1) * 4) as u64, storage, Location::Host, 4)?;
+        let output_buffer = frame.buffer((output_words.max(1) * 4) as u64, storage, Location::Host, 4)?;
+        frame.write(&input_buffer, bytemuck::cast_slice(input))?;
+        let set = self.descriptor_set(&mut frame, [input_buffer.buffer, output_buffer.buffer])?;
+        let mut push = vec![0u8; self.push_constant_bytes as usize];
+        let used = push_constants.len().min(push.len());
+        push[..used].copy_from_slice(&push_constants[..used]);
+        frame.submit(|device, command_buffer| {
+            self.record(device, command_buffer, set, &push, groups as u32)
+        })?;
+        frame.read(&output_buffer, output_words)
+    }
+
+    /// A descriptor set (from a pool `frame` owns) binding `buffers` as bindings 0 and 1.
+    fn descriptor_set(
+        &self,
+        frame: &mut Owner<'_>,
+        buffers: [vk::Buffer; 2],
+    ) -> Result<vk::DescriptorSet, Error> {
+        let sizes = [vk::DescriptorPoolSize::default()
+            .ty(vk::DescriptorType::STORAGE_BUFFER)
+            .descriptor_count(2)];
+        // SAFETY: valid create/allocate infos; the pool is handed to `frame`, the writes match the
+        // set layout.
+        unsafe {
+            let pool = frame
+                .device()
+                .create_descriptor_pool(
+                    &vk::DescriptorPoolCreateInfo::default()
+                        .max_sets(1)
+                        .pool_sizes(&sizes),
+                    None,
+                )
+                .map_err(vulkan("vkCreateDescriptorPool"))?;
+            frame.keep(pool, Object::DescriptorPool);
+            let set_layouts = [self.set_layout];
+            let set = frame
+                .device()
+                .allocate_descriptor_sets(
+                    &vk::DescriptorSetAllocateInfo::default()
+                        .descriptor_pool(pool)
+                        .set_layouts(&set_layouts),
+                )
+                .map_err(vulkan("vkAllocateDescriptorSets"))?[0];
+            let infos = buffers.map(|buffer| {
+                [vk::DescriptorBufferInfo::default()
+                    .buffer(buffer)
+                    .range(vk::WHOLE_SIZE)]
+            });
+            let writes = [0, 1].map(|binding| {
+                vk::WriteDescriptorSet::default()
+                    .dst_set(set)
+                    .dst_binding(binding as u32)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .buffer_info(&infos[binding])
+            });
+            frame.device().update_descriptor_sets(&writes, &[]);
+            Ok(set)
+        }
+    }
+
+    /// Records the dispatch and makes its writes visible to the host.
+    fn record(
+        &self,
+        device: &ash::Device,
+        command_buffer: vk::CommandBuffer,
+        set: vk::DescriptorSet,
+        push: &[u8],
+        groups: u32,
+    ) {
+        // SAFETY: recording into a command buffer in the recording state; every handle is alive.
+        unsafe {
+            device.cmd_bind_pipeline(command_buffer, vk::PipelineBindPoint::COMPUTE, self.pipeline);
+            device.cmd_bind_descriptor_sets(
+                command_buffer,
+                vk::PipelineBindPoint::COMPUTE,
+                self.layout,
+                0,
+                &[set],
+                &[],
+            );
+            if !push.is_empty() {
+                device.cmd_push_constants(
+                    command_buffer,
+                    self.layout,
+                    vk::ShaderStageFlags::COMPUTE,
+                    0,
+                    push,
+                );
+            }
+            device.cmd_dispatch(command_buffer, groups, 1, 1);
+            let barrier = vk::MemoryBarrier::default()
+                .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+                .dst_access_mask(vk::AccessFlags::HOST_READ);
+            device.cmd_pipeline_barrier(
+                command_buffer,
+                vk::PipelineStageFlags::COMPUTE_SHADER,
+                vk::PipelineStageFlags::HOST,
+                vk::DependencyFlags::empty(),
+                &[barrier],
+                &[],
+                &[],
+            );
+        }
+    }
+}

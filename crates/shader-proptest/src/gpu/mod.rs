@@ -1,0 +1,14 @@
+//! The device side (feature `gpu`): a Vulkan device with the validation layer on, the objects made
+//! on it, compute kernels, and the checks that run on them.
+
+mod check;
+mod compute;
+mod device;
+mod echo;
+mod resources;
+
+pub use check::{evaluate, Check, Failure, FunctionCheck, Outcome, Report, RunConfig, SEED_ENV};
+pub use compute::ComputeKernel;
+pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
+pub use echo::echo;
+pub use resources::{Buffer, Location, Object, Owner};

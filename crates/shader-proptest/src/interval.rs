@@ -1,0 +1,485 @@
+//! Interval arithmetic with Vulkan's rounding allowances, for per-case tolerances derived
+//! mechanically.
+//!
+//! A function that chains dozens of operations is hard to bound by hand. Instead, a check can
+//! re-evaluate it in interval arithmetic ([`Interval`]) on the same f32 inputs. After every
+//! operation the interval is widened by the largest rounding error that Vulkan allows the device
+//! *or* that the Rust mirror makes for that operation (the budgets below, from "Precision and
+//! Operation of SPIR-V Instructions"; see [`crate::tolerance`]). Both the device's result and the
+//! mirror's result then lie in the final interval, so its width bounds their difference: that
+//! width is the tolerance ([`crate::Tolerance::per_case`]).
+//!
+//! Budgets per operation, in ULP of the largest magnitude the result can have (the mirror's own
+//! rounding is at most the device's for each of them):
+//! - `+ - *`: 0.5 (correctly rounded; a fused multiply-add only removes a rounding);
+//! - `/`: 2.5; `sqrt`: 4.5 (inherited from `1 / inversesqrt`: 2 + 2.5);
+//! - `log2`: 3 ULP, or 2^-21 absolute for arguments in `[0.5, 2]`;
+//! - `tan`: [`crate::tolerance::tan_error`]; `pow(x, y)`: inherited from `exp2(y * log2(x))`, with
+//!   `exp2` within `3 + 2 |y log2 x|` ULP;
+//! - `dot`, `cross` and matrix products (whose summation order is the implementation's): `2n - 1`
+//!   roundings of the sum of the term magnitudes for `n` terms;
+//! - every rounding may also flush a denormal: plus the smallest normal number.
+//!
+//! For f64 arithmetic the same budgets apply with f64 units ([`F64`]), and a final conversion to f32
+//! adds half an f32 ULP.
+//!
+//! Branches (a clamp's comparison, total internal reflection) take the hull of both outcomes when
+//! the interval straddles the threshold.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Unit of rounding of one precision: one ULP at 1.0 and the smallest normal number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Precision {
+    ulp: f64,
+    floor: f64,
+}
+
+/// f32 arithmetic (2^-23, 2^-126).
+pub const F32: Precision = Precision {
+    ulp: f32::EPSILON as f64,
+    floor: f32::MIN_POSITIVE as f64,
+};
+
+/// f64 arithmetic (2^-52, 2^-1022).
+pub const F64: Precision = Precision {
+    ulp: f64::EPSILON,
+    floor: f64::MIN_POSITIVE,
+};
+
+/// An interval `[lo, hi]` enclosing every value the device or the mirror can compute.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interval {
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+    /// The arithmetic that computes it.
+    pub p: Precision,
+}
+
+/// `x * y` with `0 * inf = 0` (a zero bound times an unbounded one).
+fn product(x: f64, y: f64) -> f64 {
+    if x == 0.0 || y == 0.0 {
+        0.0
+    } else {
+        x * y
+    }
+}
+
+fn coarser(a: Precision, b: Precision) -> Precision {
+    if a.ulp >= b.ulp {
+        a
+    } else {
+        b
+    }
+}
+
+impl Interval {
+    /// An exact f32 value (an input).
+    pub fn exact(x: f32) -> Interval {
+        Interval::point(f64::from(x), F32)
+    }
+
+    /// An exact f64 value (an input converted to f64, or an f64 constant).
+    pub fn exact64(x: f64) -> Interval {
+        Interval::point(x, F64)
+    }
+
+    /// An exact constant in f32 arithmetic.
+    pub fn c(x: f64) -> Interval {
+        Interval::point(x, F32)
+    }
+
+    fn point(x: f64, p: Precision) -> Interval {
+        Interval { lo: x, hi: x, p }
+    }
+
+    fn hull_of(values: [f64; 4], p: Precision) -> Interval {
+        Interval {
+            lo: values.iter().copied().fold(f64::INFINITY, f64::min),
+            hi: values.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            p,
+        }
+    }
+
+    /// Largest magnitude in the interval.
+    pub fn magnitude(self) -> f64 {
+        self.lo.abs().max(self.hi.abs())
+    }
+
+    /// The width, as an f32 tolerance (rounded up; infinite when unbounded).
+    pub fn tolerance(self) -> f32 {
+        let width = self.hi - self.lo;
+        if width.is_nan() {
+            f32::INFINITY
+        } else {
+            (width * (1.0 + 1.0e-6)) as f32
+        }
+    }
+
+    /// Widens by `ulps` roundings of the largest magnitude, plus one flushed denormal.
+    pub fn round(self, ulps: f64) -> Interval {
+        let w = ulps * self.p.ulp * self.magnitude() + self.p.floor;
+        Interval {
+            lo: self.lo - w,
+            hi: self.hi + w,
+            p: self.p,
+        }
+    }
+
+    /// Smallest interval holding both.
+    pub fn hull(self, other: Interval) -> Interval {
+        Interval {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.max(other.hi),
+            p: coarser(self.p, other.p),
+        }
+    }
+
+    /// `|x|` (exact).
+    pub fn abs(self) -> Interval {
+        if self.lo >= 0.0 {
+            self
+        } else if self.hi <= 0.0 {
+            -self
+        } else {
+            Interval {
+                lo: 0.0,
+                hi: self.magnitude(),
+                p: self.p,
+            }
+        }
+    }
+
+    /// `max(x, y)` (exact).
+    pub fn max(self, other: Interval) -> Interval {
+        Interval {
+            lo: self.lo.max(other.lo),
+            hi: self.hi.max(other.hi),
+            p: coarser(self.p, other.p),
+        }
+    }
+
+    /// `min(x, y)` (exact).
+    pub fn min(self, other: Interval) -> Interval {
+        Interval {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.min(other.hi),
+            p: coarser(self.p, other.p),
+        }
+    }
+
+    /// `max(x, c)` (exact).
+    pub fn max_c(self, c: f64) -> Interval {
+        self.max(Interval::point(c, self.p))
+    }
+
+    /// `min(x, c)` (exact).
+    pub fn min_c(self, c: f64) -> Interval {
+        self.min(Interval::point(c, self.p))
+    }
+
+    /// `clamp(x, lo, hi)` (exact).
+    pub fn clamp_c(self, lo: f64, hi: f64) -> Interval {
+        self.max_c(lo).min_c(hi)
+    }
+
+    /// `sqrt(max(x, 0))`.
+    pub fn sqrt(self) -> Interval {
+        Interval {
+            lo: self.lo.max(0.0).sqrt(),
+            hi: self.hi.max(0.0).sqrt(),
+            p: self.p,
+        }
+        .round(4.5)
+    }
+
+    /// `log2(x)` of an interval whose lower end is positive (f32 only).
+    pub fn log2(self) -> Interval {
+        let (lo, hi) = (self.lo.log2(), self.hi.log2());
+        let error = |x: f64| f64::from(crate::tolerance::log2_error(x as f32));
+        Interval {
+            lo: lo - error(lo),
+            hi: hi + error(hi),
+            p: self.p,
+        }
+    }
+
+    /// `tan(x)` of an exact f32 angle in `[0, 1.55]`.
+    pub fn tan_exact(angle: f32) -> Interval {
+        let value = f64::from(angle).tan();
+        let error = f64::from(crate::tolerance::tan_error(angle));
+        Interval {
+            lo: value - error,
+            hi: value + error,
+            p: F32,
+        }
+    }
+
+    /// `pow(x, y)` for an exact `x > 0` and exact `y >= 0` (f32 only): `exp2(y * log2(x))` with the
+    /// errors of `log2` (absolute `e`), the product (0.5 ULP) and `exp2` (`3 + 2|z|` ULP), and the
+    /// mirror's `powf` (1 ULP).
+    pub fn pow_exact(x: f32, y: f32) -> Interval {
+        let (x, y) = (f64::from(x), f64::from(y));
+        let log = x.log2();
+        let z = y * log;
+        let z_error = y * f64::from(crate::tolerance::log2_error(log as f32)) + 0.5 * F32.ulp * z.abs();
+        let value = x.powf(y);
+        let relative = (z_error * std::f64::consts::LN_2).exp_m1() + (4.0 + 2.0 * z.abs()) * F32.ulp;
+        Interval {
+            lo: value - value * relative - F32.floor,
+            hi: value + value * relative + F32.floor,
+            p: F32,
+        }
+    }
+
+    /// `x / clamp_away_from_zero(den, m)`: the divisor is `den`, or `+-m` when `|den| < m`. When the
+    /// divisor's interval contains 0 (`m = 0`), the quotient is unbounded.
+    pub fn div_away(self, den: Interval, m: f64) -> Interval {
+        let p = coarser(self.p, den.p);
+        // The divisor's possible values, as one or two intervals that exclude (-m, m).
+        let mut pieces = Vec::with_capacity(2);
+        if den.hi >= 0.0 {
+            pieces.push((den.lo.max(0.0).max(m), den.hi.max(m)));
+        }
+        if den.lo < 0.0 {
+            pieces.push((den.lo.min(-m), den.hi.min(0.0).min(-m)));
+        }
+        let mut result: Option<Interval> = None;
+        for (lo, hi) in pieces {
+            if lo <= 0.0 && hi >= 0.0 {
+                return Interval {
+                    lo: f64::NEG_INFINITY,
+                    hi: f64::INFINITY,
+                    p,
+                };
+            }
+            let quotient = Interval::hull_of([self.lo / lo, self.lo / hi, self.hi / lo, self.hi / hi], p);
+            result = Some(result.map_or(quotient, |r| r.hull(quotient)));
+        }
+        result.expect("a divisor interval").round(2.5)
+    }
+
+    /// Converts an f64 computation's result to f32 (half an f32 ULP on each side).
+    pub fn to_f32(self) -> Interval {
+        Interval { p: F32, ..self }.round(0.5)
+    }
+}
+
+impl Add for Interval {
+    type Output = Interval;
+    fn add(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo + o.lo,
+            hi: self.hi + o.hi,
+            p: coarser(self.p, o.p),
+        }
+        .round(0.5)
+    }
+}
+
+impl Sub for Interval {
+    type Output = Interval;
+    fn sub(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo - o.hi,
+            hi: self.hi - o.lo,
+            p: coarser(self.p, o.p),
+        }
+        .round(0.5)
+    }
+}
+
+impl Neg for Interval {
+    type Output = Interval;
+    fn neg(self) -> Interval {
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+            p: self.p,
+        }
+    }
+}
+
+impl Mul for Interval {
+    type Output = Interval;
+    fn mul(self, o: Interval) -> Interval {
+        let p = coarser(self.p, o.p);
+        Interval::hull_of(
+            [
+                product(self.lo, o.lo),
+                product(self.lo, o.hi),
+                product(self.hi, o.lo),
+                product(self.hi, o.hi),
+            ],
+            p,
+        )
+        .round(0.5)
+    }
+}
+
+impl Div for Interval {
+    type Output = Interval;
+    fn div(self, o: Interval) -> Interval {
+        self.div_away(o, 0.0)
+    }
+}
+
+/// `sum(a_i * b_i)` in any order of operations: the exact interval sum of the exact interval
+/// products, widened by `2n - 1` roundings of the sum of the term magnitudes.
+pub fn sum_of_products(terms: &[(Interval, Interval)]) -> Interval {
+    let p = terms.iter().fold(F32, |p, (a, b)| coarser(p, coarser(a.p, b.p)));
+    let exact: Vec<Interval> = terms
+        .iter()
+        .map(|&(a, b)| {
+            Interval::hull_of(
+                [
+                    product(a.lo, b.lo),
+                    product(a.lo, b.hi),
+                    product(a.hi, b.lo),
+                    product(a.hi, b.hi),
+                ],
+                p,
+            )
+        })
+        .collect();
+    let sum = exact.iter().fold(Interval::point(0.0, p), |s, t| Interval {
+        lo: s.lo + t.lo,
+        hi: s.hi + t.hi,
+        p,
+    });
+    let magnitude: f64 = exact.iter().map(|t| t.magnitude()).sum();
+    let roundings = (2 * terms.len() - 1) as f64;
+    let w = roundings * 0.5 * p.ulp * magnitude + roundings * p.floor;
+    Interval {
+        lo: sum.lo - w,
+        hi: sum.hi + w,
+        p,
+    }
+}
+
+/// A vector of intervals.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IntervalVec<const N: usize>(pub [Interval; N]);
+
+/// Two intervals.
+pub type Interval2 = IntervalVec<2>;
+/// Three intervals.
+pub type Interval3 = IntervalVec<3>;
+
+impl<const N: usize> IntervalVec<N> {
+    /// Component-wise map.
+    pub fn map(self, f: impl Fn(Interval) -> Interval) -> IntervalVec<N> {
+        IntervalVec(self.0.map(f))
+    }
+
+    /// Component-wise combination.
+    pub fn zip(self, o: IntervalVec<N>, f: impl Fn(Interval, Interval) -> Interval) -> IntervalVec<N> {
+        IntervalVec(std::array::from_fn(|i| f(self.0[i], o.0[i])))
+    }
+
+    /// Order-independent dot product.
+    pub fn dot(self, o: IntervalVec<N>) -> Interval {
+        let terms: Vec<(Interval, Interval)> = (0..N).map(|i| (self.0[i], o.0[i])).collect();
+        sum_of_products(&terms)
+    }
+
+    /// Component-wise `|x|`.
+    pub fn abs(self) -> IntervalVec<N> {
+        self.map(Interval::abs)
+    }
+
+    /// The components, in order.
+    pub fn components(self) -> Vec<Interval> {
+        self.0.to_vec()
+    }
+}
+
+impl Interval3 {
+    /// Order-independent cross product (each component a two-term sum of products).
+    pub fn cross(self, o: Interval3) -> Interval3 {
+        let [a, b] = [self.0, o.0];
+        IntervalVec([
+            sum_of_products(&[(a[1], b[2]), (-a[2], b[1])]),
+            sum_of_products(&[(a[2], b[0]), (-a[0], b[2])]),
+            sum_of_products(&[(a[0], b[1]), (-a[1], b[0])]),
+        ])
+    }
+}
+
+impl<const N: usize> Add for IntervalVec<N> {
+    type Output = IntervalVec<N>;
+    fn add(self, o: IntervalVec<N>) -> IntervalVec<N> {
+        self.zip(o, |a, b| a + b)
+    }
+}
+
+impl<const N: usize> Sub for IntervalVec<N> {
+    type Output = IntervalVec<N>;
+    fn sub(self, o: IntervalVec<N>) -> IntervalVec<N> {
+        self.zip(o, |a, b| a - b)
+    }
+}
+
+impl<const N: usize> Neg for IntervalVec<N> {
+    type Output = IntervalVec<N>;
+    fn neg(self) -> IntervalVec<N> {
+        self.map(|a| -a)
+    }
+}
+
+impl<const N: usize> Mul for IntervalVec<N> {
+    type Output = IntervalVec<N>;
+    fn mul(self, o: IntervalVec<N>) -> IntervalVec<N> {
+        self.zip(o, |a, b| a * b)
+    }
+}
+
+impl<const N: usize> Mul<Interval> for IntervalVec<N> {
+    type Output = IntervalVec<N>;
+    fn mul(self, s: Interval) -> IntervalVec<N> {
+        self.map(|a| a * s)
+    }
+}
+
+impl<const N: usize> Div<Interval> for IntervalVec<N> {
+    type Output = IntervalVec<N>;
+    fn div(self, s: Interval) -> IntervalVec<N> {
+        self.map(|a| a / s)
+    }
+}
+
+/// An exact f32 vector.
+pub fn interval3(v: glam::Vec3) -> Interval3 {
+    IntervalVec([Interval::exact(v.x), Interval::exact(v.y), Interval::exact(v.z)])
+}
+
+/// An exact f32 vector.
+pub fn interval2(v: glam::Vec2) -> Interval2 {
+    IntervalVec([Interval::exact(v.x), Interval::exact(v.y)])
+}
+
+/// An exact f32 vector converted to f64.
+pub fn interval3_f64(v: glam::Vec3) -> Interval3 {
+    IntervalVec([
+        Interval::exact64(f64::from(v.x)),
+        Interval::exact64(f64::from(v.y)),
+        Interval::exact64(f64::from(v.z)),
+    ])
+}
+
+/// The xyz part of `matrix * (v, w)` for an exact matrix whose entries enter an arithmetic of
+/// precision `p`, order-independent.
+pub fn mat_vec(matrix: glam::Mat4, v: Interval3, w: Interval, p: Precision) -> Interval3 {
+    let columns = matrix.to_cols_array_2d();
+    IntervalVec(std::array::from_fn(|row| {
+        let entry = |c: usize| Interval::point(f64::from(columns[c][row]), p);
+        sum_of_products(&[
+            (entry(0), v.0[0]),
+            (entry(1), v.0[1]),
+            (entry(2), v.0[2]),
+            (entry(3), w),
+        ])
+    }))
+}

@@ -1,0 +1,515 @@
+//! Struct layout verification: does a Rust struct have exactly the byte layout of a shader struct?
+//!
+//! The Rust side is described by [`rust_layout!`](crate::rust_layout) (offsets and sizes from
+//! `offset_of!` and `size_of`). The shader side comes from naga's layout of a WGSL source
+//! ([`wgsl_layout`]) or from the `Offset` and `ArrayStride` decorations glslang emits for a GLSL
+//! struct in a std430 or scalar block ([`glsl_layout`]). [`compare`] returns a field-by-field
+//! [`LayoutTable`], or an error that names the struct and the field.
+//!
+//! ```no_run
+//! use shader_proptest::{layout, rust_layout};
+//!
+//! #[repr(C)]
+//! #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+//! struct Push {
+//!     tint: [f32; 4],
+//!     exposure: f32,
+//!     frame: u32,
+//!     pad: [u32; 2],
+//! }
+//!
+//! let wgsl = "struct Push { tint: vec4<f32>, exposure: f32, frame: u32, pad: vec2<u32> }";
+//! let table = layout::compare(&rust_layout!(Push { tint, exposure, frame, pad }), &layout::wgsl_layout(wgsl, "Push")?)?;
+//! println!("{table}");
+//! # Ok::<(), layout::LayoutError>(())
+//! ```
+
+use crate::compile::{compile_glsl, CompileError, Stage, Target};
+use std::fmt;
+use std::path::Path;
+
+/// One field: name, byte offset and byte size.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FieldLayout {
+    /// The field's name.
+    pub name: String,
+    /// Byte offset from the start of the struct.
+    pub offset: u32,
+    /// Byte size of the field's type.
+    pub size: u32,
+}
+
+/// A struct's layout: its name (as the shader spells it), size, alignment and fields.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StructLayout {
+    /// The struct's name in the shader.
+    pub name: String,
+    /// Size in bytes, tail padding included (the array stride).
+    pub size: u32,
+    /// Alignment in bytes (0 where the source does not say, as in SPIR-V).
+    pub align: u32,
+    /// Fields in declaration order.
+    pub fields: Vec<FieldLayout>,
+}
+
+/// GLSL block packing rules.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GlslPacking {
+    /// `std140`, the default of uniform blocks.
+    Std140,
+    /// `std430`, the default of push constants and storage buffers.
+    Std430,
+    /// `scalar` (GL_EXT_scalar_block_layout), as Slang-generated Vulkan code uses.
+    Scalar,
+}
+
+impl GlslPacking {
+    /// The layout qualifier: `std140`, `std430` or `scalar`.
+    pub fn qualifier(self) -> &'static str {
+        match self {
+            GlslPacking::Std140 => "std140",
+            GlslPacking::Std430 => "std430",
+            GlslPacking::Scalar => "scalar",
+        }
+    }
+}
+
+/// Why a layout could not be read, or does not match.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LayoutError {
+    /// The shader source does not parse or compile; the message is the compiler's.
+    Source(String),
+    /// No struct of that name in the source.
+    StructNotFound(String),
+    /// A field is declared on one side only.
+    MissingField {
+        /// The struct's name.
+        structure: String,
+        /// The field's name.
+        field: String,
+        /// `"Rust"` or `"shader"`: the side that lacks the field.
+        missing_in: &'static str,
+    },
+    /// The Rust fields listed do not cover the struct: it has implicit padding or unlisted fields.
+    ImplicitPadding {
+        /// The struct's name.
+        structure: String,
+        /// Bytes not covered by any listed field.
+        uncovered: u32,
+    },
+    /// Offsets or sizes differ; the table marks each mismatch.
+    Mismatch(LayoutTable),
+}
+
+impl fmt::Display for LayoutError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LayoutError::Source(message) => write!(f, "shader source: {message}"),
+            LayoutError::StructNotFound(name) => write!(f, "no struct named `{name}` in the shader source"),
+            LayoutError::MissingField {
+                structure,
+                field,
+                missing_in,
+            } => {
+                write!(f, "{structure}.{field}: field missing on the {missing_in} side")
+            }
+            LayoutError::ImplicitPadding { structure, uncovered } => write!(
+                f,
+                "{structure}: {uncovered} byte(s) of the Rust struct are not covered by the listed fields \
+                 (implicit padding or unlisted fields)"
+            ),
+            LayoutError::Mismatch(table) => write!(f, "layout mismatch:\n{table}"),
+        }
+    }
+}
+
+impl std::error::Error for LayoutError {}
+
+/// A Rust layout next to a shader layout, field by field.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LayoutTable {
+    /// The Rust side.
+    pub rust: StructLayout,
+    /// The shader side.
+    pub shader: StructLayout,
+}
+
+impl LayoutTable {
+    /// Names of the fields whose offset or size differ (and `"(size)"` if the struct sizes differ).
+    pub fn mismatches(&self) -> Vec<String> {
+        let mut names: Vec<String> = self
+            .rust
+            .fields
+            .iter()
+            .zip(&self.shader.fields)
+            .filter(|(rust, shader)| rust.offset != shader.offset || rust.size != shader.size)
+            .map(|(rust, _)| rust.name.clone())
+            .collect();
+        if self.rust.size != self.shader.size {
+            names.push(String::from("(size)"));
+        }
+        names
+    }
+}
+
+impl fmt::Display for LayoutTable {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "{:<20} {:>11} {:>13}",
+            self.rust.name, "Rust off/sz", "shader off/sz"
+        )?;
+        for (rust, shader) in self.rust.fields.iter().zip(&self.shader.fields) {
+            let mark = if rust.offset != shader.offset || rust.size != shader.size {
+                "  MISMATCH"
+            } else {
+                ""
+            };
+            writeln!(
+                f,
+                "  {:<18} {:>5}/{:<5} {:>7}/{:<5}{mark}",
+                rust.name, rust.offset, rust.size, shader.offset, shader.size
+            )?;
+        }
+        let mark = if self.rust.size != self.shader.size {
+            "  MISMATCH"
+        } else {
+            ""
+        };
+        write!(
+            f,
+            "  {:<18} {:>11} {:>13}{mark}",
+            "(size)", self.rust.size, self.shader.size
+        )
+    }
+}
+
+/// Renders a Rust layout next to several shader layouts of the same struct, one column each
+/// (`offset/size` per field, then the struct size). Fields follow the Rust layout's order; a field
+/// a column lacks shows as `-`.
+pub fn render_columns(rust: &StructLayout, columns: &[(&str, &StructLayout)]) -> String {
+    let cell = |layout: &StructLayout, field: &str| {
+        layout
+            .fields
+            .iter()
+            .find(|f| f.name == field)
+            .map_or_else(|| String::from("-"), |f| format!("{}/{}", f.offset, f.size))
+    };
+    let mut out = format!("{:<26} {:>9}", rust.name, "Rust");
+    columns
+        .iter()
+        .for_each(|(label, _)| out.push_str(&format!(" {label:>9}")));
+    for field in &rust.fields {
+        out.push_str(&format!("\n  {:<24} {:>9}", field.name, cell(rust, &field.name)));
+        columns
+            .iter()
+            .for_each(|(_, layout)| out.push_str(&format!(" {:>9}", cell(layout, &field.name))));
+    }
+    out.push_str(&format!("\n  {:<24} {:>9}", "(size)", rust.size));
+    columns
+        .iter()
+        .for_each(|(_, layout)| out.push_str(&format!(" {:>9}", layout.size)));
+    out
+}
+
+/// Compares a Rust layout with a shader layout: every field present on both sides, at the same
+/// offset with the same size, the same total size, and no bytes of the Rust struct left uncovered.
+pub fn compare(rust: &StructLayout, shader: &StructLayout) -> Result<LayoutTable, LayoutError> {
+    let missing = |field: &str, missing_in| LayoutError::MissingField {
+        structure: shader.name.clone(),
+        field: field.to_string(),
+        missing_in,
+    };
+    if let Some(field) = shader
+        .fields
+        .iter()
+        .find(|s| !rust.fields.iter().any(|r| r.name == s.name))
+    {
+        return Err(missing(&field.name, "Rust"));
+    }
+    if let Some(field) = rust
+        .fields
+        .iter()
+        .find(|r| !shader.fields.iter().any(|s| s.name == r.name))
+    {
+        return Err(missing(&field.name, "shader"));
+    }
+    let covered: u32 = rust.fields.iter().map(|field| field.size).sum();
+    if covered < rust.size {
+        return Err(LayoutError::ImplicitPadding {
+            structure: shader.name.clone(),
+            uncovered: rust.size - covered,
+        });
+    }
+    let rust_in_shader_order = StructLayout {
+        fields: shader
+            .fields
+            .iter()
+            .filter_map(|s| rust.fields.iter().find(|r| r.name == s.name).cloned())
+            .collect(),
+        ..rust.clone()
+    };
+    let table = LayoutTable {
+        rust: rust_in_shader_order,
+        shader: shader.clone(),
+    };
+    if table.mismatches().is_empty() {
+        Ok(table)
+    } else {
+        Err(LayoutError::Mismatch(table))
+    }
+}
+
+/// The layout naga gives the WGSL struct `name` declared in `source` (the WGSL rules for
+/// host-shareable memory, which storage buffers and push constants use).
+pub fn wgsl_layout(source: &str, name: &str) -> Result<StructLayout, LayoutError> {
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|error| LayoutError::Source(error.emit_to_string(source)))?;
+    let mut layouter = naga::proc::Layouter::default();
+    layouter
+        .update(module.to_ctx())
+        .map_err(|error| LayoutError::Source(format!("layout: {error}")))?;
+    let (handle, members, span) = module
+        .types
+        .iter()
+        .find_map(|(handle, ty)| match &ty.inner {
+            naga::TypeInner::Struct { members, span } if ty.name.as_deref() == Some(name) => {
+                Some((handle, members, *span))
+            }
+            _ => None,
+        })
+        .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
+    let fields = members
+        .iter()
+        .map(|member| FieldLayout {
+            name: member.name.clone().unwrap_or_default(),
+            offset: member.offset,
+            size: layouter[member.ty].size,
+        })
+        .collect();
+    Ok(StructLayout {
+        name: name.to_string(),
+        size: span,
+        align: layouter[handle].alignment * 1,
+        fields,
+    })
+}
+
+/// The layout glslang gives the GLSL struct `name` (declared in `source`, a module without
+/// `#version` or `main`, which may `#include` files from `include_dirs`) as the element of a
+/// runtime array in a `packing` storage block: field offsets from the SPIR-V `Offset` decorations,
+/// the size from the array's `ArrayStride`. Needs `glslangValidator` on the `PATH`.
+pub fn glsl_layout(
+    source: &str,
+    name: &str,
+    packing: GlslPacking,
+    include_dirs: &[&Path],
+) -> Result<StructLayout, LayoutError> {
+    let probe = format!(
+        "#version 460\n#extension GL_GOOGLE_include_directive : require\n\
+         #extension GL_EXT_scalar_block_layout : require\n{source}\n\
+         layout({}, set = 0, binding = 0) readonly buffer LayoutProbe {{ {name} layout_probe[]; }};\n\
+         layout(local_size_x = 1) in;\nvoid main() {{}}\n",
+        packing.qualifier()
+    );
+    // The probe block is on the line after the source; errors there alone mean `name` is not a
+    // type the source declares.
+    let probe_line = 3 + source.lines().count() + 1;
+    let spirv =
+        compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs).map_err(
+            |error| match error {
+                CompileError::NotRun(message) => LayoutError::Source(message),
+                CompileError::Failed { log, source_path } => {
+                    let at_probe = format!("{source_path}:{probe_line}:");
+                    let errors: Vec<&str> = log
+                        .lines()
+                        .filter(|l| l.starts_with("ERROR: ") && l.contains(&source_path))
+                        .collect();
+                    if !errors.is_empty() && errors.iter().all(|l| l.contains(&at_probe)) {
+                        LayoutError::StructNotFound(name.to_string())
+                    } else {
+                        LayoutError::Source(log)
+                    }
+                }
+            },
+        )?;
+    spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
+}
+
+/// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.
+mod spirv {
+    use super::{FieldLayout, StructLayout};
+    use std::collections::HashMap;
+
+    const OP_NAME: u32 = 5;
+    const OP_MEMBER_NAME: u32 = 6;
+    const OP_TYPE_INT: u32 = 21;
+    const OP_TYPE_FLOAT: u32 = 22;
+    const OP_TYPE_VECTOR: u32 = 23;
+    const OP_TYPE_MATRIX: u32 = 24;
+    const OP_TYPE_ARRAY: u32 = 28;
+    const OP_TYPE_RUNTIME_ARRAY: u32 = 29;
+    const OP_TYPE_STRUCT: u32 = 30;
+    const OP_CONSTANT: u32 = 43;
+    const OP_DECORATE: u32 = 71;
+    const OP_MEMBER_DECORATE: u32 = 72;
+    const DECORATION_ARRAY_STRIDE: u32 = 6;
+    const DECORATION_MATRIX_STRIDE: u32 = 7;
+    const DECORATION_OFFSET: u32 = 35;
+
+    #[derive(Default)]
+    struct Module {
+        names: HashMap<u32, String>,
+        member_names: HashMap<(u32, u32), String>,
+        offsets: HashMap<(u32, u32), u32>,
+        matrix_strides: HashMap<(u32, u32), u32>,
+        array_strides: HashMap<u32, u32>,
+        types: HashMap<u32, Vec<u32>>,
+        constants: HashMap<u32, u32>,
+    }
+
+    fn string(words: &[u32]) -> String {
+        let bytes: Vec<u8> = words
+            .iter()
+            .flat_map(|w| w.to_le_bytes())
+            .take_while(|&b| b != 0)
+            .collect();
+        String::from_utf8_lossy(&bytes).into_owned()
+    }
+
+    fn parse(words: &[u32]) -> Module {
+        let mut module = Module::default();
+        let mut at = 5; // after the header
+        while at < words.len() {
+            let (count, opcode) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+            let operands = &words[at + 1..(at + count.max(1)).min(words.len())];
+            match (opcode, operands) {
+                (OP_NAME, [id, rest @ ..]) => {
+                    module.names.insert(*id, string(rest));
+                }
+                (OP_MEMBER_NAME, [id, member, rest @ ..]) => {
+                    module.member_names.insert((*id, *member), string(rest));
+                }
+                (OP_MEMBER_DECORATE, [id, member, DECORATION_OFFSET, offset, ..]) => {
+                    module.offsets.insert((*id, *member), *offset);
+                }
+                (OP_MEMBER_DECORATE, [id, member, DECORATION_MATRIX_STRIDE, stride, ..]) => {
+                    module.matrix_strides.insert((*id, *member), *stride);
+                }
+                (OP_DECORATE, [id, DECORATION_ARRAY_STRIDE, stride, ..]) => {
+                    module.array_strides.insert(*id, *stride);
+                }
+                (OP_CONSTANT, [_, id, value, ..]) => {
+                    module.constants.insert(*id, *value);
+                }
+                (
+                    OP_TYPE_INT
+                    | OP_TYPE_FLOAT
+                    | OP_TYPE_VECTOR
+                    | OP_TYPE_MATRIX
+                    | OP_TYPE_ARRAY
+                    | OP_TYPE_RUNTIME_ARRAY
+                    | OP_TYPE_STRUCT,
+                    [id, ..],
+                ) => {
+                    module.types.insert(*id, [&[opcode], operands].concat());
+                }
+                _ => {}
+            }
+            at += count.max(1);
+        }
+        module
+    }
+
+    impl Module {
+        /// Byte size of a type; a member's matrix stride comes from its struct.
+        fn size(&self, ty: u32, matrix_stride: Option<u32>) -> u32 {
+            match self.types.get(&ty).map(Vec::as_slice) {
+                Some([OP_TYPE_INT | OP_TYPE_FLOAT, _, width, ..]) => width / 8,
+                Some([OP_TYPE_VECTOR, _, component, count]) => self.size(*component, None) * count,
+                Some([OP_TYPE_MATRIX, _, column, count]) => {
+                    matrix_stride.unwrap_or_else(|| self.size(*column, None)) * count
+                }
+                Some([OP_TYPE_ARRAY, _, _, length]) => {
+                    self.array_strides.get(&ty).copied().unwrap_or(0)
+                        * self.constants.get(length).copied().unwrap_or(0)
+                }
+                Some([OP_TYPE_STRUCT, _, members @ ..]) => (0..members.len() as u32)
+                    .map(|m| {
+                        self.offsets.get(&(ty, m)).copied().unwrap_or(0) + self.member_size(ty, m, members)
+                    })
+                    .max()
+                    .unwrap_or(0),
+                _ => 0,
+            }
+        }
+
+        fn member_size(&self, structure: u32, member: u32, members: &[u32]) -> u32 {
+            self.size(
+                members[member as usize],
+                self.matrix_strides.get(&(structure, member)).copied(),
+            )
+        }
+    }
+
+    /// The layout of the struct `name` used as a runtime-array element.
+    pub fn struct_layout(words: &[u32], name: &str) -> Option<StructLayout> {
+        let module = parse(words);
+        let (id, members) = module.types.iter().find_map(|(id, ty)| match ty.as_slice() {
+            [OP_TYPE_STRUCT, _, members @ ..] if module.names.get(id).map(String::as_str) == Some(name) => {
+                Some((*id, members.to_vec()))
+            }
+            _ => None,
+        })?;
+        let stride = module.types.iter().find_map(|(array, ty)| match ty.as_slice() {
+            [OP_TYPE_RUNTIME_ARRAY, _, element] if *element == id => module.array_strides.get(array).copied(),
+            _ => None,
+        })?;
+        let fields = (0..members.len() as u32)
+            .map(|m| FieldLayout {
+                name: module.member_names.get(&(id, m)).cloned().unwrap_or_default(),
+                offset: module.offsets.get(&(id, m)).copied().unwrap_or(0),
+                size: module.member_size(id, m, &members),
+            })
+            .collect();
+        Some(StructLayout {
+            name: name.to_string(),
+            size: stride,
+            align: 0,
+            fields,
+        })
+    }
+}
+
+/// The size of a field's type, for [`rust_layout!`](crate::rust_layout).
+#[doc(hidden)]
+pub fn field_size<T, F>(_field: fn(&T) -> &F) -> u32 {
+    std::mem::size_of::<F>() as u32
+}
+
+/// The [`StructLayout`] of a Rust struct from its listed fields:
+/// `rust_layout!(Type { field, ... })`, or `rust_layout!(Type as "ShaderName" { field, ... })`
+/// when the shader spells the struct's name differently. List every field, in any order.
+#[macro_export]
+macro_rules! rust_layout {
+    (@build $ty:ty, $name:expr, $($field:ident),+) => {
+        $crate::layout::StructLayout {
+            name: ::std::string::String::from($name),
+            size: ::std::mem::size_of::<$ty>() as u32,
+            align: ::std::mem::align_of::<$ty>() as u32,
+            fields: ::std::vec![$(
+                $crate::layout::FieldLayout {
+                    name: ::std::string::String::from(stringify!($field)),
+                    offset: ::std::mem::offset_of!($ty, $field) as u32,
+                    size: $crate::layout::field_size(|value: &$ty| &value.$field),
+                },
+            )+],
+        }
+    };
+    ($ty:ty as $shader:literal { $($field:ident),+ $(,)? }) => {
+        $crate::rust_layout!(@build $ty, $shader, $($field),+)
+    };
+    ($ty:ident { $($field:ident),+ $(,)? }) => {
+        $crate::rust_layout!(@build $ty, stringify!($ty), $($field),+)
+    };
+}

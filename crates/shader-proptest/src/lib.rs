@@ -1,0 +1,73 @@
+//! Property tests for shader functions: run a WGSL or GLSL function on a real Vulkan device over
+//! hundreds of thousands of generated inputs and compare every result with a Rust mirror of the
+//! same function; and check that a Rust struct has exactly the byte layout of its shader twin.
+//!
+//! ```no_run
+//! use glam::Vec3;
+//! use proptest::prelude::*;
+//! use shader_proptest::{FunctionCheck, Gpu, RunConfig, Shader, Tolerance};
+//!
+//! fn luminance(c: Vec3) -> f32 {
+//!     c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
+//! }
+//!
+//! let gpu = Gpu::new()?;
+//! let shader = Shader::wgsl("fn luminance(c: vec3<f32>) -> f32 { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }");
+//! let colour = || (0.0f32..1.0, 0.0f32..1.0, 0.0f32..1.0).prop_map(|(r, g, b)| (Vec3::new(r, g, b),));
+//! let check = FunctionCheck::new("luminance", colour, |(c,)| luminance(c)).tolerance(Tolerance::Ulps(4.0));
+//! check.run(&gpu, &shader, &RunConfig::default())?.assert_passed();
+//! # Ok::<(), shader_proptest::Error>(())
+//! ```
+//!
+//! How a check runs:
+//!
+//! 1. [`Gpu::new`] opens Mesa's lavapipe (any machine runs it), or the device whose name contains
+//!    the value of [`DEVICE_ENV`], with the Khronos validation layer on: any validation message
+//!    fails the run.
+//! 2. A generated compute kernel ([`kernel_source`]) reads each case's arguments as 32-bit words,
+//!    calls the function once per invocation and writes the result's words back. The [`Shader`]'s
+//!    source comes first: a WGSL module (compiled by naga), or GLSL that `#include`s yours
+//!    (compiled by glslang, as Vulkan's GLSL users compile it).
+//! 3. Cases come from a proptest strategy, generated batch by batch from per-batch seeds on every
+//!    processor while the device runs the previous batch (one dispatch per batch).
+//! 4. Every output component is compared with the mirror's within a [`Tolerance`] (ULPs, absolute,
+//!    relative, or a bound computed per case, for example by [`interval`] arithmetic with Vulkan's
+//!    rounding allowances, [`tolerance`]); for finite inputs both results must be finite.
+//! 5. A failure is shrunk by proptest to a small case and reported with the inputs, both outputs,
+//!    the tolerance, the seed that replays it ([`SEED_ENV`]) and the kernel's source.
+//!
+//! Arguments and results are [`Value`]s: `f32`, `u32`, `i32`, `bool`, glam's vectors and matrices,
+//! and structs declared with [`shader_struct!`]; with `pod`, a `#[repr(C)]` bytemuck struct's Rust
+//! layout is compared with the shader's before the check runs. [`layout`] compares layouts on its
+//! own (naga's WGSL layout, glslang's std140, std430 and scalar), and [`echo`] proves one on the
+//! device, bit for bit.
+//!
+//! The crate needs, at run time, a Vulkan loader, a device, the validation layer and (for GLSL)
+//! `glslangValidator`. Without its default feature `gpu` it is the compilers, the value
+//! descriptions and the layout reader only (no ash, no proptest).
+#![deny(missing_docs)]
+
+pub mod compile;
+pub mod interval;
+mod kernel;
+pub mod layout;
+mod shader;
+pub mod tolerance;
+pub mod value;
+
+#[cfg(feature = "gpu")]
+mod gpu;
+
+pub use compile::{CompileError, Language};
+pub use kernel::{echo_kernel_source, kernel_source, WORKGROUP_SIZE};
+pub use shader::{Feature, Shader};
+pub use tolerance::Tolerance;
+pub use value::{Args, ShaderType, StructType, Value};
+
+#[cfg(feature = "gpu")]
+pub use gpu::{
+    echo, evaluate, vulkan, Buffer, Check, ComputeKernel, DeviceRequest, Error, Failure, FunctionCheck, Gpu,
+    Location, Object, Outcome, Owner, Report, RunConfig, DEVICE_ENV, SEED_ENV,
+};
+#[cfg(feature = "gpu")]
+pub use {ash, proptest};

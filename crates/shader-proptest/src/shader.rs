@@ -1,0 +1,131 @@
+//! Where the functions under test come from: a language, the source text in front of the generated
+//! kernel, and what compiling and running it needs.
+
+use crate::compile::{base_capabilities, compile_glsl, compile_wgsl, CompileError, Language, Stage, Target};
+use std::path::{Path, PathBuf};
+
+/// An optional device feature a shader or a program may need.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Feature {
+    /// 64-bit floats in shaders (`shaderFloat64`).
+    ShaderFloat64,
+    /// Anisotropic texture filtering (`samplerAnisotropy`).
+    SamplerAnisotropy,
+    /// Acceleration structures (`VK_KHR_acceleration_structure`, with buffer device addresses and
+    /// deferred host operations).
+    AccelerationStructure,
+    /// Ray-tracing pipelines (`VK_KHR_ray_tracing_pipeline`).
+    RayTracingPipeline,
+    /// Ray queries in any shader stage (`VK_KHR_ray_query`).
+    RayQuery,
+}
+
+impl Feature {
+    /// The Vulkan name of the feature.
+    pub fn name(self) -> &'static str {
+        match self {
+            Feature::ShaderFloat64 => "shaderFloat64",
+            Feature::SamplerAnisotropy => "samplerAnisotropy",
+            Feature::AccelerationStructure => "VK_KHR_acceleration_structure",
+            Feature::RayTracingPipeline => "VK_KHR_ray_tracing_pipeline",
+            Feature::RayQuery => "VK_KHR_ray_query",
+        }
+    }
+}
+
+/// The functions under test: a language and the source text placed in front of each generated
+/// kernel (a WGSL module, or GLSL such as `#include "colour.glsl"`), with the GLSL include
+/// directories, the naga capabilities WGSL may use, and the device features the code needs.
+///
+/// ```
+/// use shader_proptest::Shader;
+///
+/// let wgsl = Shader::wgsl("fn luminance(c: vec3<f32>) -> f32 { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }");
+/// let glsl = Shader::glsl("#include \"colour.glsl\"").include_dir("shaders/glsl");
+/// # let _ = (wgsl, glsl);
+/// ```
+#[derive(Clone, Debug)]
+pub struct Shader {
+    language: Language,
+    source: String,
+    include_dirs: Vec<PathBuf>,
+    capabilities: naga::valid::Capabilities,
+    features: Vec<Feature>,
+}
+
+impl Shader {
+    /// WGSL source declaring the functions, with [`base_capabilities`].
+    pub fn wgsl(source: impl Into<String>) -> Shader {
+        Shader::new(Language::Wgsl, source.into())
+    }
+
+    /// GLSL source declaring (or `#include`-ing) the functions; no `#version` and no `main`.
+    pub fn glsl(source: impl Into<String>) -> Shader {
+        Shader::new(Language::Glsl, source.into())
+    }
+
+    fn new(language: Language, source: String) -> Shader {
+        Shader {
+            language,
+            source,
+            include_dirs: Vec::new(),
+            capabilities: base_capabilities(),
+            features: Vec::new(),
+        }
+    }
+
+    /// Adds a directory to the GLSL include path.
+    pub fn include_dir(mut self, dir: impl AsRef<Path>) -> Shader {
+        self.include_dirs.push(dir.as_ref().to_path_buf());
+        self
+    }
+
+    /// Allows these naga capabilities beyond [`base_capabilities`] (WGSL).
+    pub fn capabilities(mut self, capabilities: naga::valid::Capabilities) -> Shader {
+        self.capabilities |= capabilities;
+        self
+    }
+
+    /// Declares that the code needs `feature` on the device: a check on a device without it is
+    /// reported as not run, with the reason.
+    pub fn requires(mut self, feature: Feature) -> Shader {
+        if !self.features.contains(&feature) {
+            self.features.push(feature);
+        }
+        self
+    }
+
+    /// The language.
+    pub fn language(&self) -> Language {
+        self.language
+    }
+
+    /// The source text placed in front of every kernel.
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+
+    /// The GLSL include directories.
+    pub fn include_dirs(&self) -> Vec<&Path> {
+        self.include_dirs.iter().map(PathBuf::as_path).collect()
+    }
+
+    /// The device features the code needs.
+    pub fn features(&self) -> &[Feature] {
+        &self.features
+    }
+
+    /// Compiles a whole compute shader written against this one (its source in front, as
+    /// [`crate::kernel_source`] writes) to SPIR-V for Vulkan 1.1.
+    pub fn compile_kernel(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
+        match self.language {
+            Language::Wgsl => compile_wgsl(
+                kernel,
+                "kernel.wgsl",
+                self.capabilities | naga::valid::Capabilities::IMMEDIATES,
+                Target::Vulkan1_1,
+            ),
+            Language::Glsl => compile_glsl(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
+        }
+    }
+}

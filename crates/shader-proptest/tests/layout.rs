@@ -1,0 +1,102 @@
+//! The layout reader: what it reads from naga and glslang, and the errors it gives.
+
+use shader_proptest::layout::{self, GlslPacking, LayoutError};
+use shader_proptest::rust_layout;
+
+/// The GLSL reader sees the difference between std430 (vec3 aligned to 16) and scalar (to 4).
+#[test]
+fn glsl_packings_differ_where_the_rules_differ() {
+    let source = "struct Probe { float a; vec3 b; };";
+    let offset_of_b = |packing| {
+        layout::glsl_layout(source, "Probe", packing, &[])
+            .expect("compiles")
+            .fields[1]
+            .offset
+    };
+    assert_eq!(offset_of_b(GlslPacking::Std430), 16);
+    assert_eq!(offset_of_b(GlslPacking::Scalar), 4);
+    let wgsl = layout::wgsl_layout("struct Probe { a: f32, b: vec3<f32> }", "Probe").expect("parses");
+    assert_eq!((wgsl.fields[1].offset, wgsl.size, wgsl.align), (16, 32, 16));
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct Probe {
+    a: f32,
+    b: [f32; 3],
+}
+
+/// The verification API names what is wrong instead of panicking.
+#[test]
+fn layout_errors_name_the_struct_and_field() {
+    let rust = rust_layout!(Probe { a, b });
+    let wgsl = |source: &str| layout::wgsl_layout(source, "Probe");
+    assert_eq!(
+        wgsl("struct Other { a: f32 }"),
+        Err(LayoutError::StructNotFound("Probe".into()))
+    );
+    assert!(matches!(
+        wgsl("struct Probe { a: f32"),
+        Err(LayoutError::Source(_))
+    ));
+    let missing_in_rust = wgsl("struct Probe { a: f32, b: array<f32, 3>, c: f32 }").expect("parses");
+    assert_eq!(
+        layout::compare(&rust, &missing_in_rust),
+        Err(LayoutError::MissingField {
+            structure: "Probe".into(),
+            field: "c".into(),
+            missing_in: "Rust"
+        })
+    );
+    let missing_in_shader = wgsl("struct Probe { a: f32 }").expect("parses");
+    assert!(matches!(
+        layout::compare(&rust, &missing_in_shader),
+        Err(LayoutError::MissingField {
+            missing_in: "shader",
+            ..
+        })
+    ));
+    match layout::compare(
+        &rust,
+        &wgsl("struct Probe { a: f32, b: vec3<f32> }").expect("parses"),
+    ) {
+        Err(LayoutError::Mismatch(table)) => {
+            println!("{table}");
+            assert_eq!(table.mismatches(), ["b", "(size)"]);
+        }
+        other => panic!("expected a mismatch, got {other:?}"),
+    }
+    let good = wgsl("struct Probe { a: f32, b: array<f32, 3> }").expect("parses");
+    assert!(layout::compare(&rust, &good).is_ok());
+    assert!(matches!(
+        layout::glsl_layout("struct Probe { float a; }", "Missing", GlslPacking::Std430, &[]),
+        Err(LayoutError::StructNotFound(_))
+    ));
+    assert!(matches!(
+        layout::glsl_layout("struct Probe { float a }", "Probe", GlslPacking::Std430, &[]),
+        Err(LayoutError::Source(_))
+    ));
+}
+
+#[repr(C)]
+struct Padded {
+    flag: u8,
+    value: f32,
+}
+
+/// A Rust struct with implicit padding is refused even where the offsets happen to agree.
+#[test]
+fn implicit_padding_is_reported() {
+    let rust = rust_layout!(Padded { flag, value });
+    let shader = layout::StructLayout {
+        name: "Padded".into(),
+        ..rust.clone()
+    };
+    assert_eq!(
+        layout::compare(&rust, &shader),
+        Err(LayoutError::ImplicitPadding {
+            structure: "Padded".into(),
+            uncovered: 3
+        })
+    );
+}

@@ -1,0 +1,33 @@
+//! The shader twins of `luminance` and `tone_map` agree with the Rust functions, on lavapipe.
+
+use downstream_shader_proptest_user::{luminance, tone_map};
+use glam::Vec3;
+use shader_proptest::proptest::prelude::*;
+use shader_proptest::{FunctionCheck, Gpu, RunConfig, Shader, Tolerance};
+
+/// A linear colour with channels from 0 to 100 (high dynamic range).
+fn colour() -> impl Strategy<Value = (Vec3,)> {
+    (0.0f32..100.0, 0.0f32..100.0, 0.0f32..100.0).prop_map(|(r, g, b)| (Vec3::new(r, g, b),))
+}
+
+#[test]
+fn wgsl_luminance_agrees() {
+    let gpu = Gpu::new().unwrap();
+    let shader = Shader::wgsl(include_str!("../shaders/colour.wgsl"));
+    // A dot product of three terms: three roundings, possibly fused.
+    let check = FunctionCheck::new("luminance", colour, |(c,)| luminance(c)).tolerance(Tolerance::Ulps(4.0));
+    let report = check.run(&gpu, &shader, &RunConfig::default()).unwrap();
+    println!("{report}");
+    report.assert_passed();
+}
+
+#[test]
+fn glsl_tone_map_agrees() {
+    let gpu = Gpu::new().unwrap();
+    let shader = Shader::glsl("#include \"colour.glsl\"").include_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders"));
+    // A correctly rounded sum and a division of 2.5 ULP on the device, 0.5 each in Rust.
+    let check = FunctionCheck::new("tone_map", colour, |(c,)| tone_map(c)).tolerance(Tolerance::Ulps(4.0));
+    let report = check.run(&gpu, &shader, &RunConfig::default()).unwrap();
+    println!("{report}");
+    report.assert_passed();
+}
