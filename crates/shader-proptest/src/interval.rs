@@ -18,7 +18,8 @@
 //!   `exp2` within `3 + 2 |y log2 x|` ULP;
 //! - `dot`, `cross` and matrix products (whose summation order is the implementation's): `2n - 1`
 //!   roundings of the sum of the term magnitudes for `n` terms;
-//! - every rounding may also flush a denormal: plus the smallest normal number.
+//! - every rounding may also flush a denormal: plus the smallest normal number;
+//! - an exact zero (the difference of equal inputs, a product with a zero) is computed exactly.
 //!
 //! For f64 arithmetic the same budgets apply with f64 units ([`F64`]), and a final conversion to f32
 //! adds half an f32 ULP.
@@ -118,8 +119,36 @@ impl Interval {
         }
     }
 
-    /// Widens by `ulps` roundings of the largest magnitude, plus one flushed denormal.
+    /// The width relative to the smallest magnitude in the interval: how well the sign and size of
+    /// the value are known. 0 for a point (an exact zero included), infinite when the interval
+    /// contains 0 and something else.
+    pub fn relative_width(self) -> f64 {
+        if self.lo == self.hi {
+            0.0
+        } else if self.lo <= 0.0 && self.hi >= 0.0 {
+            f64::INFINITY
+        } else {
+            (self.hi - self.lo) / self.lo.abs().min(self.hi.abs())
+        }
+    }
+
+    /// Whether 0 lies in the interval.
+    pub fn contains_zero(self) -> bool {
+        self.lo <= 0.0 && self.hi >= 0.0
+    }
+
+    /// Whether the interval is exactly zero: an exact zero result is computed exactly (0 is
+    /// representable and no rounding or denormal flush moves it), so it is never widened.
+    pub fn is_exact_zero(self) -> bool {
+        self.lo == 0.0 && self.hi == 0.0
+    }
+
+    /// Widens by `ulps` roundings of the largest magnitude, plus one flushed denormal; an exact
+    /// zero stays exact.
     pub fn round(self, ulps: f64) -> Interval {
+        if self.is_exact_zero() {
+            return self;
+        }
         let w = ulps * self.p.ulp * self.magnitude() + self.p.floor;
         Interval {
             lo: self.lo - w,
@@ -329,7 +358,7 @@ impl Div for Interval {
 /// `sum(a_i * b_i)` in any order of operations: the exact interval sum of the exact interval
 /// products, widened by `2n - 1` roundings of the sum of the term magnitudes.
 pub fn sum_of_products(terms: &[(Interval, Interval)]) -> Interval {
-    let p = terms.iter().fold(F32, |p, (a, b)| coarser(p, coarser(a.p, b.p)));
+    let p = terms.iter().fold(F64, |p, (a, b)| coarser(p, coarser(a.p, b.p)));
     let exact: Vec<Interval> = terms
         .iter()
         .map(|&(a, b)| {
@@ -349,6 +378,9 @@ pub fn sum_of_products(terms: &[(Interval, Interval)]) -> Interval {
         hi: s.hi + t.hi,
         p,
     });
+    if exact.iter().all(|term| term.is_exact_zero()) {
+        return sum;
+    }
     let magnitude: f64 = exact.iter().map(|t| t.magnitude()).sum();
     let roundings = (2 * terms.len() - 1) as f64;
     let w = roundings * 0.5 * p.ulp * magnitude + roundings * p.floor;

@@ -12,7 +12,7 @@ use glam::{Mat4, Vec2, Vec3, Vec3Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, PackedRayCone, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
 use shader_proptest::tolerance::{atan_error, dot_error, log2_error, tan_error, ulps, ULP};
-use shader_proptest::{Check, FunctionCheck};
+use shader_proptest::{Args, Check, FunctionCheck, Value};
 
 fn ray_cone() -> BoxedStrategy<RayCone> {
     (scalar(), angle())
@@ -96,283 +96,349 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 
-/// Every check of the module.
-pub fn checks() -> Vec<Box<dyn Check>> {
-    vec![
-        Box::new(per_component(
-            "pack_ray_cone",
-            || ray_cone().prop_map(|c| (c,)).boxed(),
-            |(cone,)| rc::pack_ray_cone(cone),
-            // The rounding mode of packHalf2x16 is the implementation's: one f16 ULP (2^-10
-            // relative, 2^-24 absolute for f16 subnormals).
-            |_, _, expected| (expected.abs() / 1024.0).max(1.0 / 16_777_216.0),
-        )),
-        Box::new(per_component(
-            "unpack_ray_cone",
-            || packed_ray_cone().prop_map(|p| (p,)).boxed(),
-            |(packed,)| rc::unpack_ray_cone(packed),
-            // f16 to f32 is exact.
-            |_, _, _| 0.0,
-        )),
-        Box::new(per_component(
-            "pixel_spread_angle",
-            || (fov_y(), pixels()).boxed(),
-            |(fov, height)| rc::pixel_spread_angle(fov, height),
-            // atan of the tan ratio: the ratio's error through atan, plus atan's 4096 ULP.
-            |&(fov, height), _, _| {
-                atan_error(
-                    rc::pixel_spread_angle_small(fov, height),
-                    tan_ratio_error(fov, height),
-                )
-            },
-        )),
-        Box::new(per_component(
-            "pixel_spread_angle_small",
-            || (fov_y(), pixels()).boxed(),
-            |(fov, height)| rc::pixel_spread_angle_small(fov, height),
-            // tan's error (inherited from sin / cos) scaled by 2 / H.
-            |&(fov, height), _, _| tan_ratio_error(fov, height),
-        )),
-        Box::new(per_component(
-            "pixel_spread_angle_from_proj_inv",
-            || (proj_inv(), pixels()).boxed(),
-            |(proj_inv, height)| rc::pixel_spread_angle_from_proj_inv(proj_inv, height),
-            // The ratio 2|m|/H has one division (2.5 ULP) and the mirror's rounding; then atan.
-            |&(proj_inv, height), _, _| {
-                let ratio = 2.0 * proj_inv.y_axis.y.abs() / height.max(1.0);
-                atan_error(ratio, ulps(3.5, ratio))
-            },
-        )),
-        Box::new(per_component(
-            "pinhole_ray_cone",
-            || angle().prop_map(|a| (a,)).boxed(),
-            |(spread,)| rc::pinhole_ray_cone(spread),
-            // No arithmetic.
-            |_, _, _| 0.0,
-        )),
-        Box::new(per_component(
-            "orthographic_ray_cone",
-            || (magnitude(), pixels()).boxed(),
-            |(view_height, height)| rc::orthographic_ray_cone(view_height, height),
-            // One division: 2.5 ULP on the device, 0.5 in the mirror.
-            |_, _, expected| ulps(3.0, expected),
-        )),
-        Box::new(per_component(
-            "thin_lens_ray_cone",
-            || (angle(), magnitude(), scalar()).boxed(),
-            |(spread, aperture, focus)| rc::thin_lens_ray_cone(spread, aperture, focus),
-            // Width: a copy. Spread: a division (2.5 ULP + 0.5) then a subtraction (0.5 + 0.5 ULP
-            // of the larger operand).
-            |&(spread, aperture, focus), index, _| {
-                let quotient = aperture / focus.max(MIN_MAGNITUDE);
-                if index == 0 {
-                    0.0
-                } else {
-                    ulps(4.0, spread.abs() + quotient.abs())
-                }
-            },
-        )),
-        Box::new(per_component(
-            "width_at",
-            || (ray_cone(), distance()).boxed(),
-            |(cone, t)| rc::width_at(cone, t),
-            // width + spread * t, possibly fused: 2 ULP of the larger term.
-            |&(cone, t), _, _| ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()),
-        )),
-        Box::new(per_component(
-            "propagate",
-            || (ray_cone(), distance(), angle()).boxed(),
-            |(cone, t, beta)| rc::propagate(cone, t, beta),
-            // Width as width_at; spread: one correctly rounded addition, identical.
-            |&(cone, t, _), index, _| {
-                if index == 0 {
-                    ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs())
-                } else {
-                    0.0
-                }
-            },
-        )),
-        Box::new(per_component(
-            "normal_spread_angle",
-            || (small_vec3(), small_vec3()).boxed(),
-            |(dn_dx, dn_dy)| rc::normal_spread_angle(dn_dx, dn_dy),
-            // sqrt of a 6-term sum (3 ULP of the sum -> 1.5 relative, sqrt ~4.5, mirror 1): 9 ULP
-            // on the length, halved and propagated through atan, doubled; plus atan's 4096 ULP.
-            |&(dn_dx, dn_dy), _, _| {
-                let length = rc::normal_spread_angle_small(dn_dx, dn_dy);
-                2.0 * atan_error(0.5 * length, ulps(9.0, 0.5 * length))
-            },
-        )),
-        Box::new(per_component(
-            "normal_spread_angle_small",
-            || (small_vec3(), small_vec3()).boxed(),
-            |(dn_dx, dn_dy)| rc::normal_spread_angle_small(dn_dx, dn_dy),
-            // As above, without atan: 9 ULP.
-            |_, _, expected| ulps(9.0, expected),
-        )),
-        Box::new(per_component(
-            "curvature_sign",
-            || (small_vec3(), small_vec3(), small_vec3(), small_vec3()).boxed(),
-            |(dp_dx, dp_dy, dn_dx, dn_dy)| rc::curvature_sign(dp_dx, dp_dy, dn_dx, dn_dy),
-            // Exact, unless the sum is within its rounding error (6 terms, 8 ULP) of zero: then
-            // either sign is right.
-            |&(dp_dx, dp_dy, dn_dx, dn_dy), _, _| {
-                let sum = dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy);
-                let terms = (dp_dx * dn_dx).abs().element_sum() + (dp_dy * dn_dy).abs().element_sum();
-                if sum.abs() <= 8.0 * ULP * terms {
-                    2.0
-                } else {
-                    0.0
-                }
-            },
-        )),
-        Box::new(per_component(
-            "surface_spread_angle",
-            || {
-                (
-                    angle(),
-                    prop::sample::select(vec![1.0f32, -1.0]),
-                    -4.0f32..4.0,
-                    angle(),
-                )
-                    .boxed()
-            },
-            |(phi, sign, k1, k2)| rc::surface_spread_angle(phi, sign, k1, k2),
-            // Three products and a sum, possibly fused: 4 ULP of the larger term.
-            |&(phi, sign, k1, k2), _, _| ulps(4.0, (2.0 * k1 * sign * phi).abs() + k2.abs()),
-        )),
-        Box::new(per_component(
-            "edge_curvature",
-            || (vec3(), vec3(), small_vec3(), small_vec3()).boxed(),
-            |(p_i, p_j, n_i, n_j)| rc::edge_curvature(p_i, p_j, n_i, n_j),
-            |&(p_i, p_j, n_i, n_j), _, _| edge_curvature_error(p_i, p_j, n_i, n_j),
-        )),
-        Box::new(per_component(
-            "triangle_curvature",
-            || {
-                (triangle(), (small_vec3(), small_vec3(), small_vec3()))
-                    .prop_map(|(p, n)| (p[0], p[1], p[2], n.0, n.1, n.2))
-                    .boxed()
-            },
-            |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
-            // The three edge errors, then two additions and a division by 3 (5 ULP of the sum of
-            // magnitudes), all divided by 3.
-            |&(p0, p1, p2, n0, n1, n2), _, _| {
-                let edges = [(p0, p1, n0, n1), (p1, p2, n1, n2), (p2, p0, n2, n0)];
-                let errors: f32 = edges
-                    .iter()
-                    .map(|&(a, b, m, n)| edge_curvature_error(a, b, m, n))
-                    .sum();
-                let sizes: f32 = edges
-                    .iter()
-                    .map(|&(a, b, m, n)| rc::edge_curvature(a, b, m, n).abs())
-                    .sum();
-                (errors + ulps(5.0, sizes)) / 3.0
-            },
-        )),
-        Box::new(per_component(
-            "curvature_spread_angle",
-            || {
-                (scalar(), scalar(), normal_and_direction())
-                    .prop_map(|(k, w, (n, d))| (k, w, n, d))
-                    .boxed()
-            },
-            |(curvature, width, normal, direction)| {
-                rc::curvature_spread_angle(curvature, width, normal, direction)
-            },
-            // Relative: two products and a division (5 ULP), plus the dot's rounding over |cos|.
-            |&(_, _, normal, direction), _, expected| {
-                ulps(5.0, expected)
-                    + expected.abs() * dot_error(normal, direction) / clamped_cos(normal, direction)
-            },
-        )),
-        Box::new(per_component(
-            "world_footprint",
-            || {
-                (ray_cone(), distance(), normal_and_direction())
-                    .prop_map(|(c, t, (n, d))| (c, t, n, d))
-                    .boxed()
-            },
-            |(cone, t, normal, direction)| rc::world_footprint(cone, t, normal, direction),
-            // The width's error (as width_at) over |cos|, the division (3 ULP), and the dot's
-            // rounding over |cos| as a relative error.
-            |&(cone, t, normal, direction), _, expected| {
-                let cos = clamped_cos(normal, direction);
-                ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()) / cos
-                    + ulps(3.0, expected)
-                    + expected.abs() * dot_error(normal, direction) / cos
-            },
-        )),
-        Box::new(per_component(
-            "triangle_world_area2",
-            || triangle().prop_map(|p| (p[0], p[1], p[2])).boxed(),
-            |(p0, p1, p2)| rc::triangle_world_area2(p0, p1, p2),
-            |&(p0, p1, p2), _, _| world_area2_error([p0, p1, p2]),
-        )),
-        Box::new(per_component(
-            "triangle_uv_area2",
-            || uv_triangle().prop_map(|uv| (uv[0], uv[1], uv[2])).boxed(),
-            |(uv0, uv1, uv2)| rc::triangle_uv_area2(uv0, uv1, uv2),
-            |&(uv0, uv1, uv2), _, _| uv_area2_error([uv0, uv1, uv2]),
-        )),
-        Box::new(per_component(
-            "texel_density",
-            || {
-                (triangle(), uv_triangle())
-                    .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
-                    .boxed()
-            },
-            |(p0, p1, p2, uv0, uv1, uv2)| rc::texel_density(p0, p1, p2, uv0, uv1, uv2),
-            // The areas' errors through sqrt(uv) / sqrt(max(world, MIN)), plus two square roots
-            // (4.5 ULP each), the division (2.5) and the mirror's 3.
-            |&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
-                let min = f64::from(MIN_MAGNITUDE);
-                area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
-                    uv.sqrt() / world.max(min).sqrt()
-                }) + ulps(14.5, expected)
-            },
-        )),
-        Box::new(per_component(
-            "triangle_base_lod",
-            || {
-                (triangle(), uv_triangle())
-                    .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
-                    .boxed()
-            },
-            |(p0, p1, p2, uv0, uv1, uv2)| rc::triangle_base_lod(p0, p1, p2, uv0, uv1, uv2),
-            // The areas' errors through 0.5 * (log2 uv - log2 world) with the clamps, half of each
-            // log2's error, and the subtraction and halving (2 ULP).
-            |&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
-                let min = f64::from(MIN_MAGNITUDE);
-                let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
-                let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
-                area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
-                    0.5 * (uv.max(min).log2() - world.max(min).log2())
-                }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
-                    + ulps(2.0, expected)
-            },
-        )),
-        Box::new(texture_lod()),
-        Box::new(per_component(
-            "texture_gradient",
-            || (scalar(), -1.0f32..4.0).boxed(),
-            |(uv_footprint, scale)| rc::texture_gradient(uv_footprint, scale),
-            // One correctly rounded product.
-            |_, _, _| f32::MIN_POSITIVE,
-        )),
-        Box::new(per_component(
-            "environment_lod",
-            || (angle(), pixels()).boxed(),
-            |(spread, height)| rc::environment_lod(spread, height),
-            // A product and a division (3.5 ULP + the mirror's 1) through log2 (/ ln 2), plus log2's
-            // own error.
-            |_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected),
-        )),
-    ]
-}
-
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);
+
+/// `rf_pack_ray_cone`.
+pub fn pack_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "pack_ray_cone",
+        || ray_cone().prop_map(|c| (c,)).boxed(),
+        |(cone,)| rc::pack_ray_cone(cone),
+        // The rounding mode of packHalf2x16 is the implementation's: one f16 ULP (2^-10
+        // relative, 2^-24 absolute for f16 subnormals).
+        |_, _, expected| (expected.abs() / 1024.0).max(1.0 / 16_777_216.0),
+    )
+}
+
+/// `rf_unpack_ray_cone`.
+pub fn unpack_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "unpack_ray_cone",
+        || packed_ray_cone().prop_map(|p| (p,)).boxed(),
+        |(packed,)| rc::unpack_ray_cone(packed),
+        // f16 to f32 is exact.
+        |_, _, _| 0.0,
+    )
+}
+
+/// `rf_pixel_spread_angle`.
+pub fn pixel_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "pixel_spread_angle",
+        || (fov_y(), pixels()).boxed(),
+        |(fov, height)| rc::pixel_spread_angle(fov, height),
+        // atan of the tan ratio: the ratio's error through atan, plus atan's 4096 ULP.
+        |&(fov, height), _, _| {
+            atan_error(
+                rc::pixel_spread_angle_small(fov, height),
+                tan_ratio_error(fov, height),
+            )
+        },
+    )
+}
+
+/// `rf_pixel_spread_angle_small`.
+pub fn pixel_spread_angle_small() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "pixel_spread_angle_small",
+        || (fov_y(), pixels()).boxed(),
+        |(fov, height)| rc::pixel_spread_angle_small(fov, height),
+        // tan's error (inherited from sin / cos) scaled by 2 / H.
+        |&(fov, height), _, _| tan_ratio_error(fov, height),
+    )
+}
+
+/// `rf_pixel_spread_angle_from_proj_inv`.
+pub fn pixel_spread_angle_from_proj_inv() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "pixel_spread_angle_from_proj_inv",
+        || (proj_inv(), pixels()).boxed(),
+        |(proj_inv, height)| rc::pixel_spread_angle_from_proj_inv(proj_inv, height),
+        // The ratio 2|m|/H has one division (2.5 ULP) and the mirror's rounding; then atan.
+        |&(proj_inv, height), _, _| {
+            let ratio = 2.0 * proj_inv.y_axis.y.abs() / height.max(1.0);
+            atan_error(ratio, ulps(3.5, ratio))
+        },
+    )
+}
+
+/// `rf_pinhole_ray_cone`.
+pub fn pinhole_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "pinhole_ray_cone",
+        || angle().prop_map(|a| (a,)).boxed(),
+        |(spread,)| rc::pinhole_ray_cone(spread),
+        // No arithmetic.
+        |_, _, _| 0.0,
+    )
+}
+
+/// `rf_orthographic_ray_cone`.
+pub fn orthographic_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "orthographic_ray_cone",
+        || (magnitude(), pixels()).boxed(),
+        |(view_height, height)| rc::orthographic_ray_cone(view_height, height),
+        // One division: 2.5 ULP on the device, 0.5 in the mirror.
+        |_, _, expected| ulps(3.0, expected),
+    )
+}
+
+/// `rf_thin_lens_ray_cone`.
+pub fn thin_lens_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "thin_lens_ray_cone",
+        || (angle(), magnitude(), scalar()).boxed(),
+        |(spread, aperture, focus)| rc::thin_lens_ray_cone(spread, aperture, focus),
+        // Width: a copy. Spread: a division (2.5 ULP + 0.5) then a subtraction (0.5 + 0.5 ULP
+        // of the larger operand).
+        |&(spread, aperture, focus), index, _| {
+            let quotient = aperture / focus.max(MIN_MAGNITUDE);
+            if index == 0 {
+                0.0
+            } else {
+                ulps(4.0, spread.abs() + quotient.abs())
+            }
+        },
+    )
+}
+
+/// `rf_width_at`.
+pub fn width_at() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "width_at",
+        || (ray_cone(), distance()).boxed(),
+        |(cone, t)| rc::width_at(cone, t),
+        // width + spread * t, possibly fused: 2 ULP of the larger term.
+        |&(cone, t), _, _| ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()),
+    )
+}
+
+/// `rf_propagate`.
+pub fn propagate() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "propagate",
+        || (ray_cone(), distance(), angle()).boxed(),
+        |(cone, t, beta)| rc::propagate(cone, t, beta),
+        // Width as width_at; spread: one correctly rounded addition, identical.
+        |&(cone, t, _), index, _| {
+            if index == 0 {
+                ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs())
+            } else {
+                0.0
+            }
+        },
+    )
+}
+
+/// `rf_normal_spread_angle`.
+pub fn normal_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "normal_spread_angle",
+        || (small_vec3(), small_vec3()).boxed(),
+        |(dn_dx, dn_dy)| rc::normal_spread_angle(dn_dx, dn_dy),
+        // sqrt of a 6-term sum (3 ULP of the sum -> 1.5 relative, sqrt ~4.5, mirror 1): 9 ULP
+        // on the length, halved and propagated through atan, doubled; plus atan's 4096 ULP.
+        |&(dn_dx, dn_dy), _, _| {
+            let length = rc::normal_spread_angle_small(dn_dx, dn_dy);
+            2.0 * atan_error(0.5 * length, ulps(9.0, 0.5 * length))
+        },
+    )
+}
+
+/// `rf_normal_spread_angle_small`.
+pub fn normal_spread_angle_small() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "normal_spread_angle_small",
+        || (small_vec3(), small_vec3()).boxed(),
+        |(dn_dx, dn_dy)| rc::normal_spread_angle_small(dn_dx, dn_dy),
+        // As above, without atan: 9 ULP.
+        |_, _, expected| ulps(9.0, expected),
+    )
+}
+
+/// `rf_curvature_sign`.
+pub fn curvature_sign() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "curvature_sign",
+        || (small_vec3(), small_vec3(), small_vec3(), small_vec3()).boxed(),
+        |(dp_dx, dp_dy, dn_dx, dn_dy)| rc::curvature_sign(dp_dx, dp_dy, dn_dx, dn_dy),
+        // Exact, unless the sum is within its rounding error (6 terms, 8 ULP) of zero: then
+        // either sign is right.
+        |&(dp_dx, dp_dy, dn_dx, dn_dy), _, _| {
+            let sum = dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy);
+            let terms = (dp_dx * dn_dx).abs().element_sum() + (dp_dy * dn_dy).abs().element_sum();
+            if sum.abs() <= 8.0 * ULP * terms {
+                2.0
+            } else {
+                0.0
+            }
+        },
+    )
+}
+
+/// `rf_surface_spread_angle`.
+pub fn surface_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "surface_spread_angle",
+        || {
+            (
+                angle(),
+                prop::sample::select(vec![1.0f32, -1.0]),
+                -4.0f32..4.0,
+                angle(),
+            )
+                .boxed()
+        },
+        |(phi, sign, k1, k2)| rc::surface_spread_angle(phi, sign, k1, k2),
+        // Three products and a sum, possibly fused: 4 ULP of the larger term.
+        |&(phi, sign, k1, k2), _, _| ulps(4.0, (2.0 * k1 * sign * phi).abs() + k2.abs()),
+    )
+}
+
+/// `rf_edge_curvature`.
+pub fn edge_curvature() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "edge_curvature",
+        || (vec3(), vec3(), small_vec3(), small_vec3()).boxed(),
+        |(p_i, p_j, n_i, n_j)| rc::edge_curvature(p_i, p_j, n_i, n_j),
+        |&(p_i, p_j, n_i, n_j), _, _| edge_curvature_error(p_i, p_j, n_i, n_j),
+    )
+}
+
+/// `rf_triangle_curvature`.
+pub fn triangle_curvature() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "triangle_curvature",
+        || {
+            (triangle(), (small_vec3(), small_vec3(), small_vec3()))
+                .prop_map(|(p, n)| (p[0], p[1], p[2], n.0, n.1, n.2))
+                .boxed()
+        },
+        |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
+        // The three edge errors, then two additions and a division by 3 (5 ULP of the sum of
+        // magnitudes), all divided by 3.
+        |&(p0, p1, p2, n0, n1, n2), _, _| {
+            let edges = [(p0, p1, n0, n1), (p1, p2, n1, n2), (p2, p0, n2, n0)];
+            let errors: f32 = edges
+                .iter()
+                .map(|&(a, b, m, n)| edge_curvature_error(a, b, m, n))
+                .sum();
+            let sizes: f32 = edges
+                .iter()
+                .map(|&(a, b, m, n)| rc::edge_curvature(a, b, m, n).abs())
+                .sum();
+            (errors + ulps(5.0, sizes)) / 3.0
+        },
+    )
+}
+
+/// `rf_curvature_spread_angle`.
+pub fn curvature_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "curvature_spread_angle",
+        || {
+            (scalar(), scalar(), normal_and_direction())
+                .prop_map(|(k, w, (n, d))| (k, w, n, d))
+                .boxed()
+        },
+        |(curvature, width, normal, direction)| {
+            rc::curvature_spread_angle(curvature, width, normal, direction)
+        },
+        // Relative: two products and a division (5 ULP), plus the dot's rounding over |cos|.
+        |&(_, _, normal, direction), _, expected| {
+            ulps(5.0, expected)
+                + expected.abs() * dot_error(normal, direction) / clamped_cos(normal, direction)
+        },
+    )
+}
+
+/// `rf_world_footprint`.
+pub fn world_footprint() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "world_footprint",
+        || {
+            (ray_cone(), distance(), normal_and_direction())
+                .prop_map(|(c, t, (n, d))| (c, t, n, d))
+                .boxed()
+        },
+        |(cone, t, normal, direction)| rc::world_footprint(cone, t, normal, direction),
+        // The width's error (as width_at) over |cos|, the division (3 ULP), and the dot's
+        // rounding over |cos| as a relative error.
+        |&(cone, t, normal, direction), _, expected| {
+            let cos = clamped_cos(normal, direction);
+            ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()) / cos
+                + ulps(3.0, expected)
+                + expected.abs() * dot_error(normal, direction) / cos
+        },
+    )
+}
+
+/// `rf_triangle_world_area2`.
+pub fn triangle_world_area2() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "triangle_world_area2",
+        || triangle().prop_map(|p| (p[0], p[1], p[2])).boxed(),
+        |(p0, p1, p2)| rc::triangle_world_area2(p0, p1, p2),
+        |&(p0, p1, p2), _, _| world_area2_error([p0, p1, p2]),
+    )
+}
+
+/// `rf_triangle_uv_area2`.
+pub fn triangle_uv_area2() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "triangle_uv_area2",
+        || uv_triangle().prop_map(|uv| (uv[0], uv[1], uv[2])).boxed(),
+        |(uv0, uv1, uv2)| rc::triangle_uv_area2(uv0, uv1, uv2),
+        |&(uv0, uv1, uv2), _, _| uv_area2_error([uv0, uv1, uv2]),
+    )
+}
+
+/// `rf_texel_density`.
+pub fn texel_density() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "texel_density",
+        || {
+            (triangle(), uv_triangle())
+                .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
+                .boxed()
+        },
+        |(p0, p1, p2, uv0, uv1, uv2)| rc::texel_density(p0, p1, p2, uv0, uv1, uv2),
+        // The areas' errors through sqrt(uv) / sqrt(max(world, MIN)), plus two square roots
+        // (4.5 ULP each), the division (2.5) and the mirror's 3.
+        |&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
+            let min = f64::from(MIN_MAGNITUDE);
+            area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
+                uv.sqrt() / world.max(min).sqrt()
+            }) + ulps(14.5, expected)
+        },
+    )
+}
+
+/// `rf_triangle_base_lod`.
+pub fn triangle_base_lod() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "triangle_base_lod",
+        || {
+            (triangle(), uv_triangle())
+                .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
+                .boxed()
+        },
+        |(p0, p1, p2, uv0, uv1, uv2)| rc::triangle_base_lod(p0, p1, p2, uv0, uv1, uv2),
+        // The areas' errors through 0.5 * (log2 uv - log2 world) with the clamps, half of each
+        // log2's error, and the subtraction and halving (2 ULP).
+        |&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
+            let min = f64::from(MIN_MAGNITUDE);
+            let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
+            let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
+            area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
+                0.5 * (uv.max(min).log2() - world.max(min).log2())
+            }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
+                + ulps(2.0, expected)
+        },
+    )
+}
 
 /// The check of `rf_texture_lod` (also measured by the harness benchmark).
 pub fn texture_lod() -> FunctionCheck<TextureLodArgs, f32> {
@@ -410,4 +476,58 @@ pub fn texture_lod() -> FunctionCheck<TextureLodArgs, f32> {
                 )
         },
     )
+}
+
+/// `rf_texture_gradient`.
+pub fn texture_gradient() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "texture_gradient",
+        || (scalar(), -1.0f32..4.0).boxed(),
+        |(uv_footprint, scale)| rc::texture_gradient(uv_footprint, scale),
+        // One correctly rounded product.
+        |_, _, _| f32::MIN_POSITIVE,
+    )
+}
+
+/// `rf_environment_lod`.
+pub fn environment_lod() -> FunctionCheck<impl Args, impl Value> {
+    per_component(
+        "environment_lod",
+        || (angle(), pixels()).boxed(),
+        |(spread, height)| rc::environment_lod(spread, height),
+        // A product and a division (3.5 ULP + the mirror's 1) through log2 (/ ln 2), plus log2's
+        // own error.
+        |_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected),
+    )
+}
+
+/// Every check of the module, in the module's function order.
+pub fn checks() -> Vec<Box<dyn Check>> {
+    vec![
+        Box::new(pack_ray_cone()),
+        Box::new(unpack_ray_cone()),
+        Box::new(pixel_spread_angle()),
+        Box::new(pixel_spread_angle_small()),
+        Box::new(pixel_spread_angle_from_proj_inv()),
+        Box::new(pinhole_ray_cone()),
+        Box::new(orthographic_ray_cone()),
+        Box::new(thin_lens_ray_cone()),
+        Box::new(width_at()),
+        Box::new(propagate()),
+        Box::new(normal_spread_angle()),
+        Box::new(normal_spread_angle_small()),
+        Box::new(curvature_sign()),
+        Box::new(surface_spread_angle()),
+        Box::new(edge_curvature()),
+        Box::new(triangle_curvature()),
+        Box::new(curvature_spread_angle()),
+        Box::new(world_footprint()),
+        Box::new(triangle_world_area2()),
+        Box::new(triangle_uv_area2()),
+        Box::new(texel_density()),
+        Box::new(triangle_base_lod()),
+        Box::new(texture_lod()),
+        Box::new(texture_gradient()),
+        Box::new(environment_lod()),
+    ]
 }

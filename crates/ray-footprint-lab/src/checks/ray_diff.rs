@@ -21,7 +21,7 @@ use shader_proptest::interval::{
     interval2 as v2, interval3 as v3, mat_vec, Interval as I, Interval2 as V2, Interval3 as V3,
     IntervalVec as V, F32,
 };
-use shader_proptest::{Check, FunctionCheck};
+use shader_proptest::{Args, Check, FunctionCheck, Value};
 
 // ---------------------------------------------------------------------------------------------
 // Strategies
@@ -304,7 +304,7 @@ fn b_barycentric_derivatives(&(diff, direction, t, p0, p1, p2): &BarycentricArgs
     let d = v3(direction);
     let e1 = v3(p1) - v3(p0);
     let e2 = v3(p2) - v3(p0);
-    let k = e1.cross(e2).dot(d);
+    let k = b_determinant(d, v3(p0), v3(p1), v3(p2));
     let cu = e2.cross(d);
     let cv = d.cross(e1);
     let q = v3(diff.d_origin_dx) + v3(diff.d_direction_dx) * s(t);
@@ -404,12 +404,16 @@ fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I
     )
 }
 
+/// `k = 1 - eta^2 (1 - dot(D, N)^2)`: negative for total internal reflection.
+fn b_refraction_determinant(&(_, direction, normal, _, eta): &RefractArgs) -> I {
+    let cosine = v3(direction).dot(v3(normal));
+    I::c(1.0) - s(eta) * s(eta) * (I::c(1.0) - cosine * cosine)
+}
+
 /// Either branch, or the hull of both (flag `[0, 1]`) when `k`'s sign is uncertain.
 fn b_refract_ray_diff(args: &RefractArgs) -> Vec<I> {
-    let &(diff, direction, normal, dn, eta) = args;
-    let (d, n, eta_i) = (v3(direction), v3(normal), s(eta));
-    let cosine = d.dot(n);
-    let k = I::c(1.0) - eta_i * eta_i * (I::c(1.0) - cosine * cosine);
+    let &(diff, direction, normal, dn, _) = args;
+    let k = b_refraction_determinant(args);
     let reflected = || {
         [
             b_reflect_ray_diff(&(diff, direction, normal, dn)),
@@ -498,11 +502,30 @@ fn b_scaled_length(v: V3) -> I {
     m * unit.dot(unit).sqrt()
 }
 
+/// The determinant `k = dot(cross(e1, e2), direction)` of a ray against a triangle's plane (RTG
+/// Eq. 12-20): the divisor of every barycentric quotient.
+fn b_determinant(direction: V3, p0: V3, p1: V3, p2: V3) -> I {
+    (p1 - p0).cross(p2 - p0).dot(direction)
+}
+
+/// Bits to which a divisor must be known for its quotient to be well-conditioned: a relative
+/// width of the divisor's enclosure of at most 2^-10. Beyond that (a ray parallel to the triangle
+/// within rounding, a sliver, an object-space direction lost to the cancellation of a far origin)
+/// the clamped quotient's enclosure is as wide as the outputs themselves, so those inputs are
+/// checked separately, for finite outputs within the documented clamp (the edge-case suite).
+pub const WELL_CONDITIONED: f64 = 1.0 / 1024.0;
+
+/// Whether a quotient by `k` is well-conditioned ([`WELL_CONDITIONED`]); an exact 0 is, since both
+/// sides then take the clamp.
+fn well_conditioned(k: I) -> bool {
+    k.relative_width() <= WELL_CONDITIONED
+}
+
 fn b_intersect_triangle_plane(origin: V3, direction: V3, p0: V3, p1: V3, p2: V3) -> V3 {
     let e1 = p1 - p0;
     let e2 = p2 - p0;
     let s0 = origin - p0;
-    let k = e1.cross(e2).dot(direction);
+    let k = b_determinant(direction, p0, p1, p2);
     let u = b_barycentric_quotient(e2.cross(direction).dot(s0), k);
     let v = b_barycentric_quotient(direction.cross(e1).dot(s0), k);
     V([I::c(1.0) - u - v, u, v])
@@ -511,16 +534,50 @@ fn b_intersect_triangle_plane(origin: V3, direction: V3, p0: V3, p1: V3, p2: V3)
 /// The arguments of the re-intersection functions (here and in the f64 module).
 pub type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
 
-fn b_barycentric_offsets(&(w2o, origin, p0, p1, p2, dir_x, dir_y, hit): &OffsetArgs) -> (V3, V3) {
+/// The object-space origin and the two neighbour directions of the re-intersection.
+fn b_object_rays(&(w2o, origin, _, _, _, dir_x, dir_y, _): &OffsetArgs) -> (V3, V3, V3) {
     let transform = |p: V3| mat_vec(w2o, p, I::c(1.0), F32);
     let object_origin = transform(v3(origin));
     let object_x = transform(v3(origin) + v3(dir_x)) - object_origin;
     let object_y = transform(v3(origin) + v3(dir_y)) - object_origin;
+    (object_origin, object_x, object_y)
+}
+
+fn b_barycentric_offsets(args: &OffsetArgs) -> (V3, V3) {
+    let &(_, _, p0, p1, p2, _, _, hit) = args;
+    let (object_origin, object_x, object_y) = b_object_rays(args);
     let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
     (
         b_intersect_triangle_plane(object_origin, object_x, p0, p1, p2) - v3(hit),
         b_intersect_triangle_plane(object_origin, object_y, p0, p1, p2) - v3(hit),
     )
+}
+
+/// Whether a direction is known to [`WELL_CONDITIONED`]: its widest component's enclosure is at
+/// most that fraction of its largest component (an object-space neighbour direction is not, when
+/// the origin is so far from the object that `T(O + d) - T(O)` cancels most of its bits).
+pub fn direction_well_conditioned(direction: V3) -> bool {
+    let width = direction.0.iter().map(|c| c.hi - c.lo).fold(0.0, f64::max);
+    let magnitude = direction.0.iter().map(|c| c.magnitude()).fold(0.0, f64::max);
+    width <= WELL_CONDITIONED * magnitude
+}
+
+/// Whether both neighbour rays' intersections are well-conditioned ([`WELL_CONDITIONED`]): the
+/// object-space directions and their determinants against the triangle.
+fn offsets_well_conditioned(args: &OffsetArgs) -> bool {
+    let &(_, _, p0, p1, p2, _, _, _) = args;
+    let (_, object_x, object_y) = b_object_rays(args);
+    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    [object_x, object_y]
+        .iter()
+        .all(|&d| direction_well_conditioned(d) && well_conditioned(b_determinant(d, p0, p1, p2)))
+}
+
+/// [`offset_args`] where both intersections are well-conditioned.
+pub fn well_conditioned_offset_args(max_exponent: f32) -> BoxedStrategy<OffsetArgs> {
+    offset_args(max_exponent)
+        .prop_filter("an ill-conditioned re-intersection", offsets_well_conditioned)
+        .boxed()
 }
 
 fn b_cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> Vec<I> {
@@ -556,10 +613,67 @@ fn camera() -> BoxedStrategy<Camera> {
         .boxed()
 }
 
+/// Narrowest field of view the eye-ray differential checks use: below it Vulkan's allowance for
+/// `tan` (2^-11 absolute, inherited from `sin / cos`) exceeds 2% of `tan(fov / 2)`, and a camera
+/// whose field of view is clamped to 0 has no differential to compare; those cameras are checked
+/// separately (the degenerate table, the edge-case suite).
+const MIN_DIFFERENTIAL_FOV: f32 = 0.05;
+
+/// [`camera`] with a field of view of at least [`MIN_DIFFERENTIAL_FOV`].
+fn camera_with_a_view() -> BoxedStrategy<Camera> {
+    camera()
+        .prop_filter("a field of view of (nearly) 0", |&(_, _, fov, ..)| {
+            fov >= MIN_DIFFERENTIAL_FOV
+        })
+        .boxed()
+}
+
 fn matrices() -> BoxedStrategy<Matrices> {
     (pixel_and_size(), rigid(), proj_inv())
         .prop_map(|((pixel, size), view_inv, proj_inv)| (pixel, size, view_inv, proj_inv))
         .boxed()
+}
+
+/// `rf_eye_ray_direction`.
+pub fn eye_ray_direction() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "eye_ray_direction",
+        camera,
+        |(pixel, size, fov, r, u, v)| rd::eye_ray_direction(pixel, size, fov, r, u, v),
+        |a| b_eye_ray_direction(a).components(),
+    )
+}
+
+/// `rf_normalized_derivative`.
+pub fn normalized_derivative() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "normalized_derivative",
+        || (any_direction(), differential_vec3()).boxed(),
+        |(v, dv)| rd::normalized_derivative(v, dv),
+        |&(v, dv)| b_normalized_derivative(v3(v), v3(dv)).components(),
+    )
+}
+
+/// `rf_eye_ray_diff`.
+pub fn eye_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "eye_ray_diff",
+        camera_with_a_view,
+        |(pixel, size, fov, r, u, v)| rd::eye_ray_diff(pixel, size, fov, r, u, v),
+        b_eye_ray_diff,
+    )
+}
+
+/// `rf_eye_ray_direction_from_matrices`.
+pub fn eye_ray_direction_from_matrices() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "eye_ray_direction_from_matrices",
+        matrices,
+        |(pixel, size, view_inv, proj_inv)| {
+            rd::eye_ray_direction_from_matrices(pixel, size, view_inv, proj_inv)
+        },
+        |a| b_eye_ray_direction_from_matrices(a).components(),
+    )
 }
 
 /// `rf_eye_ray_diff_from_matrices`: the enclosure of every component.
@@ -582,6 +696,20 @@ pub fn pixel_directions() -> FunctionCheck<Matrices, NeighbourDirections> {
     )
 }
 
+/// `rf_transfer`.
+pub fn transfer() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "transfer",
+        || {
+            (ray_diff(), normal_and_direction(), distance())
+                .prop_map(|(diff, (n, d), t)| (diff, d, t, n))
+                .boxed()
+        },
+        |(diff, direction, t, normal)| rd::transfer(diff, direction, t, normal),
+        b_transfer,
+    )
+}
+
 /// `rf_barycentric_derivatives`: the enclosure of the four derivatives.
 pub fn barycentric_derivatives() -> FunctionCheck<BarycentricArgs, Derivatives2> {
     enclosed(
@@ -589,10 +717,26 @@ pub fn barycentric_derivatives() -> FunctionCheck<BarycentricArgs, Derivatives2>
         || {
             (ray_diff(), any_direction(), distance(), triangle())
                 .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
+                .prop_filter("an ill-conditioned determinant", |&(_, d, _, p0, p1, p2)| {
+                    well_conditioned(b_determinant(v3(d), v3(p0), v3(p1), v3(p2)))
+                })
                 .boxed()
         },
         |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
         b_barycentric_derivatives,
+    )
+}
+
+/// `rf_barycentric_w_derivatives`.
+pub fn barycentric_w_derivatives() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "barycentric_w_derivatives",
+        || derivatives2().prop_map(|b| (b,)).boxed(),
+        |(b,)| rd::barycentric_w_derivatives(b),
+        |&(b,)| {
+            let (dx, dy) = (v2(b.dx), v2(b.dy));
+            vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]]
+        },
     )
 }
 
@@ -613,6 +757,38 @@ pub fn texture_derivatives() -> FunctionCheck<(Derivatives2, Vec2, Vec2, Vec2), 
     )
 }
 
+/// `rf_texel_derivatives`.
+pub fn texel_derivatives() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "texel_derivatives",
+        || {
+            (derivatives2(), uv_triangle(), (pixels(), pixels()))
+                .prop_map(|(b, t, (w, h))| (b, t[0], t[1], t[2], Vec2::new(w, h)))
+                .boxed()
+        },
+        |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
+        |&(b, t0, t1, t2, size)| {
+            let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
+            let size = v2(size.max(Vec2::ONE));
+            b_derivatives2(dx * size, dy * size)
+        },
+    )
+}
+
+/// `rf_secondary_origin_derivatives`.
+pub fn secondary_origin_derivatives() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "secondary_origin_derivatives",
+        || {
+            (derivatives2(), triangle())
+                .prop_map(|(b, p)| (b, p[0], p[1], p[2]))
+                .boxed()
+        },
+        |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
+        b_secondary_origin_derivatives,
+    )
+}
+
 /// `rf_lod_isotropic`: the enclosure of the LOD.
 pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
     enclosed(
@@ -623,16 +799,197 @@ pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
     )
 }
 
+/// `rf_lod_box`.
+pub fn lod_box() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "lod_box",
+        || derivatives2().prop_map(|g| (g,)).boxed(),
+        |(g,)| rd::lod_box(g),
+        |&(g,)| vec![b_lod_box(g)],
+    )
+}
+
+/// `rf_sample_grad_gradients`.
+pub fn sample_grad_gradients() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "sample_grad_gradients",
+        || (derivatives2(), -1.0f32..4.0).boxed(),
+        |(g, scale)| rd::sample_grad_gradients(g, scale),
+        |&(g, scale)| {
+            let scale = s(scale.max(0.0));
+            b_derivatives2(v2(g.dx) * scale, v2(g.dy) * scale)
+        },
+    )
+}
+
+/// `rf_normal_derivatives`.
+pub fn normal_derivatives() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "normal_derivatives",
+        || {
+            (
+                (unit_vec3(), unit_vec3(), unit_vec3()),
+                (-1.0f32..2.0, -1.0f32..2.0),
+                derivatives2(),
+            )
+                .prop_map(|((n0, n1, n2), (u, v), b)| (n0, n1, n2, Vec2::new(u, v), b))
+                .boxed()
+        },
+        |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
+        b_normal_derivatives,
+    )
+}
+
+/// `rf_reflect_ray_diff`.
+pub fn reflect_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "reflect_ray_diff",
+        || {
+            (ray_diff(), normal_and_direction(), derivatives3())
+                .prop_map(|(diff, (n, d), dn)| (diff, d, n, dn))
+                .boxed()
+        },
+        |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
+        b_reflect_ray_diff,
+    )
+}
+
+/// `rf_refract_ray_diff`.
+pub fn refract_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "refract_ray_diff",
+        // Within rounding of the critical angle (the enclosure of `k` contains 0) either branch is
+        // right and the flag's tolerance would be vacuous: those cases are checked separately.
+        || {
+            let eta = prop_oneof![4 => 0.3f32..3.0, 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => 0.0f32..0.01];
+            (ray_diff(), normal_and_direction(), derivatives3(), eta)
+                .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
+                .prop_filter("within rounding of the critical angle", |args| {
+                    !b_refraction_determinant(args).contains_zero()
+                })
+                .boxed()
+        },
+        |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
+        b_refract_ray_diff,
+    )
+}
+
+/// `rf_gbuffer_ray_diff`.
+pub fn gbuffer_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "gbuffer_ray_diff",
+        // The neighbour choice compares correctly rounded differences: the device makes the same
+        // choice as the mirror, so only the chosen branch is enclosed.
+        || {
+            (
+                gbuffer_sample(),
+                (gbuffer_sample(), gbuffer_sample()),
+                (gbuffer_sample(), gbuffer_sample()),
+                magnitude(),
+            )
+                .prop_map(|(c, (r, l), (b, a), eps)| (c, r, l, b, a, eps))
+                .boxed()
+        },
+        |(c, r, l, b, a, eps)| rd::gbuffer_ray_diff(c, r, l, b, a, eps),
+        b_gbuffer_ray_diff,
+    )
+}
+
+/// `rf_tangent_plane_offsets`.
+pub fn tangent_plane_offsets() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "tangent_plane_offsets",
+        || {
+            (normal_and_direction(), (unit_vec3(), unit_vec3()), distance())
+                .prop_map(|((n, rd), (rdx, rdy), t)| (rd, rdx, rdy, t, n))
+                .boxed()
+        },
+        |(rd, rdx, rdy, t, n)| rd::tangent_plane_offsets(rd, rdx, rdy, t, n),
+        |&(r, rdx, rdy, t, n)| {
+            let dx = b_tangent_plane_offset(r, rdx, t, n);
+            let dy = b_tangent_plane_offset(r, rdy, t, n);
+            b_derivatives3(dx, dy)
+        },
+    )
+}
+
+/// `rf_planar_mapping_gradients`.
+pub fn planar_mapping_gradients() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "planar_mapping_gradients",
+        || {
+            (derivatives3(), (-10.0f32..10.0, -10.0f32..10.0))
+                .prop_map(|(dp, (a, b))| (dp, Vec2::new(a, b)))
+                .boxed()
+        },
+        |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
+        |&(dp, scale)| {
+            let project = |v: Vec3| v2(Vec2::new(v.x, v.z)) * v2(scale);
+            b_derivatives2(project(dp.dx), project(dp.dy))
+        },
+    )
+}
+
+/// `rf_triplanar_weights`.
+pub fn triplanar_weights() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "triplanar_weights",
+        || {
+            let normal = prop_oneof![8 => unit_vec3(), 1 => Just(Vec3::ZERO)];
+            (normal, prop_oneof![4 => 0.0f32..16.0, 1 => -2.0f32..100.0]).boxed()
+        },
+        |(normal, sharpness)| rd::triplanar_weights(normal, sharpness),
+        |&(normal, sharpness)| b_triplanar_weights(normal, sharpness),
+    )
+}
+
+/// `rf_triplanar_gradients`.
+pub fn triplanar_gradients() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "triplanar_gradients",
+        || (derivatives3(), -10.0f32..10.0).boxed(),
+        |(dp, scale)| rd::triplanar_gradients(dp, scale),
+        |&(dp, scale)| {
+            let (dx, dy) = (v3(dp.dx) * s(scale), v3(dp.dy) * s(scale));
+            let pick = |v: V3, a: usize, b: usize| V([v.0[a], v.0[b]]);
+            let planes = [(1, 2), (2, 0), (0, 1)];
+            let all: Vec<I> = planes
+                .iter()
+                .flat_map(|&(a, b)| b_derivatives2(pick(dx, a, b), pick(dy, a, b)))
+                .collect();
+            all
+        },
+    )
+}
+
+/// `rf_intersect_triangle_plane`.
+pub fn intersect_triangle_plane() -> FunctionCheck<impl Args, impl Value> {
+    enclosed(
+        "intersect_triangle_plane",
+        || {
+            (vec3(), any_direction(), triangle())
+                .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
+                .prop_filter("an ill-conditioned determinant", |&(_, d, p0, p1, p2)| {
+                    well_conditioned(b_determinant(v3(d), v3(p0), v3(p1), v3(p2)))
+                })
+                .boxed()
+        },
+        |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
+        |&(o, d, p0, p1, p2)| b_intersect_triangle_plane(v3(o), v3(d), v3(p0), v3(p1), v3(p2)).components(),
+    )
+}
+
 /// `rf_barycentric_offsets`: the enclosure of the signed differences.
 pub fn barycentric_offsets() -> FunctionCheck<OffsetArgs, Derivatives3> {
     enclosed(
         "barycentric_offsets",
-        || offset_args(F32_ORIGIN_EXPONENT),
         // Where a neighbour ray is parallel to the triangle plane within rounding (its determinant
         // `k` encloses 0), the device and the mirror may clamp to opposite +-DIFF_MAX_VALUE, and
         // the enclosure (clamped to that range) is 2 * DIFF_MAX_VALUE wide: either side is right.
-        // Elsewhere the enclosure is tight. Origins stay below 1e5 (`F32_ORIGIN_EXPONENT`), where
-        // `O + direction` keeps the direction; beyond, the ray_diff_f64 module is the tool.
+        // Those cases are checked separately; here both determinants are well-conditioned, and
+        // origins stay below 1e5 (`F32_ORIGIN_EXPONENT`), where `O + direction` keeps the
+        // direction; beyond, the ray_diff_f64 module is the tool.
+        || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
         |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_offsets(m, o, p0, p1, p2, x, y, b),
         |a| {
             let (dx, dy) = b_barycentric_offsets(a);
@@ -645,7 +1002,7 @@ pub fn barycentric_offsets() -> FunctionCheck<OffsetArgs, Derivatives3> {
 pub fn barycentric_deltas() -> FunctionCheck<OffsetArgs, Vec3> {
     enclosed(
         "barycentric_deltas",
-        || offset_args(F32_ORIGIN_EXPONENT),
+        || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
         |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
         |a| {
             let (dx, dy) = b_barycentric_offsets(a);
@@ -685,215 +1042,33 @@ pub fn cone_barycentric_deltas() -> FunctionCheck<(f32, Vec3, Vec3, Vec3), Vec3>
     )
 }
 
-/// Every check of the module.
+/// Every check of the module, in the module's function order.
 pub fn checks() -> Vec<Box<dyn Check>> {
     vec![
-        Box::new(enclosed(
-            "eye_ray_direction",
-            camera,
-            |(pixel, size, fov, r, u, v)| rd::eye_ray_direction(pixel, size, fov, r, u, v),
-            |a| b_eye_ray_direction(a).components(),
-        )),
-        Box::new(enclosed(
-            "normalized_derivative",
-            || (any_direction(), differential_vec3()).boxed(),
-            |(v, dv)| rd::normalized_derivative(v, dv),
-            |&(v, dv)| b_normalized_derivative(v3(v), v3(dv)).components(),
-        )),
-        Box::new(enclosed(
-            "eye_ray_diff",
-            camera,
-            |(pixel, size, fov, r, u, v)| rd::eye_ray_diff(pixel, size, fov, r, u, v),
-            b_eye_ray_diff,
-        )),
-        Box::new(enclosed(
-            "eye_ray_direction_from_matrices",
-            matrices,
-            |(pixel, size, view_inv, proj_inv)| {
-                rd::eye_ray_direction_from_matrices(pixel, size, view_inv, proj_inv)
-            },
-            |a| b_eye_ray_direction_from_matrices(a).components(),
-        )),
+        Box::new(eye_ray_direction()),
+        Box::new(normalized_derivative()),
+        Box::new(eye_ray_diff()),
+        Box::new(eye_ray_direction_from_matrices()),
         Box::new(eye_ray_diff_from_matrices()),
         Box::new(pixel_directions()),
-        Box::new(enclosed(
-            "transfer",
-            || {
-                (ray_diff(), normal_and_direction(), distance())
-                    .prop_map(|(diff, (n, d), t)| (diff, d, t, n))
-                    .boxed()
-            },
-            |(diff, direction, t, normal)| rd::transfer(diff, direction, t, normal),
-            b_transfer,
-        )),
+        Box::new(transfer()),
         Box::new(barycentric_derivatives()),
-        Box::new(enclosed(
-            "barycentric_w_derivatives",
-            || derivatives2().prop_map(|b| (b,)).boxed(),
-            |(b,)| rd::barycentric_w_derivatives(b),
-            |&(b,)| {
-                let (dx, dy) = (v2(b.dx), v2(b.dy));
-                vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]]
-            },
-        )),
+        Box::new(barycentric_w_derivatives()),
         Box::new(texture_derivatives()),
-        Box::new(enclosed(
-            "texel_derivatives",
-            || {
-                (derivatives2(), uv_triangle(), (pixels(), pixels()))
-                    .prop_map(|(b, t, (w, h))| (b, t[0], t[1], t[2], Vec2::new(w, h)))
-                    .boxed()
-            },
-            |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
-            |&(b, t0, t1, t2, size)| {
-                let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
-                let size = v2(size.max(Vec2::ONE));
-                b_derivatives2(dx * size, dy * size)
-            },
-        )),
-        Box::new(enclosed(
-            "secondary_origin_derivatives",
-            || {
-                (derivatives2(), triangle())
-                    .prop_map(|(b, p)| (b, p[0], p[1], p[2]))
-                    .boxed()
-            },
-            |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
-            b_secondary_origin_derivatives,
-        )),
+        Box::new(texel_derivatives()),
+        Box::new(secondary_origin_derivatives()),
         Box::new(lod_isotropic()),
-        Box::new(enclosed(
-            "lod_box",
-            || derivatives2().prop_map(|g| (g,)).boxed(),
-            |(g,)| rd::lod_box(g),
-            |&(g,)| vec![b_lod_box(g)],
-        )),
-        Box::new(enclosed(
-            "sample_grad_gradients",
-            || (derivatives2(), -1.0f32..4.0).boxed(),
-            |(g, scale)| rd::sample_grad_gradients(g, scale),
-            |&(g, scale)| {
-                let scale = s(scale.max(0.0));
-                b_derivatives2(v2(g.dx) * scale, v2(g.dy) * scale)
-            },
-        )),
-        Box::new(enclosed(
-            "normal_derivatives",
-            || {
-                (
-                    (unit_vec3(), unit_vec3(), unit_vec3()),
-                    (-1.0f32..2.0, -1.0f32..2.0),
-                    derivatives2(),
-                )
-                    .prop_map(|((n0, n1, n2), (u, v), b)| (n0, n1, n2, Vec2::new(u, v), b))
-                    .boxed()
-            },
-            |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
-            b_normal_derivatives,
-        )),
-        Box::new(enclosed(
-            "reflect_ray_diff",
-            || {
-                (ray_diff(), normal_and_direction(), derivatives3())
-                    .prop_map(|(diff, (n, d), dn)| (diff, d, n, dn))
-                    .boxed()
-            },
-            |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
-            b_reflect_ray_diff,
-        )),
-        Box::new(enclosed(
-            "refract_ray_diff",
-            // Near the critical angle the sign of k may differ: the hull of both branches, flag [0, 1].
-            || {
-                let eta =
-                    prop_oneof![4 => 0.3f32..3.0, 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => 0.0f32..0.01];
-                (ray_diff(), normal_and_direction(), derivatives3(), eta)
-                    .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
-                    .boxed()
-            },
-            |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
-            b_refract_ray_diff,
-        )),
-        Box::new(enclosed(
-            "gbuffer_ray_diff",
-            // The neighbour choice compares correctly rounded differences: the device makes the same
-            // choice as the mirror, so only the chosen branch is enclosed.
-            || {
-                (
-                    gbuffer_sample(),
-                    (gbuffer_sample(), gbuffer_sample()),
-                    (gbuffer_sample(), gbuffer_sample()),
-                    magnitude(),
-                )
-                    .prop_map(|(c, (r, l), (b, a), eps)| (c, r, l, b, a, eps))
-                    .boxed()
-            },
-            |(c, r, l, b, a, eps)| rd::gbuffer_ray_diff(c, r, l, b, a, eps),
-            b_gbuffer_ray_diff,
-        )),
-        Box::new(enclosed(
-            "tangent_plane_offsets",
-            || {
-                (normal_and_direction(), (unit_vec3(), unit_vec3()), distance())
-                    .prop_map(|((n, rd), (rdx, rdy), t)| (rd, rdx, rdy, t, n))
-                    .boxed()
-            },
-            |(rd, rdx, rdy, t, n)| rd::tangent_plane_offsets(rd, rdx, rdy, t, n),
-            |&(r, rdx, rdy, t, n)| {
-                let dx = b_tangent_plane_offset(r, rdx, t, n);
-                let dy = b_tangent_plane_offset(r, rdy, t, n);
-                b_derivatives3(dx, dy)
-            },
-        )),
-        Box::new(enclosed(
-            "planar_mapping_gradients",
-            || {
-                (derivatives3(), (-10.0f32..10.0, -10.0f32..10.0))
-                    .prop_map(|(dp, (a, b))| (dp, Vec2::new(a, b)))
-                    .boxed()
-            },
-            |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
-            |&(dp, scale)| {
-                let project = |v: Vec3| v2(Vec2::new(v.x, v.z)) * v2(scale);
-                b_derivatives2(project(dp.dx), project(dp.dy))
-            },
-        )),
-        Box::new(enclosed(
-            "triplanar_weights",
-            || {
-                let normal = prop_oneof![8 => unit_vec3(), 1 => Just(Vec3::ZERO)];
-                (normal, prop_oneof![4 => 0.0f32..16.0, 1 => -2.0f32..100.0]).boxed()
-            },
-            |(normal, sharpness)| rd::triplanar_weights(normal, sharpness),
-            |&(normal, sharpness)| b_triplanar_weights(normal, sharpness),
-        )),
-        Box::new(enclosed(
-            "triplanar_gradients",
-            || (derivatives3(), -10.0f32..10.0).boxed(),
-            |(dp, scale)| rd::triplanar_gradients(dp, scale),
-            |&(dp, scale)| {
-                let (dx, dy) = (v3(dp.dx) * s(scale), v3(dp.dy) * s(scale));
-                let pick = |v: V3, a: usize, b: usize| V([v.0[a], v.0[b]]);
-                let planes = [(1, 2), (2, 0), (0, 1)];
-                let all: Vec<I> = planes
-                    .iter()
-                    .flat_map(|&(a, b)| b_derivatives2(pick(dx, a, b), pick(dy, a, b)))
-                    .collect();
-                all
-            },
-        )),
-        Box::new(enclosed(
-            "intersect_triangle_plane",
-            || {
-                (vec3(), any_direction(), triangle())
-                    .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
-                    .boxed()
-            },
-            |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
-            |&(o, d, p0, p1, p2)| {
-                b_intersect_triangle_plane(v3(o), v3(d), v3(p0), v3(p1), v3(p2)).components()
-            },
-        )),
+        Box::new(lod_box()),
+        Box::new(sample_grad_gradients()),
+        Box::new(normal_derivatives()),
+        Box::new(reflect_ray_diff()),
+        Box::new(refract_ray_diff()),
+        Box::new(gbuffer_ray_diff()),
+        Box::new(tangent_plane_offsets()),
+        Box::new(planar_mapping_gradients()),
+        Box::new(triplanar_weights()),
+        Box::new(triplanar_gradients()),
+        Box::new(intersect_triangle_plane()),
         Box::new(barycentric_offsets()),
         Box::new(barycentric_deltas()),
         Box::new(uv_gradients_from_offsets()),
