@@ -14,7 +14,7 @@
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
 use ray_footprint::gpu::rt::{ray_query_source, Camera, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR};
-use ray_footprint::gpu::suite::ray_cone::{area_corners, edge_curvature_error};
+use ray_footprint::gpu::suite::ray_cone::{area_corners, curvature_spread_angle_error, edge_curvature_error};
 use ray_footprint::gpu::tolerance::{dot_error, log2_error, ulps};
 use ray_footprint::gpu::{suite, FunctionCheck, Gpu, GpuError, GpuValue};
 use ray_footprint::layout::{self, GlslPacking, StructLayout};
@@ -629,10 +629,10 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
         r,
     );
 
-    // curvature_spread_angle: two products and a division (5 ULP), and the dot product's
-    // rounding over |cos| as a relative error.
+    // curvature_spread_angle: the suite's own tolerance, on the shader's curvature, width and
+    // stored normal.
     let spread = rc::curvature_spread_angle(r.curvature, r.width, n, d);
-    let spread_error = ulps(5.0, spread) + spread.abs() * dot_error(n, d) / cos;
+    let spread_error = curvature_spread_angle_error(n, d, spread);
     stats.compare("curvature_spread", r.curvature_spread, spread, spread_error, r);
 
     // propagate: the width as width_at; the spread is one correctly rounded addition.

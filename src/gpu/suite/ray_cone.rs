@@ -96,6 +96,21 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 
+/// Error of [`rc::curvature_spread_angle`] returning `expected`: relative, two products and a
+/// division (5 ULP with the mirror's), and the rounding of `dot(normal, direction)` over the
+/// clamped `|cos|`. Where the dot product lies within its rounding of 0, the device may find the
+/// ray on the other side of the normal and return `-expected`, which is as right: 2 `|expected|`
+/// more.
+pub fn curvature_spread_angle_error(normal: Vec3, direction: Vec3, expected: f32) -> f32 {
+    let dot_rounding = dot_error(normal, direction);
+    let error = ulps(5.0, expected) + expected.abs() * dot_rounding / clamped_cos(normal, direction);
+    if normal.dot(direction).abs() <= dot_rounding {
+        error + 2.0 * expected.abs()
+    } else {
+        error
+    }
+}
+
 /// Every check of the module.
 pub fn checks() -> Vec<Box<dyn Check>> {
     vec![
@@ -289,18 +304,17 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(FunctionCheck {
             module: Module::RayCone,
             function: "curvature_spread_angle",
+            // Signed curvatures and widths; the ray meets the normal's side or the other one.
             strategy: || {
-                (scalar(), scalar(), normal_and_direction())
-                    .prop_map(|(k, w, (n, d))| (k, w, n, d))
+                (scalar(), scalar(), normal_and_direction(), any::<bool>())
+                    .prop_map(|(k, w, (n, d), behind)| (k, w, if behind { -n } else { n }, d))
                     .boxed()
             },
             mirror: |(curvature, width, normal, direction)| {
                 rc::curvature_spread_angle(curvature, width, normal, direction)
             },
-            // Relative: two products and a division (5 ULP), plus the dot's rounding over |cos|.
             tolerance: |&(_, _, normal, direction), _, expected| {
-                ulps(5.0, expected)
-                    + expected.abs() * dot_error(normal, direction) / clamped_cos(normal, direction)
+                curvature_spread_angle_error(normal, direction, expected)
             },
         }),
         Box::new(FunctionCheck {
