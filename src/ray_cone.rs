@@ -87,11 +87,30 @@ pub fn pixel_spread_angle_from_proj_inv(proj_inv: Mat4, image_height: f32) -> f3
     (2.0 * proj_inv.y_axis.y.abs() / image_height.max(1.0)).atan()
 }
 
-/// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30).
+/// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30),
+/// the same for every pixel (see [`pinhole_ray_cone_for_ray`] for off-axis pixels).
 pub fn pinhole_ray_cone(pixel_spread_angle: f32) -> RayCone {
     RayCone {
         width: 0.0,
         spread_angle: pixel_spread_angle,
+    }
+}
+
+/// Primary cone of a pinhole camera for one ray, narrower off axis (the OptiX Toolkit's per-ray
+/// pinhole cone; SPEC 1.12): width 0, spread
+/// `pixel_spread_angle * clamp(dot(direction, view_axis), 0, 1)`.
+///
+/// `direction` is the unit ray direction and `view_axis` the camera's unit viewing direction. A
+/// pixel whose ray is `theta` off the axis subtends about `cos(theta)` of the centre pixel's angle
+/// across the radial direction and `cos^2(theta)` along it; the isotropic LOD (RTG Eq. 2) follows
+/// the longer side, so this cone fits every pixel to within half a LOD level, where
+/// [`pinhole_ray_cone`] is `1 / cos(theta)` too wide. The cosine is clamped to `[0, 1]`: a ray at
+/// 90 degrees to the view axis or behind the camera (outside any pinhole's view) gets spread 0, the
+/// limit of a pixel at 90 degrees, and `|spread|` never exceeds `|pixel_spread_angle|`.
+pub fn pinhole_ray_cone_for_ray(pixel_spread_angle: f32, direction: Vec3, view_axis: Vec3) -> RayCone {
+    RayCone {
+        width: 0.0,
+        spread_angle: pixel_spread_angle * direction.dot(view_axis).clamp(0.0, 1.0),
     }
 }
 

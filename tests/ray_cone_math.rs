@@ -1,7 +1,7 @@
 //! The ray-cone math itself, checked against exact geometry computed in f64 and against the
 //! crate's ray differentials on the same paths (no GPU needed).
 
-use glam::{DVec3, Mat4, Vec2, Vec3};
+use glam::{DVec2, DVec3, Mat4, Vec2, Vec3};
 use proptest::prelude::*;
 use proptest::test_runner::{TestRng, TestRunner};
 use ray_footprint::ray_cone::{self as rc, RayCone};
@@ -111,6 +111,87 @@ proptest! {
         prop_assert!((unpacked.width - expected_width).abs() <= expected_width.abs() / 2048.0 + 6.0e-8);
         prop_assert!((unpacked.spread_angle - spread).abs() <= spread.abs() / 2048.0 + 6.0e-8);
         prop_assert!(unpacked.width.is_finite());
+    }
+}
+
+/// The footprint of pixel `pixel` of a pinhole camera at the origin looking down -z (vertical field
+/// of view `fov_y`, image `size`, pixel y growing downwards) on the plane across its central ray at
+/// distance 1: the vectors from its left to its right edge and from its top to its bottom edge,
+/// between the points where the rays through the midpoints of the pixel's four edges cross that
+/// plane. Also the central ray's unit direction. In f64.
+fn exact_pixel_footprint(fov_y: f64, size: DVec2, pixel: DVec2) -> (DVec3, [DVec3; 2]) {
+    let tan_half = (0.5 * fov_y).tan();
+    let ray = |at: DVec2| {
+        let ndc = at / size * 2.0 - 1.0;
+        DVec3::new(ndc.x * size.x / size.y * tan_half, -ndc.y * tan_half, -1.0).normalize()
+    };
+    let centre = ray(pixel + 0.5);
+    let on_plane = |at: DVec2| {
+        let direction = ray(pixel + at);
+        direction / direction.dot(centre)
+    };
+    let across = on_plane(DVec2::new(1.0, 0.5)) - on_plane(DVec2::new(0.0, 0.5));
+    let down = on_plane(DVec2::new(0.5, 1.0)) - on_plane(DVec2::new(0.5, 0.0));
+    (centre, [across, down])
+}
+
+/// LOD slack for the per-ray cone: the exact spread `atan(x)` instead of `x` (under 1e-4 LOD here),
+/// terms of second order in the pixel's angular size, and f32 rounding.
+const PER_RAY_LOD_SLACK: f64 = 1.0e-3;
+
+/// SPEC 1.12, the per-ray pinhole cone, across 16:9 views with 60- and 160-degree vertical fields
+/// of view: the width at distance 1 of the per-ray cone and of the constant one against the exact
+/// footprint's longer side on the plane across the ray (the isotropic LOD's measure, RTG Eq. 2),
+/// as LOD errors `log2(cone width / exact width)`.
+///
+/// A pixel `theta` off axis spans `alpha cos(theta)` across the radial direction and
+/// `alpha cos^2(theta)` along it, to first order in its size. Its longer side, at whatever angle to
+/// the radial direction, is at most the first and at least `alpha cos(theta) sqrt((1 + cos^2) / 2)`,
+/// so the per-ray cone's error lies in `[0, 0.5 log2(2 / (1 + cos^2(theta)))]`, under half a level;
+/// the constant cone's is `log2(1 / cos(theta))` larger.
+#[test]
+fn per_ray_pinhole_cones_fit_off_axis_pixels() {
+    let size = DVec2::new(1920.0, 1080.0);
+    let corner = size - 1.0;
+    let grid = (0..=240).flat_map(|i| (0..=135).map(move |j| DVec2::new(f64::from(i), f64::from(j)) * 8.0));
+    for fov_degrees in [60.0f64, 160.0] {
+        let fov_y = fov_degrees.to_radians();
+        let alpha = rc::pixel_spread_angle(fov_y as f32, size.y as f32);
+        let lod_errors = |pixel: DVec2| {
+            let (direction, sides) = exact_pixel_footprint(fov_y, size, pixel);
+            let exact = sides[0].length().max(sides[1].length());
+            let lod_error = |cone: RayCone| (f64::from(rc::width_at(cone, 1.0)) / exact).log2();
+            let per_ray = rc::pinhole_ray_cone_for_ray(alpha, direction.as_vec3(), Vec3::NEG_Z);
+            (
+                -direction.z,
+                lod_error(per_ray),
+                lod_error(rc::pinhole_ray_cone(alpha)),
+            )
+        };
+        let (mut worst_per_ray, mut worst_constant) = (0.0f64, 0.0f64);
+        for pixel in grid.clone().map(|p| p.min(corner)).chain([corner]) {
+            let (cos, per_ray, constant) = lod_errors(pixel);
+            let bound = 0.5 * (2.0 / (1.0 + cos * cos)).log2();
+            assert!(
+                (-PER_RAY_LOD_SLACK..=bound + PER_RAY_LOD_SLACK).contains(&per_ray),
+                "{fov_degrees} degrees, pixel {pixel}: per-ray LOD error {per_ray}, bound {bound}"
+            );
+            assert!(
+                per_ray.abs() <= constant.abs(),
+                "pixel {pixel}: {per_ray} vs {constant}"
+            );
+            worst_per_ray = worst_per_ray.max(per_ray.abs());
+            worst_constant = worst_constant.max(constant.abs());
+        }
+        let (cos, per_ray, constant) = lod_errors(corner);
+        println!(
+            "{fov_degrees}-degree 16:9 view, corner pixel ({:.1} degrees off axis, log2(1 / cos) = \
+             {:.3}): LOD error of the per-ray cone {per_ray:+.3}, of the constant cone \
+             {constant:+.3}; largest over every 8th pixel: per-ray {worst_per_ray:.3}, constant \
+             {worst_constant:.3}",
+            cos.acos().to_degrees(),
+            -cos.log2()
+        );
     }
 }
 

@@ -82,6 +82,12 @@ RfRayCone rf_pinhole_ray_cone(float pixel_spread_angle) {
     return RfRayCone(0.0, pixel_spread_angle);
 }
 
+// Primary cone of a pinhole camera for one ray (unit direction and view axis): width 0, spread =
+// pixel spread angle * clamp(dot(direction, view_axis), 0, 1); off-axis pixels subtend less.
+RfRayCone rf_pinhole_ray_cone_for_ray(float pixel_spread_angle, vec3 direction, vec3 view_axis) {
+    return RfRayCone(0.0, pixel_spread_angle * clamp(dot(direction, view_axis), 0.0, 1.0));
+}
+
 // Primary cone of an orthographic camera view_height world units tall: width = one pixel, spread 0.
 RfRayCone rf_orthographic_ray_cone(float view_height, float image_height) {
     return RfRayCone(view_height / max(image_height, 1.0), 0.0);

@@ -78,6 +78,12 @@ fn rf_pinhole_ray_cone(pixel_spread_angle: f32) -> RfRayCone {
     return RfRayCone(0.0, pixel_spread_angle);
 }
 
+// Primary cone of a pinhole camera for one ray (unit direction and view axis): width 0, spread =
+// pixel spread angle * clamp(dot(direction, view_axis), 0, 1); off-axis pixels subtend less.
+fn rf_pinhole_ray_cone_for_ray(pixel_spread_angle: f32, direction: vec3<f32>, view_axis: vec3<f32>) -> RfRayCone {
+    return RfRayCone(0.0, pixel_spread_angle * clamp(dot(direction, view_axis), 0.0, 1.0));
+}
+
 // Primary cone of an orthographic camera view_height world units tall: width = one pixel, spread 0.
 fn rf_orthographic_ray_cone(view_height: f32, image_height: f32) -> RfRayCone {
     return RfRayCone(view_height / max(image_height, 1.0), 0.0);

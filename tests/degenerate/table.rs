@@ -194,6 +194,51 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
         }),
         Box::new(Table {
             module: Module::RayCone,
+            function: "pinhole_ray_cone_for_ray",
+            mirror: |(alpha, d, axis)| rc::pinhole_ray_cone_for_ray(alpha, d, axis),
+            // One product; the dot product is exact at these inputs.
+            tolerance: |_, e| ulps(1.0, e),
+            rows: vec![
+                value(
+                    "ray along the view axis",
+                    "(0, alpha)",
+                    (0.01, head_on, head_on),
+                    vec![0.0, 0.01],
+                ),
+                value(
+                    "ray at 90 degrees to the view axis",
+                    "(0, 0)",
+                    (0.01, x, head_on),
+                    vec![0.0, 0.0],
+                ),
+                same(
+                    "ray behind the camera (dot(d, axis) = -1)",
+                    "as at 90 degrees: the cosine is clamped to [0, 1]",
+                    (0.01, z, head_on),
+                    (0.01, x, head_on),
+                ),
+                same(
+                    "direction and axis of length 2 (dot = 4)",
+                    "as along the axis: never wider than alpha",
+                    (0.01, 2.0 * head_on, 2.0 * head_on),
+                    (0.01, head_on, head_on),
+                ),
+                value(
+                    "zero direction",
+                    "(0, 0)",
+                    (0.01, Vec3::ZERO, head_on),
+                    vec![0.0, 0.0],
+                ),
+                mirror(
+                    "NaN in (direction)",
+                    "CPU: (0, NaN) (Rust's `clamp` keeps NaN)",
+                    (0.01, Vec3::new(NAN, 0.0, -1.0), head_on),
+                    vec![0.0, NAN],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
             function: "orthographic_ray_cone",
             mirror: |(view_height, h)| rc::orthographic_ray_cone(view_height, h),
             tolerance: |_, e| ulps(2.5, e),

@@ -184,6 +184,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             // No arithmetic.
             tolerance: |_, _, _| 0.0,
         }),
+        Box::new(pinhole_ray_cone_for_ray()),
         Box::new(FunctionCheck {
             module: Module::RayCone,
             function: "orthographic_ray_cone",
@@ -424,6 +425,35 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             tolerance: |_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected),
         }),
     ]
+}
+
+/// Arguments of `rf_pinhole_ray_cone_for_ray`: pixel spread angle, direction, view axis.
+pub type PinholeRayConeForRayArgs = (f32, Vec3, Vec3);
+
+/// The check of `rf_pinhole_ray_cone_for_ray` (also used by the ray-tracing pipeline's test).
+pub fn pinhole_ray_cone_for_ray() -> FunctionCheck<PinholeRayConeForRayArgs, RayCone> {
+    FunctionCheck {
+        module: Module::RayCone,
+        function: "pinhole_ray_cone_for_ray",
+        // A view axis and a ray from on the axis to 90 degrees off it, or behind the camera.
+        strategy: || {
+            (angle(), normal_and_direction(), any::<bool>())
+                .prop_map(|(spread, (normal, direction), behind)| {
+                    (spread, direction, if behind { normal } else { -normal })
+                })
+                .boxed()
+        },
+        mirror: |(spread, direction, view_axis)| rc::pinhole_ray_cone_for_ray(spread, direction, view_axis),
+        // Width: exact. Spread: the dot product's rounding, through the clamp (which cannot widen
+        // it), times |spread|, and the product's rounding on the device and in the mirror.
+        tolerance: |&(spread, direction, view_axis), index, expected| {
+            if index == 0 {
+                0.0
+            } else {
+                spread.abs() * dot_error(direction, view_axis) + ulps(2.0, expected)
+            }
+        },
+    }
 }
 
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
