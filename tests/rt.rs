@@ -313,10 +313,15 @@ impl Stats {
 /// scene and every value is recomputed by the mirror from the shader's own inputs.
 fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelRecord, stats: &mut Stats) {
     let push = &inputs.push;
-    let cone = rc::pinhole_ray_cone(push.cone.pixel_spread_angle);
-    assert_eq!(
-        record.cone, cone,
-        "the primary cone is the push constant's, bit for bit"
+    // The primary cone: the push constant's spread narrowed by the ray's cosine to the view axis.
+    let cone_args = (push.cone.pixel_spread_angle, record.direction, push.forward);
+    let cone_check = suite::ray_cone::pinhole_ray_cone_for_ray();
+    compare_with(
+        stats,
+        "primary cone",
+        cone_check,
+        (cone_args, record.cone),
+        record,
     );
     if record.hit == 0 {
         assert_eq!(record.diff, RtDiffRecord::default(), "a miss measures nothing");
