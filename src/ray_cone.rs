@@ -9,9 +9,11 @@
 //! Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021".
 //!
 //! Conventions: `width` is the full footprint diameter and `spread_angle` the full cone angle, both
-//! signed (a converging thin-lens cone has a negative spread); footprints use `|width|`. Normals and
-//! directions passed in are unit length. Where the math diverges, the functions clamp with the
-//! constants below, so finite inputs give finite outputs.
+//! signed (a converging thin-lens cone has a negative spread, and past its focus a negative width);
+//! footprints use `|width|`. Normals and directions passed in are unit length. Normals are taken as
+//! the mesh stores them, in either orientation: no function needs them turned towards the ray.
+//! Where the math diverges, the functions clamp with the constants below, so finite inputs give
+//! finite outputs.
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec2, Vec3};
@@ -85,11 +87,30 @@ pub fn pixel_spread_angle_from_proj_inv(proj_inv: Mat4, image_height: f32) -> f3
     (2.0 * proj_inv.y_axis.y.abs() / image_height.max(1.0)).atan()
 }
 
-/// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30).
+/// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30),
+/// the same for every pixel (see [`pinhole_ray_cone_for_ray`] for off-axis pixels).
 pub fn pinhole_ray_cone(pixel_spread_angle: f32) -> RayCone {
     RayCone {
         width: 0.0,
         spread_angle: pixel_spread_angle,
+    }
+}
+
+/// Primary cone of a pinhole camera for one ray, narrower off axis (the OptiX Toolkit's per-ray
+/// pinhole cone; SPEC 1.12): width 0, spread
+/// `pixel_spread_angle * clamp(dot(direction, view_axis), 0, 1)`.
+///
+/// `direction` is the unit ray direction and `view_axis` the camera's unit viewing direction. A
+/// pixel whose ray is `theta` off the axis subtends about `cos(theta)` of the centre pixel's angle
+/// across the radial direction and `cos^2(theta)` along it; the isotropic LOD (RTG Eq. 2) follows
+/// the longer side, so this cone fits every pixel to within half a LOD level, where
+/// [`pinhole_ray_cone`] is `1 / cos(theta)` too wide. The cosine is clamped to `[0, 1]`: a ray at
+/// 90 degrees to the view axis or behind the camera (outside any pinhole's view) gets spread 0, the
+/// limit of a pixel at 90 degrees, and `|spread|` never exceeds `|pixel_spread_angle|`.
+pub fn pinhole_ray_cone_for_ray(pixel_spread_angle: f32, direction: Vec3, view_axis: Vec3) -> RayCone {
+    RayCone {
+        width: 0.0,
+        spread_angle: pixel_spread_angle * direction.dot(view_axis).clamp(0.0, 1.0),
     }
 }
 
@@ -178,12 +199,42 @@ pub fn triangle_curvature(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3, n2: 
     (edge_curvature(p0, p1, n0, n1) + edge_curvature(p1, p2, n1, n2) + edge_curvature(p2, p0, n2, n0)) / 3.0
 }
 
-/// Surface spread angle of a reflection from a curvature estimate (JCGT 2021, "optimized" form):
-/// the normal turns by about `curvature * |width| / |dot(n, d)|` across the slanted footprint, and a
-/// reflected direction turns twice as much: `beta = 2 * curvature * |width| / max(|dot(n, d)|, MIN_COS)`.
-/// Positive (diverging) on convex surfaces, negative on concave ones.
+/// The cosine of incidence seen from the side `normal` points to, `-dot(normal, direction)`,
+/// kept at least `MIN_COS` away from 0 with its sign: positive when the ray meets the side the
+/// normal points to. A cosine of exactly 0, `+0` or `-0`, becomes `+MIN_COS`.
+fn facing_cos(normal: Vec3, direction: Vec3) -> f32 {
+    let facing = -normal.dot(direction);
+    if facing.abs() < MIN_COS {
+        if facing >= 0.0 {
+            MIN_COS
+        } else {
+            -MIN_COS
+        }
+    } else {
+        facing
+    }
+}
+
+/// Surface spread angle of a reflection from a curvature estimate (JCGT 2021, "optimized" form, as
+/// Falcor's `computeSpreadAngleFromCurvatureIso` evaluates it; SPEC 1.12): across the cone's
+/// slanted footprint the normal turns by `curvature * width / dn` with `dn = -dot(normal, direction)`,
+/// and the reflected direction turns twice as much:
+/// `beta = 2 * curvature * width / dn`, `dn` kept at least `MIN_COS` away from 0 with its sign
+/// (`|dn| < MIN_COS` becomes `+-MIN_COS`; `dn = 0`, of either sign, becomes `+MIN_COS`, as if the ray
+/// met the side the normal points to).
+///
+/// - `curvature` is estimated from the mesh's stored normals ([`triangle_curvature`]), and
+///   `normal` is the shading normal interpolated from the *same* stored normals, not turned towards
+///   the ray: flipping the normals flips the sign of both `curvature` and `dn`, so `beta` does not
+///   depend on which way the mesh's normals point, and a hit on either side of a surface is right.
+///   A convex surface (its normals diverging on the side the ray comes from) spreads the cone, a
+///   concave one focuses it. Flip both or neither.
+/// - `width` is the *signed* cone width at the hit ([`width_at`]). Past a focus the width is
+///   negative (the cone has turned inside out), and a spread of the width's sign widens it. A convex
+///   mirror gives `beta` the width's sign and a concave one the opposite sign, on both sides of a
+///   focus. The reflected cone is `propagate(cone, t, beta)`.
 pub fn curvature_spread_angle(curvature: f32, width: f32, normal: Vec3, direction: Vec3) -> f32 {
-    2.0 * curvature * width.abs() / normal.dot(direction).abs().max(MIN_COS)
+    2.0 * curvature * width / facing_cos(normal, direction)
 }
 
 /// World-space footprint on the surface, slant-corrected (ray-cone tutorial, after RTG Eq. 34):

@@ -6,8 +6,9 @@
 // Ray Tracing Gems ch. 20 (Akenine-Moller et al. 2019), "JCGT 2021" is "Improved Shader and Texture
 // Level of Detail Using Ray Cones".
 //
-// width is the full footprint diameter, spread_angle the full cone angle; normals and directions are
-// unit length. Divergent cases are clamped with the RF_ constants: finite inputs give finite outputs.
+// width is the full footprint diameter, spread_angle the full cone angle, both signed; normals and
+// directions are unit length, normals as the mesh stores them (either orientation). Divergent cases
+// are clamped with the RF_ constants: finite inputs give finite outputs.
 
 #ifndef RAY_FOOTPRINT_RAY_CONE_GLSL
 #define RAY_FOOTPRINT_RAY_CONE_GLSL
@@ -81,6 +82,12 @@ RfRayCone rf_pinhole_ray_cone(float pixel_spread_angle) {
     return RfRayCone(0.0, pixel_spread_angle);
 }
 
+// Primary cone of a pinhole camera for one ray (unit direction and view axis): width 0, spread =
+// pixel spread angle * clamp(dot(direction, view_axis), 0, 1); off-axis pixels subtend less.
+RfRayCone rf_pinhole_ray_cone_for_ray(float pixel_spread_angle, vec3 direction, vec3 view_axis) {
+    return RfRayCone(0.0, pixel_spread_angle * clamp(dot(direction, view_axis), 0.0, 1.0));
+}
+
 // Primary cone of an orthographic camera view_height world units tall: width = one pixel, spread 0.
 RfRayCone rf_orthographic_ray_cone(float view_height, float image_height) {
     return RfRayCone(view_height / max(image_height, 1.0), 0.0);
@@ -139,9 +146,18 @@ float rf_triangle_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2
         + rf_edge_curvature(p2, p0, n2, n0)) / 3.0;
 }
 
-// Reflection spread from curvature (JCGT 2021): 2 k |width| / max(|n.d|, RF_MIN_COS).
+// -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
+// +RF_MIN_COS.
+float rf_facing_cos(vec3 normal, vec3 direction) {
+    float facing = -dot(normal, direction);
+    return abs(facing) < RF_MIN_COS ? (facing >= 0.0 ? RF_MIN_COS : -RF_MIN_COS) : facing;
+}
+
+// Reflection spread from curvature (JCGT 2021, Falcor's form): 2 k width / dn with the signed
+// width and dn = -n.d kept away from 0 with its sign. k from the stored normals and n interpolated
+// from the same normals (not turned towards the ray): independent of their orientation.
 float rf_curvature_spread_angle(float curvature, float width, vec3 normal, vec3 direction) {
-    return 2.0 * curvature * abs(width) / max(abs(dot(normal, direction)), RF_MIN_COS);
+    return 2.0 * curvature * width / rf_facing_cos(normal, direction);
 }
 
 // Slant-corrected world footprint: |width + spread t| / max(|n.d|, RF_MIN_COS).

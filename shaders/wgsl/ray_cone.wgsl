@@ -5,8 +5,9 @@
 // documented in src/ray_cone.rs; "RTG Eq. N" is Ray Tracing Gems ch. 20 (Akenine-Moller et al. 2019),
 // "JCGT 2021" is "Improved Shader and Texture Level of Detail Using Ray Cones".
 //
-// width is the full footprint diameter, spread_angle the full cone angle; normals and directions are
-// unit length. Divergent cases are clamped with the RF_ constants: finite inputs give finite outputs.
+// width is the full footprint diameter, spread_angle the full cone angle, both signed; normals and
+// directions are unit length, normals as the mesh stores them (either orientation). Divergent cases
+// are clamped with the RF_ constants: finite inputs give finite outputs.
 
 // Smallest |cos| between a normal and a direction used as a divisor (grazing-angle clamp).
 const RF_MIN_COS: f32 = 1.0e-4;
@@ -77,6 +78,12 @@ fn rf_pinhole_ray_cone(pixel_spread_angle: f32) -> RfRayCone {
     return RfRayCone(0.0, pixel_spread_angle);
 }
 
+// Primary cone of a pinhole camera for one ray (unit direction and view axis): width 0, spread =
+// pixel spread angle * clamp(dot(direction, view_axis), 0, 1); off-axis pixels subtend less.
+fn rf_pinhole_ray_cone_for_ray(pixel_spread_angle: f32, direction: vec3<f32>, view_axis: vec3<f32>) -> RfRayCone {
+    return RfRayCone(0.0, pixel_spread_angle * clamp(dot(direction, view_axis), 0.0, 1.0));
+}
+
 // Primary cone of an orthographic camera view_height world units tall: width = one pixel, spread 0.
 fn rf_orthographic_ray_cone(view_height: f32, image_height: f32) -> RfRayCone {
     return RfRayCone(view_height / max(image_height, 1.0), 0.0);
@@ -138,9 +145,18 @@ fn rf_triangle_curvature(
         + rf_edge_curvature(p2, p0, n2, n0)) / 3.0;
 }
 
-// Reflection spread from curvature (JCGT 2021): 2 k |width| / max(|n.d|, RF_MIN_COS).
+// -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
+// +RF_MIN_COS.
+fn rf_facing_cos(normal: vec3<f32>, direction: vec3<f32>) -> f32 {
+    let facing = -dot(normal, direction);
+    return select(facing, select(-RF_MIN_COS, RF_MIN_COS, facing >= 0.0), abs(facing) < RF_MIN_COS);
+}
+
+// Reflection spread from curvature (JCGT 2021, Falcor's form): 2 k width / dn with the signed
+// width and dn = -n.d kept away from 0 with its sign. k from the stored normals and n interpolated
+// from the same normals (not turned towards the ray): independent of their orientation.
 fn rf_curvature_spread_angle(curvature: f32, width: f32, normal: vec3<f32>, direction: vec3<f32>) -> f32 {
-    return 2.0 * curvature * abs(width) / max(abs(dot(normal, direction)), RF_MIN_COS);
+    return 2.0 * curvature * width / rf_facing_cos(normal, direction);
 }
 
 // Slant-corrected world footprint: |width + spread t| / max(|n.d|, RF_MIN_COS).

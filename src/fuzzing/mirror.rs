@@ -405,6 +405,10 @@ fn ray_cone_functions() -> Vec<MirrorFunction> {
             within(d, angle, 0.0, FRAC_PI_2, "spread angle")
         }),
         f!(RayCone, pinhole_ray_cone, |d| rc::pinhole_ray_cone(d.angle())),
+        f!(RayCone, pinhole_ray_cone_for_ray, |d| {
+            let cone = rc::pinhole_ray_cone_for_ray(d.angle(), d.unit(), d.unit());
+            within(d, cone, -3.2, 3.2, "width and spread")
+        }),
         f!(RayCone, orthographic_ray_cone, |d| rc::orthographic_ray_cone(
             d.scalar(),
             d.scalar()

@@ -96,6 +96,34 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 
+/// Error of [`rc::curvature_spread_angle`] returning `expected`: relative, two products and a
+/// division (5 ULP with the mirror's), and the rounding of `dot(normal, direction)` over the
+/// clamped `|cos|`. Where the dot product lies within its rounding of 0, the device may find the
+/// ray on the other side of the normal and return `-expected`, which is as right: 2 `|expected|`
+/// more.
+pub fn curvature_spread_angle_error(normal: Vec3, direction: Vec3, expected: f32) -> f32 {
+    let dot_rounding = dot_error(normal, direction);
+    let error = ulps(5.0, expected) + expected.abs() * dot_rounding / clamped_cos(normal, direction);
+    if normal.dot(direction).abs() <= dot_rounding {
+        error + 2.0 * expected.abs()
+    } else {
+        error
+    }
+}
+
+/// `direction`, tilted by 1e-5 towards `-normal` when it lies within the rounding of
+/// `dot(normal, direction)` of the surface plane. There either side is right, the tolerance of
+/// [`curvature_spread_angle_error`] allows either sign, and the check could not catch a wrong one;
+/// tilted, the ray meets the normal's side, still inside the `MIN_COS` clamp. The degenerate table
+/// covers rays exactly in the plane.
+fn off_the_plane(normal: Vec3, direction: Vec3) -> Vec3 {
+    if normal.dot(direction).abs() <= dot_error(normal, direction) {
+        (direction - 1.0e-5 * normal).normalize()
+    } else {
+        direction
+    }
+}
+
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);
 
@@ -171,6 +199,34 @@ pub fn pinhole_ray_cone() -> FunctionCheck<impl Args, impl Value> {
         |(spread,)| rc::pinhole_ray_cone(spread),
         // No arithmetic.
         |_, _, _| 0.0,
+    )
+}
+
+/// Arguments of `rf_pinhole_ray_cone_for_ray`: pixel spread angle, direction, view axis.
+pub type PinholeRayConeForRayArgs = (f32, Vec3, Vec3);
+
+/// `rf_pinhole_ray_cone_for_ray` (also used by the ray-tracing pipeline's test).
+pub fn pinhole_ray_cone_for_ray() -> FunctionCheck<PinholeRayConeForRayArgs, RayCone> {
+    per_component(
+        "pinhole_ray_cone_for_ray",
+        // A view axis and a ray from on the axis to 90 degrees off it, or behind the camera.
+        || {
+            (angle(), normal_and_direction(), any::<bool>())
+                .prop_map(|(spread, (normal, direction), behind)| {
+                    (spread, direction, if behind { normal } else { -normal })
+                })
+                .boxed()
+        },
+        |(spread, direction, view_axis)| rc::pinhole_ray_cone_for_ray(spread, direction, view_axis),
+        // Width: exact. Spread: the dot product's rounding, through the clamp (which cannot widen
+        // it), times |spread|, and the product's rounding on the device and in the mirror.
+        |&(spread, direction, view_axis), index, expected| {
+            if index == 0 {
+                0.0
+            } else {
+                spread.abs() * dot_error(direction, view_axis) + ulps(2.0, expected)
+            }
+        },
     )
 }
 
@@ -338,19 +394,20 @@ pub fn triangle_curvature() -> FunctionCheck<impl Args, impl Value> {
 pub fn curvature_spread_angle() -> FunctionCheck<impl Args, impl Value> {
     per_component(
         "curvature_spread_angle",
+        // Signed curvatures and widths; the ray meets the normal's side or the other one, never
+        // within the dot product's rounding of the surface plane (see `off_the_plane`).
         || {
-            (scalar(), scalar(), normal_and_direction())
-                .prop_map(|(k, w, (n, d))| (k, w, n, d))
+            (scalar(), scalar(), normal_and_direction(), any::<bool>())
+                .prop_map(|(k, w, (n, d), behind)| {
+                    let d = off_the_plane(n, d);
+                    (k, w, if behind { -n } else { n }, d)
+                })
                 .boxed()
         },
         |(curvature, width, normal, direction)| {
             rc::curvature_spread_angle(curvature, width, normal, direction)
         },
-        // Relative: two products and a division (5 ULP), plus the dot's rounding over |cos|.
-        |&(_, _, normal, direction), _, expected| {
-            ulps(5.0, expected)
-                + expected.abs() * dot_error(normal, direction) / clamped_cos(normal, direction)
-        },
+        |&(_, _, normal, direction), _, expected| curvature_spread_angle_error(normal, direction, expected),
     )
 }
 
@@ -510,6 +567,7 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(pixel_spread_angle_small()),
         Box::new(pixel_spread_angle_from_proj_inv()),
         Box::new(pinhole_ray_cone()),
+        Box::new(pinhole_ray_cone_for_ray()),
         Box::new(orthographic_ray_cone()),
         Box::new(thin_lens_ray_cone()),
         Box::new(width_at()),

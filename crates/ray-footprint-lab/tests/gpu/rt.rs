@@ -18,7 +18,7 @@ use ray_footprint::rust_layout;
 use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks as suite;
-use ray_footprint_lab::checks::ray_cone::{area_corners, edge_curvature_error};
+use ray_footprint_lab::checks::ray_cone::{area_corners, curvature_spread_angle_error, edge_curvature_error};
 use ray_footprint_lab::rt::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
 use ray_footprint_lab::rt::{
     open_device, ray_query_source, Camera, Error, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR,
@@ -312,10 +312,15 @@ impl Stats {
 /// scene and every value is recomputed by the mirror from the shader's own inputs.
 fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelRecord, stats: &mut Stats) {
     let push = &inputs.push;
-    let cone = rc::pinhole_ray_cone(push.cone.pixel_spread_angle);
-    assert_eq!(
-        record.cone, cone,
-        "the primary cone is the push constant's, bit for bit"
+    // The primary cone: the push constant's spread narrowed by the ray's cosine to the view axis.
+    let cone_args = (push.cone.pixel_spread_angle, record.direction, push.forward);
+    let cone_check = suite::ray_cone::pinhole_ray_cone_for_ray();
+    compare_with(
+        stats,
+        "primary cone",
+        cone_check,
+        (cone_args, record.cone),
+        record,
     );
     if record.hit == 0 {
         assert_eq!(record.diff, RtDiffRecord::default(), "a miss measures nothing");
@@ -629,10 +634,10 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
         r,
     );
 
-    // curvature_spread_angle: two products and a division (5 ULP), and the dot product's
-    // rounding over |cos| as a relative error.
+    // curvature_spread_angle: the suite's own tolerance, on the shader's curvature, width and
+    // stored normal.
     let spread = rc::curvature_spread_angle(r.curvature, r.width, n, d);
-    let spread_error = ulps(5.0, spread) + spread.abs() * dot_error(n, d) / cos;
+    let spread_error = curvature_spread_angle_error(n, d, spread);
     stats.compare("curvature_spread", r.curvature_spread, spread, spread_error, r);
 
     // propagate: the width as width_at; the spread is one correctly rounded addition.

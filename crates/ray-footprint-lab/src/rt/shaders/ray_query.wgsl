@@ -180,7 +180,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let direction = rt_primary_direction(id.xy);
-    let cone = rf_pinhole_ray_cone(pc.cone.pixel_spread_angle);
+    let cone = rf_pinhole_ray_cone_for_ray(pc.cone.pixel_spread_angle, direction, pc.forward);
     var query: ray_query;
     rayQueryInitialize(&query, rt_scene, RayDesc(RAY_FLAG_FORCE_OPAQUE, 0xffu, 0.0, RT_MAX_DISTANCE, pc.eye, direction));
     while rayQueryProceed(&query) {}

@@ -194,6 +194,51 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
         }),
         Box::new(Table {
             module: Module::RayCone,
+            function: "pinhole_ray_cone_for_ray",
+            mirror: |(alpha, d, axis)| rc::pinhole_ray_cone_for_ray(alpha, d, axis),
+            // One product; the dot product is exact at these inputs.
+            tolerance: |_, e| ulps(1.0, e),
+            rows: vec![
+                value(
+                    "ray along the view axis",
+                    "(0, alpha)",
+                    (0.01, head_on, head_on),
+                    vec![0.0, 0.01],
+                ),
+                value(
+                    "ray at 90 degrees to the view axis",
+                    "(0, 0)",
+                    (0.01, x, head_on),
+                    vec![0.0, 0.0],
+                ),
+                same(
+                    "ray behind the camera (dot(d, axis) = -1)",
+                    "as at 90 degrees: the cosine is clamped to [0, 1]",
+                    (0.01, z, head_on),
+                    (0.01, x, head_on),
+                ),
+                same(
+                    "direction and axis of length 2 (dot = 4)",
+                    "as along the axis: never wider than alpha",
+                    (0.01, 2.0 * head_on, 2.0 * head_on),
+                    (0.01, head_on, head_on),
+                ),
+                value(
+                    "zero direction",
+                    "(0, 0)",
+                    (0.01, Vec3::ZERO, head_on),
+                    vec![0.0, 0.0],
+                ),
+                mirror(
+                    "NaN in (direction)",
+                    "CPU: (0, NaN) (Rust's `clamp` keeps NaN)",
+                    (0.01, Vec3::new(NAN, 0.0, -1.0), head_on),
+                    vec![0.0, NAN],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
             function: "orthographic_ray_cone",
             mirror: |(view_height, h)| rc::orthographic_ray_cone(view_height, h),
             tolerance: |_, e| ulps(2.5, e),
@@ -357,26 +402,52 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
             module: Module::RayCone,
             function: "curvature_spread_angle",
             mirror: |(k, w, n, d)| rc::curvature_spread_angle(k, w, n, d),
+            // Two products and a division (5 ULP); dn is exact here (+-1 or clamped).
             tolerance: |_, e| ulps(5.0, e),
             rows: vec![
                 value(
-                    "ray in the surface plane (dot(n, d) = 0)",
-                    "2 k |width| / MIN_COS",
+                    "ray in the surface plane (dot(n, d) = +0)",
+                    "2 k width / MIN_COS: dn = 0 counts as the normal's side",
                     (0.5, 0.01, z, in_plane),
                     vec![2.0 * 0.5 * 0.01 / MIN_COS],
                 ),
                 same(
-                    "grazing (|dot(n, d)| = 1e-6)",
-                    "as dot(n, d) = 0 (clamped to MIN_COS)",
+                    "ray in the surface plane (dot(n, d) = -0)",
+                    "as dot(n, d) = +0: either zero gives dn = +MIN_COS",
+                    (0.5, 0.01, z, Vec3::new(-1.0, -0.0, -0.0)),
+                    (0.5, 0.01, z, in_plane),
+                ),
+                same(
+                    "grazing on the normal's side (dot(n, d) = -1e-6)",
+                    "as dot(n, d) = 0 (dn clamped to MIN_COS)",
                     (0.5, 0.01, z, grazing),
                     (0.5, 0.01, z, in_plane),
                 ),
                 value(
+                    "grazing behind the normal (dot(n, d) = +1e-6)",
+                    "-2 k width / MIN_COS (dn clamped to -MIN_COS, its sign kept)",
+                    (0.5, 0.01, z, direction_at(-1.0e-6)),
+                    vec![-2.0 * 0.5 * 0.01 / MIN_COS],
+                ),
+                value(
                     "head-on (d = -n)",
-                    "2 k |width|",
+                    "2 k width",
                     (0.5, 0.01, z, head_on),
                     vec![2.0 * 0.5 * 0.01],
                 ),
+                value(
+                    "head-on from behind the normal (d = n)",
+                    "-2 k width: the surface's normals point away from the ray",
+                    (0.5, 0.01, z, z),
+                    vec![-2.0 * 0.5 * 0.01],
+                ),
+                value(
+                    "negative width (past a focus)",
+                    "2 k width, negative: widens the inverted cone on a convex mirror",
+                    (0.5, -0.01, z, head_on),
+                    vec![-2.0 * 0.5 * 0.01],
+                ),
+                value("zero width (at a focus)", "0", (0.5, 0.0, z, head_on), vec![0.0]),
             ],
         }),
         Box::new(Table {
