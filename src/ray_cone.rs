@@ -310,11 +310,21 @@ fn normal_tilt(width: f32, facing_spread: f32) -> f32 {
     signed_half * facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD)
 }
 
-/// `(sin, cos)` of a refracted angle whose sine is `sine` by Snell's law: `(s, sqrt(1 - s^2))` with
-/// `s = clamp(sine, -1, 1)`. Past the critical angle the ray leaves along the surface (`s = +-1`).
-fn refracted_sin_cos(sine: f32) -> Vec2 {
-    let s = sine.clamp(-1.0, 1.0);
-    Vec2::new(s, (1.0 - s * s).sqrt())
+/// `(sin, cos)` of the angle `i + side * q` from those of `i` and `q`.
+fn boundary_incidence(incidence: Vec2, local: Vec2, side: f32) -> Vec2 {
+    Vec2::new(
+        incidence.x * local.y + side * incidence.y * local.x,
+        incidence.y * local.y - side * incidence.x * local.x,
+    )
+}
+
+/// `(sin, cos)` of the angle refracted by Snell's law from the incidence `(sin phi, cos phi)`:
+/// `clamp(eta sin phi, -1, 1)` and `sqrt(max(cos^2 phi + ((1 - eta) sin phi) ((1 + eta) sin phi), 0))`,
+/// which is `sqrt(1 - eta^2 sin^2 phi)` evaluated from `cos phi`, so that it keeps its precision
+/// near grazing. Past the critical angle the ray leaves along the surface: `(+-1, 0)`.
+fn refracted_sin_cos(incidence: Vec2, eta: f32) -> Vec2 {
+    let cos2 = incidence.y * incidence.y + ((1.0 - eta) * incidence.x) * ((1.0 + eta) * incidence.x);
+    Vec2::new((eta * incidence.x).clamp(-1.0, 1.0), cos2.max(0.0).sqrt())
 }
 
 /// Signed distance along the surface from the hit to where the boundary ray on `side` (+1 upper,
@@ -338,20 +348,31 @@ fn boundary_offset(hit: f32, side: f32, refracted: Vec2, tilt: Vec2, transmitted
     hit * cos_rho / (cos_rho * transmitted.y + sin_rho * transmitted.x).max(MIN_COS)
 }
 
+/// `s_u - s_l`, the difference of the sines of the refracted boundaries, from the boundaries'
+/// incidences `upper`, `lower` (`(sin, cos)` of `i +- q`): `2 eta cos i sin q`, exact, while
+/// neither `eta sin(i +- q)` exceeds 1; else the difference of the clamped sines.
+fn refracted_sine_gap(eta: f32, incidence: Vec2, local: Vec2, upper: Vec2, lower: Vec2) -> f32 {
+    let (upper_sine, lower_sine) = (eta * upper.x, eta * lower.x);
+    if upper_sine.abs() <= 1.0 && lower_sine.abs() <= 1.0 {
+        2.0 * eta * incidence.y * local.x
+    } else {
+        upper_sine.clamp(-1.0, 1.0) - lower_sine.clamp(-1.0, 1.0)
+    }
+}
+
 /// Angle from the lower to the upper refracted boundary, each measured from its own normal:
 /// `atan2(sin, cos)` of their difference, with `cos = c_u c_l + s_u s_l` and
-/// `sin = s_u c_l - s_l c_u = (s_u - s_l) (1 + cos) / max(c_u + c_l, MIN_MAGNITUDE)` (the same
-/// value without cancellation for nearly equal angles). The sines are `along +- across` (Snell,
-/// clamped), so `s_u - s_l = 2 * across` while neither is clamped.
-fn refracted_angle_between(along: f32, across: f32, upper: Vec2, lower: Vec2) -> f32 {
-    let both_inside = (along + across).abs() <= 1.0 && (along - across).abs() <= 1.0;
-    let sine_gap = if both_inside {
-        2.0 * across
-    } else {
-        upper.x - lower.x
-    };
+/// `sin = s_u c_l - s_l c_u = (s_u - s_l) (1 + cos) / (c_u + c_l)`, the same value without
+/// cancellation for nearly equal angles (`sine_gap` is `s_u - s_l`, [`refracted_sine_gap`]). The
+/// divisor is kept at or above its lower bound `sqrt(|(s_u - s_l) (s_u + s_l)|)` (from
+/// `c_l^2 - c_u^2 = s_u^2 - s_l^2`), which rounding can undercut when both boundaries refract at
+/// their critical angle, and at or above `MIN_MAGNITUDE`.
+fn refracted_angle_between(sine_gap: f32, upper: Vec2, lower: Vec2) -> f32 {
     let cos_between = upper.y * lower.y + upper.x * lower.x;
-    let sin_between = sine_gap * (1.0 + cos_between) / (upper.y + lower.y).max(MIN_MAGNITUDE);
+    let cos_sum = (upper.y + lower.y)
+        .max((sine_gap * (upper.x + lower.x)).abs().sqrt())
+        .max(MIN_MAGNITUDE);
+    let sin_between = sine_gap * (1.0 + cos_between) / cos_sum;
     sin_between.atan2(cos_between)
 }
 
@@ -410,14 +431,15 @@ pub fn refract_ray_cone(
             total_internal_reflection: true,
         };
     }
-    let transmitted = Vec2::new(sin_transmitted, (1.0 - sin_transmitted * sin_transmitted).sqrt());
+    let transmitted = refracted_sin_cos(incidence, index);
     let half_spread = refraction_half_spread(cone.spread_angle, incidence);
     let tilt = normal_tilt(cone.width, facing_spread);
     let local = angle_sin_cos(half_spread + tilt);
-    let along = index * incidence.x * local.y;
-    let across = index * incidence.y * local.x;
-    let upper = refracted_sin_cos(along + across);
-    let lower = refracted_sin_cos(along - across);
+    let upper_incidence = boundary_incidence(incidence, local, 1.0);
+    let lower_incidence = boundary_incidence(incidence, local, -1.0);
+    let upper = refracted_sin_cos(upper_incidence, index);
+    let lower = refracted_sin_cos(lower_incidence, index);
+    let sine_gap = refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
     let half_sin_cos = angle_sin_cos(half_spread);
     let tilt_sin_cos = angle_sin_cos(tilt);
     let upper_hit = boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
@@ -426,7 +448,7 @@ pub fn refract_ray_cone(
         cone: RayCone {
             width: boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
                 - boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
-            spread_angle: refracted_angle_between(along, across, upper, lower) - 2.0 * tilt,
+            spread_angle: refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt,
         },
         total_internal_reflection: false,
     }

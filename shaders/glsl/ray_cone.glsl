@@ -236,10 +236,19 @@ float rf_normal_tilt(float width, float facing_spread) {
     return signed_half * clamp(facing_spread, -RF_MAX_NORMAL_SPREAD, RF_MAX_NORMAL_SPREAD);
 }
 
-// (sin, cos) of a refracted angle with sine `sine` (Snell), clamped to [-1, 1] past the critical angle.
-vec2 rf_refracted_sin_cos(float sine) {
-    float s = clamp(sine, -1.0, 1.0);
-    return vec2(s, sqrt(1.0 - s * s));
+// (sin, cos) of the angle i + side q from those of i and q.
+vec2 rf_boundary_incidence(vec2 incidence, vec2 local, float side) {
+    return vec2(
+        incidence.x * local.y + side * incidence.y * local.x,
+        incidence.y * local.y - side * incidence.x * local.x
+    );
+}
+
+// (sin, cos) refracted by Snell's law from (sin phi, cos phi): clamp(eta sin phi, -1, 1) and
+// sqrt(max(cos^2 phi + ((1 - eta) sin phi) ((1 + eta) sin phi), 0)); (+-1, 0) past the critical angle.
+vec2 rf_refracted_sin_cos(vec2 incidence, float eta) {
+    float cos2 = incidence.y * incidence.y + ((1.0 - eta) * incidence.x) * ((1.0 + eta) * incidence.x);
+    return vec2(clamp(eta * incidence.x, -1.0, 1.0), sqrt(max(cos2, 0.0)));
 }
 
 // Where the boundary ray on `side` lands: side (width / 2) cos(h) / max(cos(i + side h), RF_MIN_COS).
@@ -256,12 +265,24 @@ float rf_boundary_offset(float hit, float side, vec2 refracted, vec2 tilt, vec2 
     return hit * cos_rho / max(cos_rho * transmitted.y + sin_rho * transmitted.x, RF_MIN_COS);
 }
 
-// Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin without cancellation.
-float rf_refracted_angle_between(float along, float across, vec2 upper, vec2 lower) {
-    bool both_inside = abs(along + across) <= 1.0 && abs(along - across) <= 1.0;
-    float sine_gap = both_inside ? 2.0 * across : upper.x - lower.x;
+// s_u - s_l of the refracted boundaries from their incidences (sin, cos of i +- q): 2 eta cos i sin q
+// (exact) while neither eta sin(i +- q) exceeds 1, else the difference of the clamped sines.
+float rf_refracted_sine_gap(float eta, vec2 incidence, vec2 local, vec2 upper, vec2 lower) {
+    float upper_sine = eta * upper.x;
+    float lower_sine = eta * lower.x;
+    if (abs(upper_sine) <= 1.0 && abs(lower_sine) <= 1.0) {
+        return 2.0 * eta * incidence.y * local.x;
+    }
+    return clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+}
+
+// Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin = sine_gap (1 + cos) /
+// (c_u + c_l) without cancellation; the divisor kept >= sqrt(|sine_gap (s_u + s_l)|) (its lower bound)
+// and >= RF_MIN_MAGNITUDE.
+float rf_refracted_angle_between(float sine_gap, vec2 upper, vec2 lower) {
     float cos_between = upper.y * lower.y + upper.x * lower.x;
-    float sin_between = sine_gap * (1.0 + cos_between) / max(upper.y + lower.y, RF_MIN_MAGNITUDE);
+    float cos_sum = max(max(upper.y + lower.y, sqrt(abs(sine_gap * (upper.x + lower.x)))), RF_MIN_MAGNITUDE);
+    float sin_between = sine_gap * (1.0 + cos_between) / cos_sum;
     return atan(sin_between, cos_between);
 }
 
@@ -279,14 +300,15 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, vec3 normal, vec3 directi
     if (sin_transmitted > 1.0) {
         return RfRefractedRayCone(RfRayCone(cone.width, cone.spread_angle + 2.0 * facing_spread), true);
     }
-    vec2 transmitted = vec2(sin_transmitted, sqrt(1.0 - sin_transmitted * sin_transmitted));
+    vec2 transmitted = rf_refracted_sin_cos(incidence, index);
     float half_spread = rf_refraction_half_spread(cone.spread_angle, incidence);
     float tilt = rf_normal_tilt(cone.width, facing_spread);
     vec2 local = rf_angle_sin_cos(half_spread + tilt);
-    float along = index * incidence.x * local.y;
-    float across = index * incidence.y * local.x;
-    vec2 upper = rf_refracted_sin_cos(along + across);
-    vec2 lower = rf_refracted_sin_cos(along - across);
+    vec2 upper_incidence = rf_boundary_incidence(incidence, local, 1.0);
+    vec2 lower_incidence = rf_boundary_incidence(incidence, local, -1.0);
+    vec2 upper = rf_refracted_sin_cos(upper_incidence, index);
+    vec2 lower = rf_refracted_sin_cos(lower_incidence, index);
+    float sine_gap = rf_refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
     vec2 half_sin_cos = rf_angle_sin_cos(half_spread);
     vec2 tilt_sin_cos = rf_angle_sin_cos(tilt);
     float upper_hit = rf_boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
@@ -295,7 +317,7 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, vec3 normal, vec3 directi
         RfRayCone(
             rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
                 - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
-            rf_refracted_angle_between(along, across, upper, lower) - 2.0 * tilt
+            rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt
         ),
         false
     );

@@ -243,10 +243,19 @@ fn rf_normal_tilt(width: f32, facing_spread: f32) -> f32 {
     return signed_half * clamp(facing_spread, -RF_MAX_NORMAL_SPREAD, RF_MAX_NORMAL_SPREAD);
 }
 
-// (sin, cos) of a refracted angle with sine `sine` (Snell), clamped to [-1, 1] past the critical angle.
-fn rf_refracted_sin_cos(sine: f32) -> vec2<f32> {
-    let s = clamp(sine, -1.0, 1.0);
-    return vec2<f32>(s, sqrt(1.0 - s * s));
+// (sin, cos) of the angle i + side q from those of i and q.
+fn rf_boundary_incidence(incidence: vec2<f32>, local: vec2<f32>, side: f32) -> vec2<f32> {
+    return vec2<f32>(
+        incidence.x * local.y + side * incidence.y * local.x,
+        incidence.y * local.y - side * incidence.x * local.x,
+    );
+}
+
+// (sin, cos) refracted by Snell's law from (sin phi, cos phi): clamp(eta sin phi, -1, 1) and
+// sqrt(max(cos^2 phi + ((1 - eta) sin phi) ((1 + eta) sin phi), 0)); (+-1, 0) past the critical angle.
+fn rf_refracted_sin_cos(incidence: vec2<f32>, eta: f32) -> vec2<f32> {
+    let cos2 = incidence.y * incidence.y + ((1.0 - eta) * incidence.x) * ((1.0 + eta) * incidence.x);
+    return vec2<f32>(clamp(eta * incidence.x, -1.0, 1.0), sqrt(max(cos2, 0.0)));
 }
 
 // Where the boundary ray on `side` lands: side (width / 2) cos(h) / max(cos(i + side h), RF_MIN_COS).
@@ -265,12 +274,26 @@ fn rf_boundary_offset(
     return hit * cos_rho / max(cos_rho * transmitted.y + sin_rho * transmitted.x, RF_MIN_COS);
 }
 
-// Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin without cancellation.
-fn rf_refracted_angle_between(along: f32, across: f32, upper: vec2<f32>, lower: vec2<f32>) -> f32 {
-    let both_inside = abs(along + across) <= 1.0 && abs(along - across) <= 1.0;
-    let sine_gap = select(upper.x - lower.x, 2.0 * across, both_inside);
+// s_u - s_l of the refracted boundaries from their incidences (sin, cos of i +- q): 2 eta cos i sin q
+// (exact) while neither eta sin(i +- q) exceeds 1, else the difference of the clamped sines.
+fn rf_refracted_sine_gap(
+    eta: f32, incidence: vec2<f32>, local: vec2<f32>, upper: vec2<f32>, lower: vec2<f32>,
+) -> f32 {
+    let upper_sine = eta * upper.x;
+    let lower_sine = eta * lower.x;
+    if abs(upper_sine) <= 1.0 && abs(lower_sine) <= 1.0 {
+        return 2.0 * eta * incidence.y * local.x;
+    }
+    return clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+}
+
+// Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin = sine_gap (1 + cos) /
+// (c_u + c_l) without cancellation; the divisor kept >= sqrt(|sine_gap (s_u + s_l)|) (its lower bound)
+// and >= RF_MIN_MAGNITUDE.
+fn rf_refracted_angle_between(sine_gap: f32, upper: vec2<f32>, lower: vec2<f32>) -> f32 {
     let cos_between = upper.y * lower.y + upper.x * lower.x;
-    let sin_between = sine_gap * (1.0 + cos_between) / max(upper.y + lower.y, RF_MIN_MAGNITUDE);
+    let cos_sum = max(max(upper.y + lower.y, sqrt(abs(sine_gap * (upper.x + lower.x)))), RF_MIN_MAGNITUDE);
+    let sin_between = sine_gap * (1.0 + cos_between) / cos_sum;
     return atan2(sin_between, cos_between);
 }
 
@@ -289,14 +312,15 @@ fn rf_refract_ray_cone(
     if sin_transmitted > 1.0 {
         return RfRefractedRayCone(RfRayCone(cone.width, cone.spread_angle + 2.0 * facing_spread), true);
     }
-    let transmitted = vec2<f32>(sin_transmitted, sqrt(1.0 - sin_transmitted * sin_transmitted));
+    let transmitted = rf_refracted_sin_cos(incidence, index);
     let half_spread = rf_refraction_half_spread(cone.spread_angle, incidence);
     let tilt = rf_normal_tilt(cone.width, facing_spread);
     let local = rf_angle_sin_cos(half_spread + tilt);
-    let along = index * incidence.x * local.y;
-    let across = index * incidence.y * local.x;
-    let upper = rf_refracted_sin_cos(along + across);
-    let lower = rf_refracted_sin_cos(along - across);
+    let upper_incidence = rf_boundary_incidence(incidence, local, 1.0);
+    let lower_incidence = rf_boundary_incidence(incidence, local, -1.0);
+    let upper = rf_refracted_sin_cos(upper_incidence, index);
+    let lower = rf_refracted_sin_cos(lower_incidence, index);
+    let sine_gap = rf_refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
     let half_sin_cos = rf_angle_sin_cos(half_spread);
     let tilt_sin_cos = rf_angle_sin_cos(tilt);
     let upper_hit = rf_boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
@@ -305,7 +329,7 @@ fn rf_refract_ray_cone(
         RfRayCone(
             rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
                 - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
-            rf_refracted_angle_between(along, across, upper, lower) - 2.0 * tilt,
+            rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt,
         ),
         false,
     );
