@@ -3,9 +3,13 @@
 
 use super::{Degenerate, Expect, Row, Table};
 use glam::{DVec3, Mat4, Vec2, Vec3};
+use ray_footprint::gpu::suite::ray_cone as cone_suite;
 use ray_footprint::gpu::tolerance::{log2_error, tan_error, ulps};
 use ray_footprint::gpu::GpuValue;
-use ray_footprint::ray_cone::{self as rc, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{
+    self as rc, RayCone, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS, MIN_MAGNITUDE,
+    MIN_ROUGHNESS_DENOMINATOR,
+};
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, RayDiff, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
 };
@@ -79,6 +83,7 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
     let proj_inv = glam::camera::rh::proj::vulkan::perspective(1.0, 1.5, 0.1, 100.0).inverse();
     let (x, z) = (Vec3::X, Vec3::Z);
     let (head_on, in_plane, grazing) = (Vec3::NEG_Z, Vec3::X, direction_at(1.0e-6));
+    let thirty_degrees = Vec3::new(0.5, 0.0, -0.866_025_4);
     let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
     let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
     let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
@@ -608,6 +613,90 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
                     (NAN, 1024.0),
                     vec![MIN_MAGNITUDE.log2()],
                 ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
+            function: "refract_ray_cone",
+            mirror: |(c, n, d, beta, eta)| rc::refract_ray_cone(c, n, d, beta, eta),
+            // The agreement check's enclosure, widest over the three components.
+            tolerance: |a, _| {
+                let check = cone_suite::refract_ray_cone();
+                (0..3).map(|i| (check.tolerance)(a, i, 0.0)).fold(0.0, f32::max)
+            },
+            rows: vec![
+                value(
+                    "normal incidence, flat, no spread (eta 1.5)",
+                    "(width, 0), not reflected",
+                    (cone(0.5, 0.0), z, head_on, 0.0, 1.5),
+                    vec![0.5, 0.0, 0.0],
+                ),
+                value(
+                    "zero cone",
+                    "zero cone",
+                    (cone(0.0, 0.0), z, thirty_degrees, 0.0, 1.5),
+                    vec![0.0, 0.0, 0.0],
+                ),
+                value(
+                    "central ray past the critical angle (sin i = 0.8, eta 1.5)",
+                    "the reflected cone (width, spread + 2 beta), flag set",
+                    (cone(0.25, 0.125), z, Vec3::new(0.8, 0.0, -0.6), 0.0625, 1.5),
+                    vec![0.25, 0.25, 1.0],
+                ),
+                same(
+                    "normal facing away from the ray (dot(n, d) > 0)",
+                    "as the flipped normal with the negated normal spread",
+                    (cone(0.01, 0.002), -z, thirty_degrees, 0.01, 1.5),
+                    (cone(0.01, 0.002), z, thirty_degrees, -0.01, 1.5),
+                ),
+                same(
+                    "grazing (|dot(n, d)| = 1e-6), eta 0.5",
+                    "as a direction in the surface plane: both boundary rays land at |cos| = MIN_COS",
+                    (cone(0.01, 0.002), z, grazing, 0.0, 0.5),
+                    (cone(0.01, 0.002), z, in_plane, 0.0, 0.5),
+                ),
+                same(
+                    "spread wider than the surface allows (3.5 at normal incidence)",
+                    "as spread 2 MAX_INCIDENCE_ANGLE (both boundary rays graze)",
+                    (cone(0.01, 3.5), z, head_on, 0.0, 1.5),
+                    (cone(0.01, 2.0 * MAX_INCIDENCE_ANGLE), z, head_on, 0.0, 1.5),
+                ),
+                same(
+                    "normal spread 10",
+                    "as MAX_NORMAL_SPREAD",
+                    (cone(0.01, 0.002), z, thirty_degrees, 10.0, 1.5),
+                    (cone(0.01, 0.002), z, thirty_degrees, MAX_NORMAL_SPREAD, 1.5),
+                ),
+                same(
+                    "negative eta",
+                    "as eta 0",
+                    (cone(0.01, 0.002), z, thirty_degrees, 0.0, -2.0),
+                    (cone(0.01, 0.002), z, thirty_degrees, 0.0, 0.0),
+                ),
+                same(
+                    "zero direction",
+                    "as normal incidence (d = -n)",
+                    (cone(0.5, 0.01), z, Vec3::ZERO, 0.0, 1.5),
+                    (cone(0.5, 0.01), z, head_on, 0.0, 1.5),
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
+            function: "roughness_spread_angle",
+            mirror: |(r,)| rc::roughness_spread_angle(r),
+            // The agreement check's enclosure.
+            tolerance: |a, e| (cone_suite::roughness_spread_angle().tolerance)(a, 0, e),
+            rows: vec![
+                value("roughness 0", "0", (0.0,), vec![0.0]),
+                value(
+                    "roughness 1",
+                    "2 sqrt(0.5 / MIN_ROUGHNESS_DENOMINATOR), about 141.4",
+                    (1.0,),
+                    vec![2.0 * (0.5 / MIN_ROUGHNESS_DENOMINATOR).sqrt()],
+                ),
+                same("negative roughness", "as roughness 0", (-0.5,), (0.0,)),
+                same("roughness 2", "as roughness 1", (2.0,), (1.0,)),
             ],
         }),
     ]

@@ -8,8 +8,15 @@ use crate::gpu::strategy::{
     angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle,
     uv_triangle, vec3,
 };
-use crate::gpu::tolerance::{atan_error, dot_error, log2_error, tan_error, ulps, ULP};
-use crate::ray_cone::{self as rc, PackedRayCone, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use crate::gpu::suite::ray_diff::bound::{v3, F32, I, V, V2};
+use crate::gpu::tolerance::{
+    atan_error, dot_error, log2_error, tan_error, ulps, ATAN_ULPS, SIN_COS_ERROR, ULP,
+};
+use crate::gpu::value::{GpuValue, ShaderType, StructType, RAY_CONE};
+use crate::ray_cone::{
+    self as rc, PackedRayCone, RayCone, RefractedRayCone, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD,
+    MIN_COS, MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
+};
 use crate::shaders::Module;
 use glam::{Mat4, Vec2, Vec3, Vec3Swizzles};
 use proptest::prelude::*;
@@ -94,6 +101,323 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
     let edge = p_j - p_i;
     dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
+}
+
+// ---------------------------------------------------------------------------------------------
+// Refraction and roughness: enclosures (`ray_diff::bound`, same order of operations as
+// src/ray_cone.rs), since these chain dozens of operations
+// ---------------------------------------------------------------------------------------------
+
+/// `RfRefractedRayCone`.
+pub const REFRACTED_RAY_CONE: StructType = StructType {
+    name: "RfRefractedRayCone",
+    fields: &[
+        ("cone", ShaderType::Struct(&RAY_CONE)),
+        ("total_internal_reflection", ShaderType::Bool),
+    ],
+};
+
+/// A struct with a bool: written field by field.
+impl GpuValue for RefractedRayCone {
+    const TYPE: ShaderType = ShaderType::Struct(&REFRACTED_RAY_CONE);
+    fn write(&self, words: &mut Vec<u32>) {
+        self.cone.write(words);
+        self.total_internal_reflection.write(words);
+    }
+    fn read(words: &mut &[u32]) -> Self {
+        let cone = RayCone::read(words);
+        RefractedRayCone {
+            cone,
+            total_internal_reflection: bool::read(words),
+        }
+    }
+    fn components(&self, out: &mut Vec<f32>) {
+        self.cone.components(out);
+        self.total_internal_reflection.components(out);
+    }
+    fn is_finite(&self) -> bool {
+        self.cone.is_finite()
+    }
+}
+
+/// `[lo, hi]` in f32 arithmetic.
+fn interval(lo: f64, hi: f64) -> I {
+    I { lo, hi, p: F32 }
+}
+
+/// `sin` over an interval whose ends lie in `[-pi, pi]` (where Vulkan bounds it): the exact range
+/// (the ends, and +-1 where `+-pi / 2` lies inside), widened by the device's absolute error 2^-11
+/// plus the mirror's ULP.
+fn b_sin(x: I) -> I {
+    use std::f64::consts::FRAC_PI_2;
+    let (mut lo, mut hi) = (x.lo.sin().min(x.hi.sin()), x.lo.sin().max(x.hi.sin()));
+    if x.lo <= FRAC_PI_2 && FRAC_PI_2 <= x.hi {
+        hi = 1.0;
+    }
+    if x.lo <= -FRAC_PI_2 && -FRAC_PI_2 <= x.hi {
+        lo = -1.0;
+    }
+    let error = f64::from(SIN_COS_ERROR) + f64::from(ULP);
+    interval(lo - error, hi + error)
+}
+
+/// `cos` over an interval whose ends lie in `[-pi, pi]`: the exact range (the ends, and 1 where 0
+/// lies inside), widened as [`b_sin`].
+fn b_cos(x: I) -> I {
+    let (lo, mut hi) = (x.lo.cos().min(x.hi.cos()), x.lo.cos().max(x.hi.cos()));
+    if x.lo <= 0.0 && 0.0 <= x.hi {
+        hi = 1.0;
+    }
+    let error = f64::from(SIN_COS_ERROR) + f64::from(ULP);
+    interval(lo - error, hi + error)
+}
+
+/// `(sin, cos)` of an interval.
+fn b_angle_sin_cos(angle: I) -> V2 {
+    V([b_sin(angle), b_cos(angle)])
+}
+
+/// `atan2(y, x)`: every angle of the box `y x x`, i.e. `[-pi, pi]` when the box holds the origin or
+/// crosses the negative x axis, else the corners' range; widened by the device's 4096 ULP and the
+/// mirror's one.
+fn b_atan2(y: I, x: I) -> I {
+    use std::f64::consts::PI;
+    let crosses_cut = x.lo < 0.0 && y.lo <= 0.0 && y.hi >= 0.0;
+    let (lo, hi) = if crosses_cut {
+        (-PI, PI)
+    } else {
+        let corners = [
+            y.lo.atan2(x.lo),
+            y.lo.atan2(x.hi),
+            y.hi.atan2(x.lo),
+            y.hi.atan2(x.hi),
+        ];
+        (
+            corners.iter().copied().fold(f64::INFINITY, f64::min),
+            corners.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        )
+    };
+    interval(lo, hi).round(f64::from(ATAN_ULPS) + 1.0)
+}
+
+/// The part of `x` at or above `floor` (the values a branch taken only there can see).
+fn at_least(x: I, floor: f64) -> I {
+    I {
+        lo: x.lo.max(floor),
+        hi: x.hi.max(floor),
+        ..x
+    }
+}
+
+/// `then` where `condition` is certainly true, `otherwise` where certainly false, and the hull of
+/// both component by component where the interval leaves it open.
+fn b_select(
+    certainly: bool,
+    possibly: bool,
+    then: impl Fn() -> Vec<I>,
+    otherwise: impl Fn() -> Vec<I>,
+) -> Vec<I> {
+    match (certainly, possibly) {
+        (true, _) => then(),
+        (false, false) => otherwise(),
+        (false, true) => then()
+            .into_iter()
+            .zip(otherwise())
+            .map(|(a, b)| a.hull(b))
+            .collect(),
+    }
+}
+
+fn b_incidence_sin_cos(normal: Vec3, direction: Vec3, cosine: I) -> V2 {
+    let tangential = v3(direction) - v3(normal) * cosine;
+    let sin_cos = V([tangential.dot(tangential).sqrt(), cosine.abs()]);
+    let length = sin_cos.dot(sin_cos).sqrt();
+    let min = f64::from(MIN_MAGNITUDE);
+    let components = b_select(
+        length.hi < min,
+        length.lo < min,
+        || vec![I::c(0.0), I::c(1.0)],
+        || (sin_cos / at_least(length, min)).components(),
+    );
+    V([components[0], components[1]])
+}
+
+fn b_boundary_incidence(incidence: V2, local: V2, side: f64) -> V2 {
+    let ([sin_i, cos_i], [sin_q, cos_q]) = (incidence.0, local.0);
+    V([
+        sin_i * cos_q + I::c(side) * cos_i * sin_q,
+        cos_i * cos_q - I::c(side) * sin_i * sin_q,
+    ])
+}
+
+fn b_refracted_sin_cos(incidence: V2, eta: f32) -> V2 {
+    let [sin, cos] = incidence.0;
+    let eta = s(eta);
+    let cos2 = cos * cos + ((I::c(1.0) - eta) * sin) * ((I::c(1.0) + eta) * sin);
+    V([(eta * sin).clamp_c(-1.0, 1.0), cos2.max_c(0.0).sqrt()])
+}
+
+fn b_boundary_hit(width: f32, side: f64, incidence: V2, half_spread: V2) -> I {
+    let [sin_i, cos_i] = incidence.0;
+    let [sin_h, cos_h] = half_spread.0;
+    let cos_boundary = cos_i * cos_h - I::c(side) * sin_i * sin_h;
+    I::c(side) * I::c(0.5) * s(width) * cos_h / cos_boundary.max_c(f64::from(MIN_COS))
+}
+
+fn b_boundary_offset(hit: I, side: f64, refracted: V2, tilt: V2, transmitted: V2) -> I {
+    let ([sin_tau, cos_tau], [sin_tilt, cos_tilt]) = (refracted.0, tilt.0);
+    let cos_rho = cos_tau * cos_tilt + I::c(side) * sin_tau * sin_tilt;
+    let sin_rho = sin_tau * cos_tilt - I::c(side) * cos_tau * sin_tilt;
+    hit * cos_rho / (cos_rho * transmitted.0[1] + sin_rho * transmitted.0[0]).max_c(f64::from(MIN_COS))
+}
+
+fn b_refracted_sine_gap(eta: f32, incidence: V2, local: V2, upper: V2, lower: V2) -> I {
+    let eta = s(eta);
+    let (upper_sine, lower_sine) = (eta * upper.0[0], eta * lower.0[0]);
+    let (upper_size, lower_size) = (upper_sine.abs(), lower_sine.abs());
+    b_select(
+        upper_size.hi <= 1.0 && lower_size.hi <= 1.0,
+        upper_size.lo <= 1.0 && lower_size.lo <= 1.0,
+        || vec![I::c(2.0) * eta * incidence.0[1] * local.0[0]],
+        || vec![upper_sine.clamp_c(-1.0, 1.0) - lower_sine.clamp_c(-1.0, 1.0)],
+    )[0]
+}
+
+fn b_refracted_angle_between(sine_gap: I, upper: V2, lower: V2) -> I {
+    let ([sin_u, cos_u], [sin_l, cos_l]) = (upper.0, lower.0);
+    let cos_between = cos_u * cos_l + sin_u * sin_l;
+    let cos_sum = (cos_u + cos_l)
+        .max((sine_gap * (sin_u + sin_l)).abs().sqrt())
+        .max_c(f64::from(MIN_MAGNITUDE));
+    let sin_between = sine_gap * (I::c(1.0) + cos_between) / cos_sum;
+    b_atan2(sin_between, cos_between)
+}
+
+/// The arguments of `refract_ray_cone`: cone, normal, direction, normal spread, eta.
+type RefractArgs = (RayCone, Vec3, Vec3, f32, f32);
+
+/// The transmitted cone (its clamps cover the part of `eta sin i`'s interval above 1).
+fn b_transmitted_cone(cone: RayCone, incidence: V2, facing_spread: f32, index: f32) -> Vec<I> {
+    let transmitted = b_refracted_sin_cos(incidence, index);
+    let limit = (I::c(f64::from(MAX_INCIDENCE_ANGLE)) - b_atan2(incidence.0[0], incidence.0[1])).max_c(0.0);
+    let half_spread = (I::c(0.5) * s(cone.spread_angle)).max(-limit).min(limit);
+    let signed_half = if cone.width < 0.0 { -0.5 } else { 0.5 };
+    let tilt = I::c(signed_half) * s(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD));
+    let local = b_angle_sin_cos(half_spread + tilt);
+    let upper_incidence = b_boundary_incidence(incidence, local, 1.0);
+    let lower_incidence = b_boundary_incidence(incidence, local, -1.0);
+    let upper = b_refracted_sin_cos(upper_incidence, index);
+    let lower = b_refracted_sin_cos(lower_incidence, index);
+    let sine_gap = b_refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
+    let half = b_angle_sin_cos(half_spread);
+    let tilt_sin_cos = b_angle_sin_cos(tilt);
+    let upper_hit = b_boundary_hit(cone.width, 1.0, incidence, half);
+    let lower_hit = b_boundary_hit(cone.width, -1.0, incidence, half);
+    vec![
+        b_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
+            - b_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
+        b_refracted_angle_between(sine_gap, upper, lower) - I::c(2.0) * tilt,
+        I::c(0.0),
+    ]
+}
+
+/// Both branches of `refract_ray_cone` for one normal orientation (`facing_spread`).
+fn b_refract_facing(
+    &(cone, normal, direction, _, eta): &RefractArgs,
+    cosine: I,
+    facing_spread: f32,
+) -> Vec<I> {
+    let incidence = b_incidence_sin_cos(normal, direction, cosine);
+    let index = eta.max(0.0);
+    let sin_t = s(index) * incidence.0[0];
+    b_select(
+        sin_t.lo > 1.0,
+        sin_t.hi > 1.0,
+        || {
+            vec![
+                s(cone.width),
+                s(cone.spread_angle) + I::c(2.0) * s(facing_spread),
+                I::c(1.0),
+            ]
+        },
+        || b_transmitted_cone(cone, incidence, facing_spread, index),
+    )
+}
+
+fn b_refract_ray_cone(args: &RefractArgs) -> Vec<I> {
+    let &(_, normal, direction, beta, _) = args;
+    let cosine = v3(normal).dot(v3(direction));
+    b_select(
+        cosine.lo > 0.0,
+        cosine.hi > 0.0,
+        || b_refract_facing(args, cosine, -beta),
+        || b_refract_facing(args, cosine, beta),
+    )
+}
+
+fn b_roughness_spread_angle(roughness: f32) -> I {
+    let r = s(roughness.clamp(0.0, 1.0));
+    let alpha = r * r;
+    let alpha2 = alpha * alpha;
+    let variance = I::c(0.5) * alpha2 / (I::c(1.0) - alpha2).max_c(f64::from(MIN_ROUGHNESS_DENOMINATOR));
+    I::c(2.0) * variance.sqrt()
+}
+
+/// An exact f32 input.
+fn s(x: f32) -> I {
+    I::exact(x)
+}
+
+/// Index ratios: ordinary, 1, glass in and out, 0, and anything in the domain.
+fn eta() -> BoxedStrategy<f32> {
+    prop_oneof![
+        4 => 0.3f32..3.0,
+        1 => Just(1.0f32),
+        1 => Just(1.5f32),
+        1 => Just(1.0f32 / 1.5),
+        1 => Just(0.0f32),
+        1 => scalar(),
+    ]
+    .boxed()
+}
+
+/// `rf_refract_ray_cone`: the enclosure of the refracted cone (the hull of both branches where
+/// the normal's side or total internal reflection is within rounding of changing).
+pub fn refract_ray_cone() -> FunctionCheck<RefractArgs, RefractedRayCone> {
+    FunctionCheck {
+        module: Module::RayCone,
+        function: "refract_ray_cone",
+        strategy: || {
+            (ray_cone(), normal_and_direction(), any::<bool>(), angle(), eta())
+                .prop_map(|(cone, (n, d), behind, beta, eta)| {
+                    (cone, if behind { -n } else { n }, d, beta, eta)
+                })
+                .boxed()
+        },
+        mirror: |(cone, n, d, beta, eta)| rc::refract_ray_cone(cone, n, d, beta, eta),
+        tolerance: |a, i, _| b_refract_ray_cone(a)[i].tolerance(),
+    }
+}
+
+/// `rf_roughness_spread_angle`: the enclosure of the spread.
+pub fn roughness_spread_angle() -> FunctionCheck<(f32,), f32> {
+    FunctionCheck {
+        module: Module::RayCone,
+        function: "roughness_spread_angle",
+        strategy: || {
+            prop_oneof![
+                4 => 0.0f32..1.0,
+                1 => Just(0.0f32),
+                1 => Just(1.0f32),
+                1 => 0.99f32..1.0,
+                1 => scalar(),
+            ]
+            .prop_map(|r| (r,))
+            .boxed()
+        },
+        mirror: |(r,)| rc::roughness_spread_angle(r),
+        tolerance: |&(r,), _, _| b_roughness_spread_angle(r).tolerance(),
+    }
 }
 
 /// Every check of the module.
@@ -392,6 +716,8 @@ pub fn checks() -> Vec<Box<dyn Check>> {
             // own error.
             tolerance: |_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected),
         }),
+        Box::new(refract_ray_cone()),
+        Box::new(roughness_spread_angle()),
     ]
 }
 
