@@ -629,6 +629,32 @@ fn ray_diff_functions() -> Vec<MirrorFunction> {
             let deltas = rd::cone_barycentric_deltas(d.scalar(), d.vec3(), d.vec3(), d.vec3());
             within(d, deltas, 0.0, rd::DIFF_MAX_VALUE, "delta")
         }),
+        f!(RayDiff, anisotropic_cone_axes, |d| rd::anisotropic_cone_axes(
+            d.scalar(),
+            d.unit(),
+            d.unit()
+        )),
+        f!(RayDiff, anisotropic_cone_gradients, |d| {
+            rd::anisotropic_cone_gradients(
+                d.scalar(),
+                d.unit(),
+                d.vec3(),
+                d.vec3(),
+                d.vec3(),
+                d.vec2(),
+                d.vec2(),
+                d.vec2(),
+            )
+        }),
+        f!(RayDiff, ray_diff_from_cone, |d| rd::ray_diff_from_cone(
+            d.vec2(),
+            d.unit()
+        )),
+        f!(RayDiff, cone_from_ray_diff, |d| {
+            let cone = rd::cone_from_ray_diff(d.ray_diff(), d.unit());
+            d.within(cone.x, 0.0, f32::MAX, "width");
+            cone
+        }),
     ]
 }
 
