@@ -3,7 +3,7 @@
 
 use super::{Degenerate, Expect, Row, Table};
 use glam::{DVec3, Mat4, Vec2, Vec3};
-use ray_footprint::gpu::suite::ray_cone as cone_suite;
+use ray_footprint::gpu::suite::{ray_cone as cone_suite, ray_diff as diff_suite};
 use ray_footprint::gpu::tolerance::{log2_error, tan_error, ulps};
 use ray_footprint::gpu::GpuValue;
 use ray_footprint::ray_cone::{
@@ -620,10 +620,7 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
             function: "refract_ray_cone",
             mirror: |(c, n, d, beta, eta)| rc::refract_ray_cone(c, n, d, beta, eta),
             // The agreement check's enclosure, widest over the three components.
-            tolerance: |a, _| {
-                let check = cone_suite::refract_ray_cone();
-                (0..3).map(|i| (check.tolerance)(a, i, 0.0)).fold(0.0, f32::max)
-            },
+            tolerance: |a, _| widest(|i| (cone_suite::refract_ray_cone().tolerance)(a, i, 0.0), 3),
             rows: vec![
                 value(
                     "normal incidence, flat, no spread (eta 1.5)",
@@ -1121,7 +1118,133 @@ fn ray_diff() -> Vec<Box<dyn Degenerate>> {
                 ),
             ],
         }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "anisotropic_cone_axes",
+            mirror: |(w, n, d)| rd::anisotropic_cone_axes(w, n, d),
+            tolerance: |a, _| widest(|i| (diff_suite::anisotropic_cone_axes().tolerance)(a, i, 0.0), 6),
+            rows: vec![
+                value(
+                    "normal incidence (d = -n)",
+                    "a circle: |width| along Duff et al.'s tangent of n and along cross(n, tangent)",
+                    (0.5, z, -z),
+                    vec![0.5, 0.0, 0.0, 0.0, 0.5, 0.0],
+                ),
+                value(
+                    "ray in the surface plane",
+                    "major axis |width| / DIFF_MIN_COS along d, minor |width|",
+                    (0.5, z, x),
+                    vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.0, 0.5, 0.0],
+                ),
+                value(
+                    "grazing (|dot(n, d)| = 1e-6)",
+                    "as the ray in the surface plane (|cos| clamped to DIFF_MIN_COS)",
+                    (0.5, z, direction_at(1.0e-6)),
+                    vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.0, 0.5, 0.0],
+                ),
+                value("zero width", "zero axes", (0.0, z, -z), vec![0.0; 6]),
+                same("negative width", "as |width|", (-0.5, z, -z), (0.5, z, -z)),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "anisotropic_cone_gradients",
+            mirror: |(w, d, p0, p1, p2, uv0, uv1, uv2)| {
+                rd::anisotropic_cone_gradients(w, d, p0, p1, p2, uv0, uv1, uv2)
+            },
+            tolerance: |a, _| {
+                widest(
+                    |i| (diff_suite::anisotropic_cone_gradients().tolerance)(a, i, 0.0),
+                    4,
+                )
+            },
+            rows: vec![
+                value(
+                    "normal incidence, unit triangle, uv = xy",
+                    "(|width|, 0), (0, |width|)",
+                    (0.5, -z, Vec3::ZERO, x, y, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.5, 0.0, 0.0, 0.5],
+                ),
+                value(
+                    "ray in the triangle's plane",
+                    "(|width| / DIFF_MIN_COS, 0), (0, |width|)",
+                    (0.5, x, Vec3::ZERO, x, y, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.5],
+                ),
+                value(
+                    "zero-area triangle (repeated vertex)",
+                    "zero gradients (the unit normal is 0)",
+                    (0.5, -z, Vec3::ZERO, x, Vec3::ZERO, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.0; 4],
+                ),
+                value(
+                    "zero width",
+                    "zero gradients",
+                    (0.0, -z, Vec3::ZERO, x, y, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.0; 4],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "ray_diff_from_cone",
+            mirror: |(c, d)| rd::ray_diff_from_cone(c, d),
+            tolerance: |a, _| widest(|i| (diff_suite::ray_diff_from_cone().tolerance)(a, i, 0.0), 16),
+            rows: vec![
+                value("zero cone", "zero differential", (Vec2::ZERO, -z), vec![0.0; 16]),
+                value(
+                    "direction -Z",
+                    "u = (1, 0, 0), v = (0, -1, 0)",
+                    (Vec2::new(0.5, 0.25), -z),
+                    parts(RayDiff::new(0.5 * x, -0.5 * y, 0.25 * x, -0.25 * y)),
+                ),
+                value(
+                    "direction +Z",
+                    "u = (1, 0, 0), v = (0, 1, 0)",
+                    (Vec2::new(0.5, 0.25), z),
+                    parts(RayDiff::new(0.5 * x, 0.5 * y, 0.25 * x, 0.25 * y)),
+                ),
+                value(
+                    "zero direction",
+                    "u = (1, 0, 0), v = 0: the y differentials vanish",
+                    (Vec2::new(0.5, 0.25), Vec3::ZERO),
+                    parts(RayDiff::new(0.5 * x, Vec3::ZERO, 0.25 * x, Vec3::ZERO)),
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "cone_from_ray_diff",
+            mirror: |(diff, d)| rd::cone_from_ray_diff(diff, d),
+            tolerance: |a, _| widest(|i| (diff_suite::cone_from_ray_diff().tolerance)(a, i, 0.0), 2),
+            rows: vec![
+                value("zero differential", "(0, 0)", (RayDiff::ZERO, -z), vec![0.0, 0.0]),
+                value(
+                    "pinhole eye ray (dO = 0), |dD/dx| = 0.01, |dD/dy| = 0.02",
+                    "(0, mean spread 0.015), diverging",
+                    (RayDiff::new(Vec3::ZERO, Vec3::ZERO, 0.01 * x, 0.02 * y), -z),
+                    vec![0.0, 0.5 * (0.01 + 0.02)],
+                ),
+                value(
+                    "origin and direction changes pointing apart",
+                    "negative spread (converging)",
+                    (RayDiff::new(x, y, -0.5 * x, -0.5 * y), -z),
+                    vec![1.0, -0.5],
+                ),
+                value(
+                    "changes along the ray only",
+                    "(0, 0): only the parts across the ray count",
+                    (RayDiff::new(2.0 * z, 2.0 * z, z, z), -z),
+                    vec![0.0, 0.0],
+                ),
+            ],
+        }),
     ]
+}
+
+/// The widest of `count` component tolerances.
+fn widest(tolerance: impl Fn(usize) -> f32, count: usize) -> f32 {
+    (0..count).map(tolerance).fold(0.0, f32::max)
 }
 
 /// `(1, 0, 0) - hit` for the hit of [`offset_args`]: what a zero-area triangle gives.
