@@ -6,7 +6,10 @@
 //!
 //! Sources: Akenine-Möller et al., "Texture Level of Detail Strategies for Real-Time Ray Tracing",
 //! Ray Tracing Gems ch. 20 (2019), cited as "RTG Eq. N"; Akenine-Möller et al., "Improved Shader and
-//! Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021".
+//! Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021"; Boksanský,
+//! Crassin, Akenine-Möller, "Refraction Ray Cones for Texture Level of Detail", Ray Tracing Gems II
+//! ch. 10 (2021), cited as "RTG II ch. 10", whose formulas use the half cone angle (this module uses
+//! the whole angle throughout).
 //!
 //! Conventions: `width` is the full footprint diameter and `spread_angle` the full cone angle, both
 //! signed (a converging thin-lens cone has a negative spread); footprints use `|width|`. Normals and

@@ -8,7 +8,9 @@
 //! al., "Texture Level of Detail Strategies for Real-Time Ray Tracing", Ray Tracing Gems ch. 20 (2019),
 //! cited as "RTG Eq. N"; Quilez, "ray differentials and texturing" (2015), cited as "Quilez"; the
 //! nvpro ray-tracing tutorial "20 Wireframe" (`computeDifferentials`, `computeDerivative` and its
-//! "Going Further" section), cited as "wireframe tutorial".
+//! "Going Further" section), cited as "wireframe tutorial"; Akenine-Möller et al., "Improved Shader
+//! and Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021"; Duff et al.,
+//! "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017, cited as "Duff et al. 2017".
 //!
 //! Conventions (SPEC section 0): camera space is right-handed and looks down -Z; pixel (0, 0) is the
 //! top-left pixel and pixel y grows downwards, so every `dy` below is the change for one pixel step
