@@ -6,7 +6,10 @@
 //!
 //! Sources: Akenine-Möller et al., "Texture Level of Detail Strategies for Real-Time Ray Tracing",
 //! Ray Tracing Gems ch. 20 (2019), cited as "RTG Eq. N"; Akenine-Möller et al., "Improved Shader and
-//! Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021".
+//! Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021"; Boksanský,
+//! Crassin, Akenine-Möller, "Refraction Ray Cones for Texture Level of Detail", Ray Tracing Gems II
+//! ch. 10 (2021), cited as "RTG II ch. 10", whose formulas use the half cone angle (this module uses
+//! the whole angle throughout).
 //!
 //! Conventions: `width` is the full footprint diameter and `spread_angle` the full cone angle, both
 //! signed (a converging thin-lens cone has a negative spread, and past its focus a negative width);
@@ -303,6 +306,224 @@ pub fn environment_lod(spread_angle: f32, map_height: f32) -> f32 {
     (spread_angle.abs() * map_height.max(1.0) / std::f32::consts::PI)
         .max(MIN_MAGNITUDE)
         .log2()
+}
+
+/// Largest angle, in radians, between a boundary ray of a refracted cone and the surface normal:
+/// `pi / 2 - 1e-4`, so that every boundary ray meets the surface with `|cos| >= MIN_COS` (see
+/// [`refract_ray_cone`]).
+pub const MAX_INCIDENCE_ANGLE: f32 = 1.570_696_3;
+/// Largest `|normal_spread_angle|`, in radians, that [`refract_ray_cone`] applies; larger values are
+/// clamped, so that the tilted normals stay within a half turn of each other.
+pub const MAX_NORMAL_SPREAD: f32 = 3.1;
+/// Smallest `1 - alpha^2` in [`roughness_spread_angle`] (Falcor's clamp): roughness 1 gives
+/// `2 * sqrt(0.5 / MIN_ROUGHNESS_DENOMINATOR)`, about 141 radians.
+pub const MIN_ROUGHNESS_DENOMINATOR: f32 = 1.0e-4;
+
+/// A refracted ray cone and whether the central ray was totally internally reflected instead
+/// (shader `RfRefractedRayCone`, a function result, not laid out for host-shareable buffers). On
+/// total internal reflection `cone` is the *reflected* cone.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RefractedRayCone {
+    /// The cone leaving the hit: transmitted, or reflected on total internal reflection.
+    pub cone: RayCone,
+    /// True when `eta * sin(i) > 1`: no transmitted central ray exists.
+    pub total_internal_reflection: bool,
+}
+
+/// `(sin i, cos i)` of the angle `i` between `direction` and the normal line, from
+/// `(|d - cosine * n|, |cosine|)` with `cosine = dot(n, d)`, scaled to unit length. A zero
+/// direction counts as normal incidence, `(0, 1)`.
+fn incidence_sin_cos(normal: Vec3, direction: Vec3, cosine: f32) -> Vec2 {
+    let sin_cos = Vec2::new((direction - cosine * normal).length(), cosine.abs());
+    let length = sin_cos.length();
+    if length < MIN_MAGNITUDE {
+        Vec2::new(0.0, 1.0)
+    } else {
+        sin_cos / length
+    }
+}
+
+/// `(sin(angle), cos(angle))`.
+fn angle_sin_cos(angle: f32) -> Vec2 {
+    Vec2::new(angle.sin(), angle.cos())
+}
+
+/// Half the cone angle, limited so that both boundary rays of a cone at incidence `i` meet the
+/// surface no closer to grazing than `MAX_INCIDENCE_ANGLE`:
+/// `clamp(spread_angle / 2, -limit, limit)`, `limit = max(MAX_INCIDENCE_ANGLE - atan2(sin i, cos i), 0)`.
+fn refraction_half_spread(spread_angle: f32, incidence: Vec2) -> f32 {
+    let limit = (MAX_INCIDENCE_ANGLE - incidence.x.atan2(incidence.y)).max(0.0);
+    (0.5 * spread_angle).clamp(-limit, limit)
+}
+
+/// Half the angle between the normals at the two boundary hits, signed for the upper boundary:
+/// `+-clamp(facing_spread, -MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD) / 2`, negated for a negative
+/// width (whose upper boundary lands on the other side of the hit).
+fn normal_tilt(width: f32, facing_spread: f32) -> f32 {
+    let signed_half = if width < 0.0 { -0.5 } else { 0.5 };
+    signed_half * facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD)
+}
+
+/// `(sin, cos)` of the angle `i + side * q` from those of `i` and `q`.
+fn boundary_incidence(incidence: Vec2, local: Vec2, side: f32) -> Vec2 {
+    Vec2::new(
+        incidence.x * local.y + side * incidence.y * local.x,
+        incidence.y * local.y - side * incidence.x * local.x,
+    )
+}
+
+/// `(sin, cos)` of the angle refracted by Snell's law from the incidence `(sin phi, cos phi)`:
+/// `clamp(eta sin phi, -1, 1)` and `sqrt(max(cos^2 phi + ((1 - eta) sin phi) ((1 + eta) sin phi), 0))`,
+/// which is `sqrt(1 - eta^2 sin^2 phi)` evaluated from `cos phi`, so that it keeps its precision
+/// near grazing. Past the critical angle the ray leaves along the surface: `(+-1, 0)`.
+fn refracted_sin_cos(incidence: Vec2, eta: f32) -> Vec2 {
+    let cos2 = incidence.y * incidence.y + ((1.0 - eta) * incidence.x) * ((1.0 + eta) * incidence.x);
+    Vec2::new((eta * incidence.x).clamp(-1.0, 1.0), cos2.max(0.0).sqrt())
+}
+
+/// Signed distance along the surface from the hit to where the boundary ray on `side` (+1 upper,
+/// -1 lower) lands: it starts `side * width / 2` across the central ray and makes the angle
+/// `i + side * h` with the inward normal, so it lands at
+/// `side * (width / 2) * cos(h) / max(cos(i + side * h), MIN_COS)`. `incidence` and `half_spread`
+/// are `(sin, cos)` of `i` and `h`.
+fn boundary_hit(width: f32, side: f32, incidence: Vec2, half_spread: Vec2) -> f32 {
+    let cos_boundary = incidence.y * half_spread.y - side * incidence.x * half_spread.x;
+    side * 0.5 * width * half_spread.y / cos_boundary.max(MIN_COS)
+}
+
+/// Signed distance, across the refracted central ray, from the hit to the refracted boundary ray on
+/// `side` that leaves the surface at `hit`: the boundary's normal is turned by `-side * tilt`, so
+/// its refracted direction makes the angle `rho = tau - side * tilt` with the inward normal (`tau`
+/// its angle to its own normal) and the offset is `hit * cos(rho) / max(cos(rho - t), MIN_COS)`.
+/// `refracted`, `tilt` and `transmitted` are `(sin, cos)` of `tau`, `tilt` and `t`.
+fn boundary_offset(hit: f32, side: f32, refracted: Vec2, tilt: Vec2, transmitted: Vec2) -> f32 {
+    let cos_rho = refracted.y * tilt.y + side * refracted.x * tilt.x;
+    let sin_rho = refracted.x * tilt.y - side * refracted.y * tilt.x;
+    hit * cos_rho / (cos_rho * transmitted.y + sin_rho * transmitted.x).max(MIN_COS)
+}
+
+/// `s_u - s_l`, the difference of the sines of the refracted boundaries, from the boundaries'
+/// incidences `upper`, `lower` (`(sin, cos)` of `i +- q`): `2 eta cos i sin q`, exact, while
+/// neither `eta sin(i +- q)` exceeds 1; else the difference of the clamped sines.
+fn refracted_sine_gap(eta: f32, incidence: Vec2, local: Vec2, upper: Vec2, lower: Vec2) -> f32 {
+    let (upper_sine, lower_sine) = (eta * upper.x, eta * lower.x);
+    if upper_sine.abs() <= 1.0 && lower_sine.abs() <= 1.0 {
+        2.0 * eta * incidence.y * local.x
+    } else {
+        upper_sine.clamp(-1.0, 1.0) - lower_sine.clamp(-1.0, 1.0)
+    }
+}
+
+/// Angle from the lower to the upper refracted boundary, each measured from its own normal:
+/// `atan2(sin, cos)` of their difference, with `cos = c_u c_l + s_u s_l` and
+/// `sin = s_u c_l - s_l c_u = (s_u - s_l) (1 + cos) / (c_u + c_l)`, the same value without
+/// cancellation for nearly equal angles (`sine_gap` is `s_u - s_l`, [`refracted_sine_gap`]). The
+/// divisor is kept at or above its lower bound `sqrt(|(s_u - s_l) (s_u + s_l)|)` (from
+/// `c_l^2 - c_u^2 = s_u^2 - s_l^2`), which rounding can undercut when both boundaries refract at
+/// their critical angle, and at or above `MIN_MAGNITUDE`.
+fn refracted_angle_between(sine_gap: f32, upper: Vec2, lower: Vec2) -> f32 {
+    let cos_between = upper.y * lower.y + upper.x * lower.x;
+    let cos_sum = (upper.y + lower.y)
+        .max((sine_gap * (upper.x + lower.x)).abs().sqrt())
+        .max(MIN_MAGNITUDE);
+    let sin_between = sine_gap * (1.0 + cos_between) / cos_sum;
+    sin_between.atan2(cos_between)
+}
+
+/// The cone leaving a refraction (Boksansky, Crassin, Akenine-Möller, "Refraction Ray Cones for
+/// Texture Level of Detail", Ray Tracing Gems II ch. 10, 2021; the construction of Falcor's
+/// `computeRayConeForRefraction`), in the plane of incidence, with the crate's whole angles (the
+/// chapter writes its formulas with the half angle).
+///
+/// `cone` is the incoming cone *at the hit* (propagate it first: `propagate(cone, t, 0.0)`);
+/// `normal` and `direction` are unit; `normal_spread_angle` is the angle by which the surface
+/// normal turns across the footprint, positive where the normals spread apart (convex on the side
+/// `normal` points to; `k * |width| / |dot(n, d)|` for a curvature `k`, or `s * phi` from RTG
+/// Eq. 31-33); `eta = n_incident / n_transmitted`, as GLSL `refract` takes it (clamped to `>= 0`).
+/// The normal may face either way: when `dot(n, d) > 0` it is flipped, and the normal spread with
+/// it.
+///
+/// With `i` the angle of incidence (`sin i = |d - dot(n, d) n|`) and `eta sin i > 1`, the central ray
+/// is totally internally reflected: the result is the reflected cone, `(width, spread + 2 beta)`
+/// with `beta` the normal spread as the ray sees it, and the flag is set. Otherwise the two
+/// boundary rays start `+-width / 2` across the central ray at the angles `i +- h` to the inward
+/// normal (`h = spread / 2`), land at `x = +-(width / 2) cos h / cos(i +- h)` along the surface,
+/// where the normal is tilted by `-+beta / 2`, and refract by Snell's law there; a boundary past
+/// its critical angle leaves along the surface. The new spread is the angle between the refracted
+/// boundaries (`atan2`), the new width the distance between them across the refracted central ray
+/// at the hit. To first order, `width' = width cos t / cos i` and
+/// `spread' = m (spread + beta) - beta` with `m = eta cos i / cos t`; at normal incidence this is the
+/// OptiX Toolkit's `(n_out / n_in) (angle + k |w|) - k |w|`.
+///
+/// Defined where Falcor's construction is not: at exact normal incidence the plane of incidence is
+/// any plane (only `sin i` and `cos i` enter); the half spread is limited so that both boundary rays
+/// meet the surface, at most `MAX_INCIDENCE_ANGLE` from the normal (a near-grazing cone whose edge
+/// would miss the surface grazes it instead); `|beta|` is clamped to `MAX_NORMAL_SPREAD`; the
+/// landing and leaving cosines to `>= MIN_COS`. A zero direction counts as normal incidence.
+pub fn refract_ray_cone(
+    cone: RayCone,
+    normal: Vec3,
+    direction: Vec3,
+    normal_spread_angle: f32,
+    eta: f32,
+) -> RefractedRayCone {
+    let cosine = normal.dot(direction);
+    let facing_spread = if cosine > 0.0 {
+        -normal_spread_angle
+    } else {
+        normal_spread_angle
+    };
+    let incidence = incidence_sin_cos(normal, direction, cosine);
+    let index = eta.max(0.0);
+    let sin_transmitted = index * incidence.x;
+    if sin_transmitted > 1.0 {
+        return RefractedRayCone {
+            cone: RayCone {
+                width: cone.width,
+                spread_angle: cone.spread_angle + 2.0 * facing_spread,
+            },
+            total_internal_reflection: true,
+        };
+    }
+    let transmitted = refracted_sin_cos(incidence, index);
+    let half_spread = refraction_half_spread(cone.spread_angle, incidence);
+    let tilt = normal_tilt(cone.width, facing_spread);
+    let local = angle_sin_cos(half_spread + tilt);
+    let upper_incidence = boundary_incidence(incidence, local, 1.0);
+    let lower_incidence = boundary_incidence(incidence, local, -1.0);
+    let upper = refracted_sin_cos(upper_incidence, index);
+    let lower = refracted_sin_cos(lower_incidence, index);
+    let sine_gap = refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
+    let half_sin_cos = angle_sin_cos(half_spread);
+    let tilt_sin_cos = angle_sin_cos(tilt);
+    let upper_hit = boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
+    let lower_hit = boundary_hit(cone.width, -1.0, incidence, half_sin_cos);
+    RefractedRayCone {
+        cone: RayCone {
+            width: boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
+                - boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
+            spread_angle: refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt,
+        },
+        total_internal_reflection: false,
+    }
+}
+
+/// Spread angle added by a rough surface (JCGT 2021, its roughness-to-spread mapping; Falcor's
+/// `roughnessToSpread`): the GGX lobe of perceptual roughness `r` (clamped to `[0, 1]`) has
+/// `alpha = r^2` and is read as a Gaussian of variance
+/// `sigma^2 = 0.5 * alpha^2 / max(1 - alpha^2, MIN_ROUGHNESS_DENOMINATOR)`; the added spread is the
+/// whole angle `2 * sigma`, about `sqrt(2) * r^2` for small `r`, 0 for `r = 0`, and beyond pi for
+/// `r > 0.96` (about 141 radians at `r = 1`).
+///
+/// The input is perceptual roughness (the material parameter), not GGX alpha. Falcor adds the
+/// result to the normal's spread before a reflection's factor 2: for a reflection add
+/// `2 * roughness_spread_angle(r)` to the surface spread angle passed to [`propagate`].
+pub fn roughness_spread_angle(roughness: f32) -> f32 {
+    let r = roughness.clamp(0.0, 1.0);
+    let alpha = r * r;
+    let alpha2 = alpha * alpha;
+    let variance = 0.5 * alpha2 / (1.0 - alpha2).max(MIN_ROUGHNESS_DENOMINATOR);
+    2.0 * variance.sqrt()
 }
 
 /// IEEE 754 binary16 conversions for the packed cone (the shaders use `packHalf2x16` and

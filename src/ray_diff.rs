@@ -8,7 +8,9 @@
 //! al., "Texture Level of Detail Strategies for Real-Time Ray Tracing", Ray Tracing Gems ch. 20 (2019),
 //! cited as "RTG Eq. N"; Quilez, "ray differentials and texturing" (2015), cited as "Quilez"; the
 //! nvpro ray-tracing tutorial "20 Wireframe" (`computeDifferentials`, `computeDerivative` and its
-//! "Going Further" section), cited as "wireframe tutorial".
+//! "Going Further" section), cited as "wireframe tutorial"; Akenine-Möller et al., "Improved Shader
+//! and Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021"; Duff et al.,
+//! "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017, cited as "Duff et al. 2017".
 //!
 //! Conventions (SPEC section 0): camera space is right-handed and looks down -Z; pixel (0, 0) is the
 //! top-left pixel and pixel y grows downwards, so every `dy` below is the change for one pixel step
@@ -771,4 +773,128 @@ pub fn cone_barycentric_deltas(world_footprint: f32, p0: Vec3, p1: Vec3, p2: Vec
         scaled_length(p1 - p0),
     );
     (world_footprint.abs() * edges / area2).min(Vec3::splat(DIFF_MAX_VALUE))
+}
+
+/// Smallest sine of the angle between a direction and a normal at which their cross product still
+/// gives the footprint's minor axis ([`anisotropic_cone_axes`]); nearer to normal incidence the
+/// footprint is a circle to within 5e-9 and a fixed tangent is used instead.
+pub const DIFF_MIN_SINE: f32 = 1.0e-4;
+
+/// A unit vector perpendicular to the unit vector `n` (Duff et al., "Building an Orthonormal Basis,
+/// Revisited", JCGT 6(1), 2017, the first tangent): with `s = 1` for `n.z >= 0` and -1 otherwise,
+/// `a = -1 / (s + n.z)`: `(1 + s n.x^2 a, s n.x n.y a, -s n.x)`. Defined for every finite `n`
+/// (`|s + n.z| >= 1`).
+fn orthonormal_tangent(n: Vec3) -> Vec3 {
+    let sign_z = if n.z >= 0.0 { 1.0 } else { -1.0 };
+    let a = -1.0 / (sign_z + n.z);
+    Vec3::new(
+        1.0 + sign_z * n.x * n.x * a,
+        sign_z * n.x * n.y * a,
+        -sign_z * n.x,
+    )
+}
+
+/// The elliptical footprint of a ray cone on a surface, as the two world-space axes to pass as
+/// position differentials (JCGT 2021, its anisotropic filter, as Falcor's
+/// `computeAnisotropicEllipseAxes`): the cone is taken as a cylinder of diameter `|width|` (its
+/// width at the hit) around the unit direction `d`, cut by the plane with unit normal `n`. The
+/// minor axis is perpendicular to the ray and the normal, along `m = normalize(cross(n, d))`, the
+/// major one along the direction projected onto the plane, `cross(m, n)`:
+/// `dx = cross(m, n) * |width| / max(|dot(n, d)|, DIFF_MIN_COS)`, `dy = m * |width|`.
+///
+/// This is the paper's `r / |a - dot(d, a) d|` scaling with the errata's factor 2 applied (JCGT
+/// 2021 errata: `SampleGrad(2 g1, 2 g2)`; Falcor passes the width where its parameter says radius):
+/// at normal incidence both axes have the isotropic cone's length `|width|`, and the major axis grows
+/// as `1 / |cos|` towards grazing. It is also the OptiX Toolkit's
+/// `projectToRayDifferentialsOnSurface` without its anisotropy cap of 16. Within `DIFF_MIN_SINE` of
+/// normal incidence (`|cross(n, d)| < DIFF_MIN_SINE`), `m` is `cross(n, u)` for a fixed tangent `u` of
+/// `n` (Duff et al. 2017). Both axes are built by cross products with `n`, so they lie in the plane
+/// to rounding however close to normal incidence.
+pub fn anisotropic_cone_axes(width: f32, normal: Vec3, direction: Vec3) -> Derivatives3 {
+    let across = normal.cross(direction);
+    let length2 = across.dot(across);
+    let minor = if length2 < DIFF_MIN_SINE * DIFF_MIN_SINE {
+        normal.cross(orthonormal_tangent(normal))
+    } else {
+        across / length2.sqrt()
+    };
+    let size = width.abs();
+    Derivatives3::new(
+        minor.cross(normal) * (size / normal.dot(direction).abs().max(DIFF_MIN_COS)),
+        minor * size,
+    )
+}
+
+/// Unit normal of a triangle: `cross(p1 - p0, p2 - p0) / |cross|`, the length measured as
+/// [`scaled_length`] and clamped to `>= DIFF_MIN_MAGNITUDE` (a zero-area triangle gives 0).
+fn triangle_unit_normal(p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
+    let area_normal = (p1 - p0).cross(p2 - p0);
+    area_normal / scaled_length(area_normal).max(DIFF_MIN_MAGNITUDE)
+}
+
+/// Anisotropic `SampleGrad` / `textureGrad` gradients (UV units) of a ray cone hitting a triangle
+/// (JCGT 2021, its anisotropic filter; Falcor's `computeAnisotropicEllipseAxes`, with the errata's
+/// factor 2): the texture coordinates at `hit + axis` minus those at the hit, for the two axes of
+/// [`anisotropic_cone_axes`] in the triangle's plane (normal `n = normalize(cross(p1 - p0, p2 - p0))`).
+/// The axes' barycentric changes are [`barycentric_derivatives`] of a differential with origin
+/// changes `(dx, dy)` along `n` (`t = 0`), and the gradients are [`texture_derivatives`] of those.
+///
+/// `width` is the cone's width at the hit, `direction` the unit ray direction. At normal incidence
+/// both gradients have the isotropic cone's length ([`crate::ray_cone::texture_gradient`] of the
+/// footprint) for a texture mapped without shear. A zero-area triangle gives zero gradients; the
+/// clamps are those of the functions named.
+#[allow(clippy::too_many_arguments)]
+pub fn anisotropic_cone_gradients(
+    width: f32,
+    direction: Vec3,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    uv0: Vec2,
+    uv1: Vec2,
+    uv2: Vec2,
+) -> Derivatives2 {
+    let normal = triangle_unit_normal(p0, p1, p2);
+    let axes = anisotropic_cone_axes(width, normal, direction);
+    let offsets = RayDiff::new(axes.dx, axes.dy, Vec3::ZERO, Vec3::ZERO);
+    let barycentric = barycentric_derivatives(offsets, normal, 0.0, p0, p1, p2);
+    texture_derivatives(barycentric, uv0, uv1, uv2)
+}
+
+/// The isotropic ray differential of a ray cone `(width, spread_angle)` around the unit direction
+/// `d` (a conversion derived for this crate; neither Falcor nor the OptiX Toolkit has one): with
+/// `u` a unit tangent of `d` (Duff et al. 2017) and `v = cross(d, u)`,
+/// `dO/dx = width u`, `dO/dy = width v`, `dD/dx = spread_angle u`, `dD/dy = spread_angle v`. A step
+/// of one pixel moves the ray by the cone's width and turns it by the cone's angle, in two
+/// perpendicular directions. [`cone_from_ray_diff`] converts back; [`transfer`] of the result is the
+/// differential of [`crate::ray_cone::propagate`]'s cone.
+pub fn ray_diff_from_cone(cone: Vec2, direction: Vec3) -> RayDiff {
+    let u = orthonormal_tangent(direction);
+    let v = direction.cross(u);
+    RayDiff::new(cone.x * u, cone.x * v, cone.y * u, cone.y * v)
+}
+
+/// `(width, spread)` of one axis of a differential: the lengths of the origin and direction changes
+/// across the unit direction `d` (`v - dot(v, d) d`, measured as [`scaled_length`]), the spread
+/// negative when the two point apart (`dot < 0`: the rays converge).
+fn transverse_cone(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> Vec2 {
+    let origin = d_origin - d_origin.dot(direction) * direction;
+    let turn = d_direction - d_direction.dot(direction) * direction;
+    let sign_turn = if origin.dot(turn) >= 0.0 { 1.0 } else { -1.0 };
+    Vec2::new(scaled_length(origin), sign_turn * scaled_length(turn))
+}
+
+/// The ray cone `(width, spread_angle)` of a ray differential around the unit direction `d`: the
+/// mean of its two axes' transverse widths and signed spreads (`transverse_cone`: the lengths of
+/// `dO` and `dD` across `d`, the spread negative where the origin and direction changes point
+/// apart). Converting [`ray_diff_from_cone`]'s differential back returns the cone with a
+/// non-negative width (`(w, s)` and `(-w, -s)` describe the same cone), and since both steps are
+/// linear in each axis, converting commutes with propagation ([`transfer`] versus
+/// [`crate::ray_cone::propagate`]) for every differential whose origin and direction changes are
+/// parallel across `d` in each axis. For a pinhole eye ray (`dO = 0`) this is the pixel's mean
+/// angular size.
+pub fn cone_from_ray_diff(diff: RayDiff, direction: Vec3) -> Vec2 {
+    let x = transverse_cone(diff.d_origin_dx, diff.d_direction_dx, direction);
+    let y = transverse_cone(diff.d_origin_dy, diff.d_direction_dy, direction);
+    0.5 * (x + y)
 }

@@ -4,7 +4,7 @@
 //! compares its Rust layout with the shader's.
 
 use crate::abi::{HitPayload, RayConePushConstants, WireframePushConstants};
-use crate::ray_cone::{unpack_ray_cone, PackedRayCone, RayCone};
+use crate::ray_cone::{unpack_ray_cone, PackedRayCone, RayCone, RefractedRayCone};
 use crate::ray_diff::{
     Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, RefractedRayDiff,
     TriplanarGradients,
@@ -15,6 +15,7 @@ use glam::{Vec2, Vec3, Vec4};
 use shader_proptest::{shader_struct, ShaderType, Value};
 
 shader_struct!(pod RayCone as "RfRayCone" { width: f32, spread_angle: f32 });
+shader_struct!(RefractedRayCone as "RfRefractedRayCone" { cone: RayCone, total_internal_reflection: bool });
 shader_struct!(pod HitPayload as "RfHitPayload" { colour: Vec3, weight: f32, cone: RayCone, depth: u32, pad: u32 });
 shader_struct!(pod RayConePushConstants as "RfRayConePushConstants" { tex_grad_scale: f32, pixel_spread_angle: f32 });
 shader_struct!(pod RayDiff as "RfRayDiff" {

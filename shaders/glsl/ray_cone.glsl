@@ -211,4 +211,142 @@ float rf_environment_lod(float spread_angle, float map_height) {
     return log2(max(abs(spread_angle) * max(map_height, 1.0) / 3.14159265358979, RF_MIN_MAGNITUDE));
 }
 
+// Largest angle between a boundary ray of a refracted cone and the normal: pi / 2 - 1e-4, so that
+// every boundary ray meets the surface with |cos| >= RF_MIN_COS.
+const float RF_MAX_INCIDENCE_ANGLE = 1.5706963;
+// Largest |normal_spread_angle| that rf_refract_ray_cone applies.
+const float RF_MAX_NORMAL_SPREAD = 3.1;
+// Smallest 1 - alpha^2 in rf_roughness_spread_angle (roughness 1 gives about 141 radians).
+const float RF_MIN_ROUGHNESS_DENOMINATOR = 1.0e-4;
+
+// A refracted cone; on total internal reflection, the reflected cone and the flag set.
+struct RfRefractedRayCone {
+    RfRayCone cone;
+    bool total_internal_reflection;
+};
+
+// (sin i, cos i) from (|d - cosine n|, |cosine|) scaled to unit length; a zero direction gives (0, 1).
+vec2 rf_incidence_sin_cos(vec3 normal, vec3 direction, float cosine) {
+    vec2 sin_cos = vec2(length(direction - cosine * normal), abs(cosine));
+    float sin_cos_length = length(sin_cos);
+    if (sin_cos_length < RF_MIN_MAGNITUDE) {
+        return vec2(0.0, 1.0);
+    }
+    return sin_cos / sin_cos_length;
+}
+
+// (sin(angle), cos(angle)).
+vec2 rf_angle_sin_cos(float angle) {
+    return vec2(sin(angle), cos(angle));
+}
+
+// Half the cone angle, limited so both boundary rays meet the surface within RF_MAX_INCIDENCE_ANGLE.
+float rf_refraction_half_spread(float spread_angle, vec2 incidence) {
+    float limit = max(RF_MAX_INCIDENCE_ANGLE - atan(incidence.x, incidence.y), 0.0);
+    return clamp(0.5 * spread_angle, -limit, limit);
+}
+
+// Half the normal turn across the footprint, signed for the upper boundary (negated for width < 0).
+float rf_normal_tilt(float width, float facing_spread) {
+    float signed_half = width < 0.0 ? -0.5 : 0.5;
+    return signed_half * clamp(facing_spread, -RF_MAX_NORMAL_SPREAD, RF_MAX_NORMAL_SPREAD);
+}
+
+// (sin, cos) of the angle i + side q from those of i and q.
+vec2 rf_boundary_incidence(vec2 incidence, vec2 local, float side) {
+    return vec2(
+        incidence.x * local.y + side * incidence.y * local.x,
+        incidence.y * local.y - side * incidence.x * local.x
+    );
+}
+
+// (sin, cos) refracted by Snell's law from (sin phi, cos phi): clamp(eta sin phi, -1, 1) and
+// sqrt(max(cos^2 phi + ((1 - eta) sin phi) ((1 + eta) sin phi), 0)); (+-1, 0) past the critical angle.
+vec2 rf_refracted_sin_cos(vec2 incidence, float eta) {
+    float cos2 = incidence.y * incidence.y + ((1.0 - eta) * incidence.x) * ((1.0 + eta) * incidence.x);
+    return vec2(clamp(eta * incidence.x, -1.0, 1.0), sqrt(max(cos2, 0.0)));
+}
+
+// Where the boundary ray on `side` lands: side (width / 2) cos(h) / max(cos(i + side h), RF_MIN_COS).
+float rf_boundary_hit(float width, float side, vec2 incidence, vec2 half_spread) {
+    float cos_boundary = incidence.y * half_spread.y - side * incidence.x * half_spread.x;
+    return side * 0.5 * width * half_spread.y / max(cos_boundary, RF_MIN_COS);
+}
+
+// Offset of a refracted boundary across the refracted central ray: hit cos(rho) / max(cos(rho - t), min),
+// rho = tau - side tilt.
+float rf_boundary_offset(float hit, float side, vec2 refracted, vec2 tilt, vec2 transmitted) {
+    float cos_rho = refracted.y * tilt.y + side * refracted.x * tilt.x;
+    float sin_rho = refracted.x * tilt.y - side * refracted.y * tilt.x;
+    return hit * cos_rho / max(cos_rho * transmitted.y + sin_rho * transmitted.x, RF_MIN_COS);
+}
+
+// s_u - s_l of the refracted boundaries from their incidences (sin, cos of i +- q): 2 eta cos i sin q
+// (exact) while neither eta sin(i +- q) exceeds 1, else the difference of the clamped sines.
+float rf_refracted_sine_gap(float eta, vec2 incidence, vec2 local, vec2 upper, vec2 lower) {
+    float upper_sine = eta * upper.x;
+    float lower_sine = eta * lower.x;
+    if (abs(upper_sine) <= 1.0 && abs(lower_sine) <= 1.0) {
+        return 2.0 * eta * incidence.y * local.x;
+    }
+    return clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+}
+
+// Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin = sine_gap (1 + cos) /
+// (c_u + c_l) without cancellation; the divisor kept >= sqrt(|sine_gap (s_u + s_l)|) (its lower bound)
+// and >= RF_MIN_MAGNITUDE.
+float rf_refracted_angle_between(float sine_gap, vec2 upper, vec2 lower) {
+    float cos_between = upper.y * lower.y + upper.x * lower.x;
+    float cos_sum = max(max(upper.y + lower.y, sqrt(abs(sine_gap * (upper.x + lower.x)))), RF_MIN_MAGNITUDE);
+    float sin_between = sine_gap * (1.0 + cos_between) / cos_sum;
+    return atan(sin_between, cos_between);
+}
+
+// Refraction of a cone at the hit (RTG II ch. 10, whole angles; Falcor computeRayConeForRefraction):
+// boundary rays at i +- h land at +-(w/2) cos h / cos(i +- h), refract at normals tilted -+beta/2;
+// new spread = angle between them, new width = their distance across the refracted central ray.
+// eta sin i > 1: the reflected cone (width, spread + 2 beta) and the flag.
+RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, vec3 normal, vec3 direction, float normal_spread_angle,
+    float eta) {
+    float cosine = dot(normal, direction);
+    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    vec2 incidence = rf_incidence_sin_cos(normal, direction, cosine);
+    float index = max(eta, 0.0);
+    float sin_transmitted = index * incidence.x;
+    if (sin_transmitted > 1.0) {
+        return RfRefractedRayCone(RfRayCone(cone.width, cone.spread_angle + 2.0 * facing_spread), true);
+    }
+    vec2 transmitted = rf_refracted_sin_cos(incidence, index);
+    float half_spread = rf_refraction_half_spread(cone.spread_angle, incidence);
+    float tilt = rf_normal_tilt(cone.width, facing_spread);
+    vec2 local = rf_angle_sin_cos(half_spread + tilt);
+    vec2 upper_incidence = rf_boundary_incidence(incidence, local, 1.0);
+    vec2 lower_incidence = rf_boundary_incidence(incidence, local, -1.0);
+    vec2 upper = rf_refracted_sin_cos(upper_incidence, index);
+    vec2 lower = rf_refracted_sin_cos(lower_incidence, index);
+    float sine_gap = rf_refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
+    vec2 half_sin_cos = rf_angle_sin_cos(half_spread);
+    vec2 tilt_sin_cos = rf_angle_sin_cos(tilt);
+    float upper_hit = rf_boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
+    float lower_hit = rf_boundary_hit(cone.width, -1.0, incidence, half_sin_cos);
+    return RfRefractedRayCone(
+        RfRayCone(
+            rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
+                - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
+            rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt
+        ),
+        false
+    );
+}
+
+// Spread added by roughness (JCGT 2021; Falcor roughnessToSpread): alpha = r^2 (r perceptual, clamped
+// to [0, 1]), sigma^2 = 0.5 alpha^2 / max(1 - alpha^2, RF_MIN_ROUGHNESS_DENOMINATOR), spread 2 sigma.
+float rf_roughness_spread_angle(float roughness) {
+    float r = clamp(roughness, 0.0, 1.0);
+    float alpha = r * r;
+    float alpha2 = alpha * alpha;
+    float variance = 0.5 * alpha2 / max(1.0 - alpha2, RF_MIN_ROUGHNESS_DENOMINATOR);
+    return 2.0 * sqrt(variance);
+}
+
 #endif // RAY_FOOTPRINT_RAY_CONE_GLSL

@@ -437,4 +437,74 @@ vec3 rf_cone_barycentric_deltas(float world_footprint, vec3 p0, vec3 p1, vec3 p2
     return min(abs(world_footprint) * edges / area2, vec3(RF_DIFF_MAX_VALUE));
 }
 
+// Smallest sine between a direction and a normal at which their cross product gives the minor axis
+// of rf_anisotropic_cone_axes; nearer to normal incidence a fixed tangent is used.
+const float RF_DIFF_MIN_SINE = 1.0e-4;
+
+// A unit vector perpendicular to the unit vector n (Duff et al. 2017): s = sign(n.z) (+1 for 0),
+// a = -1 / (s + n.z), (1 + s n.x^2 a, s n.x n.y a, -s n.x).
+vec3 rf_orthonormal_tangent(vec3 n) {
+    float sign_z = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (sign_z + n.z);
+    return vec3(1.0 + sign_z * n.x * n.x * a, sign_z * n.x * n.y * a, -sign_z * n.x);
+}
+
+// Footprint axes of a cone (JCGT 2021, Falcor computeAnisotropicEllipseAxes, errata factor 2): the
+// cylinder of diameter |width| around d cut by the plane of n; m = normalize(cross(n, d)),
+// dx = cross(m, n) |width| / max(|n.d|, RF_DIFF_MIN_COS), dy = m |width|;
+// m = cross(n, fixed tangent) when |cross(n, d)| < RF_DIFF_MIN_SINE.
+RfDerivatives3 rf_anisotropic_cone_axes(float width, vec3 normal, vec3 direction) {
+    vec3 across = cross(normal, direction);
+    float length2 = dot(across, across);
+    vec3 minor;
+    if (length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE) {
+        minor = cross(normal, rf_orthonormal_tangent(normal));
+    } else {
+        minor = across / sqrt(length2);
+    }
+    float size = abs(width);
+    return RfDerivatives3(cross(minor, normal) * (size / max(abs(dot(normal, direction)), RF_DIFF_MIN_COS)),
+        minor * size);
+}
+
+// Unit triangle normal: cross(p1 - p0, p2 - p0) / max(scaled length, RF_DIFF_MIN_MAGNITUDE).
+vec3 rf_triangle_unit_normal(vec3 p0, vec3 p1, vec3 p2) {
+    vec3 area_normal = cross(p1 - p0, p2 - p0);
+    return area_normal / max(rf_scaled_length(area_normal), RF_DIFF_MIN_MAGNITUDE);
+}
+
+// Anisotropic textureGrad gradients of a cone hitting a triangle (JCGT 2021, errata factor 2): UV at
+// hit + axis minus UV at the hit for the rf_anisotropic_cone_axes in the triangle's plane.
+RfDerivatives2 rf_anisotropic_cone_gradients(float width, vec3 direction, vec3 p0, vec3 p1, vec3 p2,
+    vec2 uv0, vec2 uv1, vec2 uv2) {
+    vec3 normal = rf_triangle_unit_normal(p0, p1, p2);
+    RfDerivatives3 axes = rf_anisotropic_cone_axes(width, normal, direction);
+    RfRayDiff offsets = RfRayDiff(axes.dx, 0.0, axes.dy, 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0);
+    RfDerivatives2 barycentric = rf_barycentric_derivatives(offsets, normal, 0.0, p0, p1, p2);
+    return rf_texture_derivatives(barycentric, uv0, uv1, uv2);
+}
+
+// Isotropic differential of a cone (width, spread_angle) around d: u = tangent of d, v = cross(d, u),
+// dO = width (u, v), dD = spread_angle (u, v).
+RfRayDiff rf_ray_diff_from_cone(vec2 cone, vec3 direction) {
+    vec3 u = rf_orthonormal_tangent(direction);
+    vec3 v = cross(direction, u);
+    return RfRayDiff(cone.x * u, 0.0, cone.x * v, 0.0, cone.y * u, 0.0, cone.y * v, 0.0);
+}
+
+// (width, spread) of one axis: the lengths of dO and dD across d, the spread negative when they point apart.
+vec2 rf_transverse_cone(vec3 d_origin, vec3 d_direction, vec3 direction) {
+    vec3 origin = d_origin - dot(d_origin, direction) * direction;
+    vec3 turn = d_direction - dot(d_direction, direction) * direction;
+    float sign_turn = dot(origin, turn) >= 0.0 ? 1.0 : -1.0;
+    return vec2(rf_scaled_length(origin), sign_turn * rf_scaled_length(turn));
+}
+
+// Cone (width, spread_angle) of a differential around d: the mean of its two axes' transverse cones.
+vec2 rf_cone_from_ray_diff(RfRayDiff diff, vec3 direction) {
+    vec2 x = rf_transverse_cone(diff.d_origin_dx, diff.d_direction_dx, direction);
+    vec2 y = rf_transverse_cone(diff.d_origin_dy, diff.d_direction_dy, direction);
+    return 0.5 * (x + y);
+}
+
 #endif // RAY_FOOTPRINT_RAY_DIFF_GLSL

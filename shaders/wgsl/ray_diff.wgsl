@@ -483,3 +483,77 @@ fn rf_cone_barycentric_deltas(world_footprint: f32, p0: vec3<f32>, p1: vec3<f32>
     let edges = vec3<f32>(rf_scaled_length(p2 - p1), rf_scaled_length(p2 - p0), rf_scaled_length(p1 - p0));
     return min(abs(world_footprint) * edges / area2, vec3<f32>(RF_DIFF_MAX_VALUE));
 }
+
+// Smallest sine between a direction and a normal at which their cross product gives the minor axis
+// of rf_anisotropic_cone_axes; nearer to normal incidence a fixed tangent is used.
+const RF_DIFF_MIN_SINE: f32 = 1.0e-4;
+
+// A unit vector perpendicular to the unit vector n (Duff et al. 2017): s = sign(n.z) (+1 for 0),
+// a = -1 / (s + n.z), (1 + s n.x^2 a, s n.x n.y a, -s n.x).
+fn rf_orthonormal_tangent(n: vec3<f32>) -> vec3<f32> {
+    let sign_z = select(-1.0, 1.0, n.z >= 0.0);
+    let a = -1.0 / (sign_z + n.z);
+    return vec3<f32>(1.0 + sign_z * n.x * n.x * a, sign_z * n.x * n.y * a, -sign_z * n.x);
+}
+
+// Footprint axes of a cone (JCGT 2021, Falcor computeAnisotropicEllipseAxes, errata factor 2): the
+// cylinder of diameter |width| around d cut by the plane of n; m = normalize(cross(n, d)),
+// dx = cross(m, n) |width| / max(|n.d|, RF_DIFF_MIN_COS), dy = m |width|;
+// m = cross(n, fixed tangent) when |cross(n, d)| < RF_DIFF_MIN_SINE.
+fn rf_anisotropic_cone_axes(width: f32, normal: vec3<f32>, direction: vec3<f32>) -> RfDerivatives3 {
+    let across = cross(normal, direction);
+    let length2 = dot(across, across);
+    var minor: vec3<f32>;
+    if length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE {
+        minor = cross(normal, rf_orthonormal_tangent(normal));
+    } else {
+        minor = across / sqrt(length2);
+    }
+    let size = abs(width);
+    return RfDerivatives3(
+        cross(minor, normal) * (size / max(abs(dot(normal, direction)), RF_DIFF_MIN_COS)),
+        minor * size,
+    );
+}
+
+// Unit triangle normal: cross(p1 - p0, p2 - p0) / max(scaled length, RF_DIFF_MIN_MAGNITUDE).
+fn rf_triangle_unit_normal(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>) -> vec3<f32> {
+    let area_normal = cross(p1 - p0, p2 - p0);
+    return area_normal / max(rf_scaled_length(area_normal), RF_DIFF_MIN_MAGNITUDE);
+}
+
+// Anisotropic textureGrad gradients of a cone hitting a triangle (JCGT 2021, errata factor 2): UV at
+// hit + axis minus UV at the hit for the rf_anisotropic_cone_axes in the triangle's plane.
+fn rf_anisotropic_cone_gradients(
+    width: f32, direction: vec3<f32>, p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>,
+    uv0: vec2<f32>, uv1: vec2<f32>, uv2: vec2<f32>,
+) -> RfDerivatives2 {
+    let normal = rf_triangle_unit_normal(p0, p1, p2);
+    let axes = rf_anisotropic_cone_axes(width, normal, direction);
+    let offsets = RfRayDiff(axes.dx, 0.0, axes.dy, 0.0, vec3<f32>(0.0), 0.0, vec3<f32>(0.0), 0.0);
+    let barycentric = rf_barycentric_derivatives(offsets, normal, 0.0, p0, p1, p2);
+    return rf_texture_derivatives(barycentric, uv0, uv1, uv2);
+}
+
+// Isotropic differential of a cone (width, spread_angle) around d: u = tangent of d, v = cross(d, u),
+// dO = width (u, v), dD = spread_angle (u, v).
+fn rf_ray_diff_from_cone(cone: vec2<f32>, direction: vec3<f32>) -> RfRayDiff {
+    let u = rf_orthonormal_tangent(direction);
+    let v = cross(direction, u);
+    return RfRayDiff(cone.x * u, 0.0, cone.x * v, 0.0, cone.y * u, 0.0, cone.y * v, 0.0);
+}
+
+// (width, spread) of one axis: the lengths of dO and dD across d, the spread negative when they point apart.
+fn rf_transverse_cone(d_origin: vec3<f32>, d_direction: vec3<f32>, direction: vec3<f32>) -> vec2<f32> {
+    let origin = d_origin - dot(d_origin, direction) * direction;
+    let turn = d_direction - dot(d_direction, direction) * direction;
+    let sign_turn = select(-1.0, 1.0, dot(origin, turn) >= 0.0);
+    return vec2<f32>(rf_scaled_length(origin), sign_turn * rf_scaled_length(turn));
+}
+
+// Cone (width, spread_angle) of a differential around d: the mean of its two axes' transverse cones.
+fn rf_cone_from_ray_diff(diff: RfRayDiff, direction: vec3<f32>) -> vec2<f32> {
+    let x = rf_transverse_cone(diff.d_origin_dx, diff.d_direction_dx, direction);
+    let y = rf_transverse_cone(diff.d_origin_dy, diff.d_direction_dy, direction);
+    return 0.5 * (x + y);
+}

@@ -16,7 +16,7 @@
 //!   is finite, and each function's documented clamps hold (ranges listed next to each call).
 
 use super::Words;
-use crate::ray_cone::{self as rc, PackedRayCone, RayCone};
+use crate::ray_cone::{self as rc, PackedRayCone, RayCone, RefractedRayCone};
 use crate::ray_diff::{
     self as rd, Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, RefractedRayDiff,
     TriplanarGradients,
@@ -287,6 +287,7 @@ floats! {
     Vec2 => |v| [v.x, v.y];
     Vec3 => |v| [v.x, v.y, v.z];
     RayCone => |v| [v.width, v.spread_angle];
+    RefractedRayCone => |v| [v.cone];
     PackedRayCone => |v| [rc::unpack_ray_cone(*v)];
     RayDiff => |v| [v.d_origin_dx, v.pad0, v.d_origin_dy, v.pad1, v.d_direction_dx, v.pad2, v.d_direction_dy, v.pad3];
     Derivatives2 => |v| [v.dx, v.dy];
@@ -481,6 +482,17 @@ fn ray_cone_functions() -> Vec<MirrorFunction> {
             let lod = rc::environment_lod(d.angle(), d.scalar());
             within(d, lod, rc::MIN_MAGNITUDE.log2(), f32::MAX, "environment LOD")
         }),
+        f!(RayCone, refract_ray_cone, |d| rc::refract_ray_cone(
+            d.cone(),
+            d.unit(),
+            d.unit(),
+            d.angle(),
+            d.scalar()
+        )),
+        f!(RayCone, roughness_spread_angle, |d| {
+            let spread = rc::roughness_spread_angle(d.scalar());
+            within(d, spread, 0.0, 142.0, "roughness spread")
+        }),
     ]
 }
 
@@ -620,6 +632,32 @@ fn ray_diff_functions() -> Vec<MirrorFunction> {
         f!(RayDiff, cone_barycentric_deltas, |d| {
             let deltas = rd::cone_barycentric_deltas(d.scalar(), d.vec3(), d.vec3(), d.vec3());
             within(d, deltas, 0.0, rd::DIFF_MAX_VALUE, "delta")
+        }),
+        f!(RayDiff, anisotropic_cone_axes, |d| rd::anisotropic_cone_axes(
+            d.scalar(),
+            d.unit(),
+            d.unit()
+        )),
+        f!(RayDiff, anisotropic_cone_gradients, |d| {
+            rd::anisotropic_cone_gradients(
+                d.scalar(),
+                d.unit(),
+                d.vec3(),
+                d.vec3(),
+                d.vec3(),
+                d.vec2(),
+                d.vec2(),
+                d.vec2(),
+            )
+        }),
+        f!(RayDiff, ray_diff_from_cone, |d| rd::ray_diff_from_cone(
+            d.vec2(),
+            d.unit()
+        )),
+        f!(RayDiff, cone_from_ray_diff, |d| {
+            let cone = rd::cone_from_ray_diff(d.ray_diff(), d.unit());
+            d.within(cone.x, 0.0, f32::MAX, "width");
+            cone
         }),
     ]
 }

@@ -290,6 +290,72 @@ impl Interval {
         result.expect("a divisor interval").round(2.5)
     }
 
+    /// `sin` of an interval whose ends lie in `[-pi, pi]` (where Vulkan bounds it): the exact range
+    /// (the ends, and +-1 where +-pi/2 lies inside), widened by the device's absolute error 2^-11
+    /// and the mirror's ULP.
+    pub fn sin(self) -> Interval {
+        use std::f64::consts::FRAC_PI_2;
+        let (mut lo, mut hi) = (self.lo.sin().min(self.hi.sin()), self.lo.sin().max(self.hi.sin()));
+        if self.lo <= FRAC_PI_2 && FRAC_PI_2 <= self.hi {
+            hi = 1.0;
+        }
+        if self.lo <= -FRAC_PI_2 && -FRAC_PI_2 <= self.hi {
+            lo = -1.0;
+        }
+        Interval::widened_by_sin_cos_error(lo, hi)
+    }
+
+    /// `cos` of an interval whose ends lie in `[-pi, pi]`: the exact range (the ends, and 1 where 0
+    /// lies inside), widened as [`Interval::sin`].
+    pub fn cos(self) -> Interval {
+        let (lo, mut hi) = (self.lo.cos().min(self.hi.cos()), self.lo.cos().max(self.hi.cos()));
+        if self.lo <= 0.0 && 0.0 <= self.hi {
+            hi = 1.0;
+        }
+        Interval::widened_by_sin_cos_error(lo, hi)
+    }
+
+    fn widened_by_sin_cos_error(lo: f64, hi: f64) -> Interval {
+        let error = f64::from(crate::tolerance::SIN_COS_ERROR) + F32.ulp;
+        Interval {
+            lo: lo - error,
+            hi: hi + error,
+            p: F32,
+        }
+    }
+
+    /// `atan2(y, x)`: every angle of the box `y x x`, so `[-pi, pi]` when the box holds the origin
+    /// or crosses the negative x axis, else the corners' range; widened by the device's 4096 ULP
+    /// and the mirror's one.
+    pub fn atan2(y: Interval, x: Interval) -> Interval {
+        use std::f64::consts::PI;
+        let crosses_cut = x.lo < 0.0 && y.lo <= 0.0 && y.hi >= 0.0;
+        let (lo, hi) = if crosses_cut {
+            (-PI, PI)
+        } else {
+            let corners = [
+                y.lo.atan2(x.lo),
+                y.lo.atan2(x.hi),
+                y.hi.atan2(x.lo),
+                y.hi.atan2(x.hi),
+            ];
+            (
+                corners.iter().copied().fold(f64::INFINITY, f64::min),
+                corners.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            )
+        };
+        Interval { lo, hi, p: F32 }.round(f64::from(crate::tolerance::ATAN_ULPS) + 1.0)
+    }
+
+    /// The part of the interval at or above `floor`: the values a branch taken only there sees.
+    pub fn at_least(self, floor: f64) -> Interval {
+        Interval {
+            lo: self.lo.max(floor),
+            hi: self.hi.max(floor),
+            ..self
+        }
+    }
+
     /// Converts an f64 computation's result to f32 (half an f32 ULP on each side).
     pub fn to_f32(self) -> Interval {
         Interval { p: F32, ..self }.round(0.5)
@@ -388,6 +454,27 @@ pub fn sum_of_products(terms: &[(Interval, Interval)]) -> Interval {
         lo: sum.lo - w,
         hi: sum.hi + w,
         p,
+    }
+}
+
+/// The enclosures of a branch on a condition that intervals decide: `then` where the condition is
+/// `certainly` true, `otherwise` where it is not even `possibly` true, and the hull of both,
+/// component by component, where the intervals leave it open (the device and the mirror may take
+/// different branches there).
+pub fn select(
+    certainly: bool,
+    possibly: bool,
+    then: impl Fn() -> Vec<Interval>,
+    otherwise: impl Fn() -> Vec<Interval>,
+) -> Vec<Interval> {
+    match (certainly, possibly) {
+        (true, _) => then(),
+        (false, false) => otherwise(),
+        (false, true) => then()
+            .into_iter()
+            .zip(otherwise())
+            .map(|(a, b)| a.hull(b))
+            .collect(),
     }
 }
 

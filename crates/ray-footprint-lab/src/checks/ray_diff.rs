@@ -8,14 +8,14 @@
 
 use super::enclosed;
 use super::strategy::{
-    distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle, unit_vec3,
+    angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle, unit_vec3,
     uv_triangle, vec3,
 };
 use glam::{Mat4, Quat, Vec2, Vec3, Vec4Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, DIFF_MAX_FOV_Y,
-    DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
+    DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE, DIFF_MIN_SINE,
 };
 use shader_proptest::interval::{
     interval2 as v2, interval3 as v3, mat_vec, Interval as I, Interval2 as V2, Interval3 as V3,
@@ -1042,6 +1042,192 @@ pub fn cone_barycentric_deltas() -> FunctionCheck<(f32, Vec3, Vec3, Vec3), Vec3>
     )
 }
 
+/// Componentwise hull of two vectors.
+fn hull3(a: V3, b: V3) -> V3 {
+    a.zip(b, |x, y| x.hull(y))
+}
+
+fn b_orthonormal_tangent(n: V3) -> V3 {
+    let branch = |sign: f64| {
+        let [x, y, z] = n.0;
+        let s = I::c(sign);
+        let a = I::c(-1.0) / (s + z);
+        V([I::c(1.0) + s * x * x * a, s * x * y * a, I::c(-sign) * x])
+    };
+    let z = n.0[2];
+    if z.lo >= 0.0 {
+        branch(1.0)
+    } else if z.hi < 0.0 {
+        branch(-1.0)
+    } else {
+        hull3(branch(1.0), branch(-1.0))
+    }
+}
+
+/// The major and the minor axis; the hull of both choices of the minor axis where `|cross(n, d)|^2`
+/// is within rounding of `DIFF_MIN_SINE^2`.
+fn b_anisotropic_cone_axes(width: f32, normal: V3, direction: V3) -> (V3, V3) {
+    let across = normal.cross(direction);
+    let length2 = across.dot(across);
+    let min2 = f64::from(DIFF_MIN_SINE * DIFF_MIN_SINE);
+    let fixed = || normal.cross(b_orthonormal_tangent(normal));
+    let measured = || {
+        across
+            / I {
+                lo: length2.lo.max(min2),
+                ..length2
+            }
+            .sqrt()
+    };
+    let minor = if length2.hi < min2 {
+        fixed()
+    } else if length2.lo >= min2 {
+        measured()
+    } else {
+        hull3(fixed(), measured())
+    };
+    let size = s(width.abs());
+    let cosine = normal.dot(direction).abs().max_c(f64::from(DIFF_MIN_COS));
+    (minor.cross(normal) * (size / cosine), minor * size)
+}
+
+/// The arguments of `anisotropic_cone_gradients`: width, direction, the triangle, its UVs.
+pub type ConeGradientArgs = (f32, Vec3, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
+
+fn b_anisotropic_cone_gradients(&(width, direction, p0, p1, p2, uv0, uv1, uv2): &ConeGradientArgs) -> Vec<I> {
+    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    let (e1, e2) = (p1 - p0, p2 - p0);
+    let area_normal = e1.cross(e2);
+    let normal = area_normal / b_scaled_length(area_normal).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    let (major, minor) = b_anisotropic_cone_axes(width, normal, v3(direction));
+    let k = e1.cross(e2).dot(normal);
+    let (cu, cv) = (e2.cross(normal), normal.cross(e1));
+    let barycentric = |offset: V3| {
+        [
+            b_barycentric_quotient(cu.dot(offset), k),
+            b_barycentric_quotient(cv.dot(offset), k),
+        ]
+    };
+    let (g1, g2) = (v2(uv1) - v2(uv0), v2(uv2) - v2(uv0));
+    let uv = |[du, dv]: [I; 2]| g1 * du + g2 * dv;
+    b_derivatives2(uv(barycentric(major)), uv(barycentric(minor)))
+}
+
+fn b_ray_diff_from_cone(&(cone, direction): &(Vec2, Vec3)) -> Vec<I> {
+    let d = v3(direction);
+    let u = b_orthonormal_tangent(d);
+    let v = d.cross(u);
+    let (width, spread) = (s(cone.x), s(cone.y));
+    b_ray_diff(u * width, v * width, u * spread, v * spread)
+}
+
+/// One axis; the sign of the spread is exact when the origin change is exactly 0 (then the dot
+/// product is exactly 0 on every implementation), else the hull of both where rounding leaves it
+/// open.
+fn b_transverse_cone(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> [I; 2] {
+    let d = v3(direction);
+    let across = |v: Vec3| v3(v) - d * v3(v).dot(d);
+    let (origin, turn) = (across(d_origin), across(d_direction));
+    let spread = b_scaled_length(turn);
+    let alignment = origin.dot(turn);
+    let signed = if alignment.lo >= 0.0 || d_origin == Vec3::ZERO {
+        spread
+    } else if alignment.hi < 0.0 {
+        -spread
+    } else {
+        spread.hull(-spread)
+    };
+    [b_scaled_length(origin), signed]
+}
+
+fn b_cone_from_ray_diff(&(diff, direction): &(RayDiff, Vec3)) -> Vec<I> {
+    let x = b_transverse_cone(diff.d_origin_dx, diff.d_direction_dx, direction);
+    let y = b_transverse_cone(diff.d_origin_dy, diff.d_direction_dy, direction);
+    vec![I::c(0.5) * (x[0] + y[0]), I::c(0.5) * (x[1] + y[1])]
+}
+
+/// A triangle and a unit direction: random, or meeting the triangle's plane at a cosine from
+/// head-on to grazing.
+fn triangle_and_direction() -> BoxedStrategy<([Vec3; 3], Vec3)> {
+    let cosine = prop_oneof![
+        3 => 0.0f32..1.0,
+        1 => (-6.0f32..-2.0).prop_map(|e| 10f32.powf(e)),
+        1 => Just(0.0f32),
+        1 => Just(1.0f32),
+    ];
+    (triangle(), unit_vec3(), cosine, any::<bool>())
+        .prop_map(|(p, random, cosine, relative)| {
+            let normal = (p[1] - p[0]).cross(p[2] - p[0]).try_normalize();
+            let direction = match normal {
+                Some(n) if relative => {
+                    let tangent = n
+                        .cross(random)
+                        .try_normalize()
+                        .unwrap_or_else(|| n.any_orthonormal_vector());
+                    (tangent * (1.0 - cosine * cosine).max(0.0).sqrt() - n * cosine).normalize()
+                }
+                _ => random,
+            };
+            (p, direction)
+        })
+        .boxed()
+}
+
+/// `rf_anisotropic_cone_axes`: the enclosure of the axes.
+pub fn anisotropic_cone_axes() -> FunctionCheck<(f32, Vec3, Vec3), Derivatives3> {
+    enclosed(
+        "anisotropic_cone_axes",
+        || {
+            (scalar(), normal_and_direction(), any::<bool>())
+                .prop_map(|(width, (n, d), behind)| (width, if behind { -n } else { n }, d))
+                .boxed()
+        },
+        |(width, n, d)| rd::anisotropic_cone_axes(width, n, d),
+        |&(width, n, d)| {
+            let (major, minor) = b_anisotropic_cone_axes(width, v3(n), v3(d));
+            b_derivatives3(major, minor)
+        },
+    )
+}
+
+/// `rf_anisotropic_cone_gradients`: the enclosure of the UV gradients.
+pub fn anisotropic_cone_gradients() -> FunctionCheck<ConeGradientArgs, Derivatives2> {
+    enclosed(
+        "anisotropic_cone_gradients",
+        || {
+            (scalar(), triangle_and_direction(), uv_triangle())
+                .prop_map(|(w, (p, d), uv)| (w, d, p[0], p[1], p[2], uv[0], uv[1], uv[2]))
+                .boxed()
+        },
+        |(w, d, p0, p1, p2, uv0, uv1, uv2)| rd::anisotropic_cone_gradients(w, d, p0, p1, p2, uv0, uv1, uv2),
+        b_anisotropic_cone_gradients,
+    )
+}
+
+/// `rf_ray_diff_from_cone`: the enclosure of the differential.
+pub fn ray_diff_from_cone() -> FunctionCheck<(Vec2, Vec3), RayDiff> {
+    enclosed(
+        "ray_diff_from_cone",
+        || {
+            ((scalar(), angle()), unit_vec3())
+                .prop_map(|((w, a), d)| (Vec2::new(w, a), d))
+                .boxed()
+        },
+        |(cone, d)| rd::ray_diff_from_cone(cone, d),
+        b_ray_diff_from_cone,
+    )
+}
+
+/// `rf_cone_from_ray_diff`: the enclosure of the cone.
+pub fn cone_from_ray_diff() -> FunctionCheck<(RayDiff, Vec3), Vec2> {
+    enclosed(
+        "cone_from_ray_diff",
+        || (ray_diff(), unit_vec3()).boxed(),
+        |(diff, d)| rd::cone_from_ray_diff(diff, d),
+        b_cone_from_ray_diff,
+    )
+}
+
 /// Every check of the module, in the module's function order.
 pub fn checks() -> Vec<Box<dyn Check>> {
     vec![
@@ -1073,5 +1259,9 @@ pub fn checks() -> Vec<Box<dyn Check>> {
         Box::new(barycentric_deltas()),
         Box::new(uv_gradients_from_offsets()),
         Box::new(cone_barycentric_deltas()),
+        Box::new(anisotropic_cone_axes()),
+        Box::new(anisotropic_cone_gradients()),
+        Box::new(ray_diff_from_cone()),
+        Box::new(cone_from_ray_diff()),
     ]
 }

@@ -3,15 +3,19 @@
 
 use super::{Degenerate, Expect, Row, Table};
 use glam::{DVec3, Mat4, Vec2, Vec3};
-use ray_footprint::ray_cone::{self as rc, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{
+    self as rc, RayCone, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS, MIN_MAGNITUDE,
+    MIN_ROUGHNESS_DENOMINATOR,
+};
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, RayDiff, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
 };
 use ray_footprint::ray_diff_f64 as rd64;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{self as wf, WireframeSettings, WireframeSettingsIo, WIREFRAME_DEFAULT};
+use ray_footprint_lab::checks::{ray_cone as cone_suite, ray_diff as diff_suite};
 use shader_proptest::tolerance::{log2_error, tan_error, ulps};
-use shader_proptest::Value;
+use shader_proptest::{Args, FunctionCheck, Value};
 
 const NAN: f32 = f32::NAN;
 const INF: f32 = f32::INFINITY;
@@ -79,6 +83,7 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
     let proj_inv = glam::camera::rh::proj::vulkan::perspective(1.0, 1.5, 0.1, 100.0).inverse();
     let (x, z) = (Vec3::X, Vec3::Z);
     let (head_on, in_plane, grazing) = (Vec3::NEG_Z, Vec3::X, direction_at(1.0e-6));
+    let thirty_degrees = Vec3::new(0.5, 0.0, -0.866_025_4);
     let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
     let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
     let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
@@ -681,6 +686,87 @@ fn ray_cone() -> Vec<Box<dyn Degenerate>> {
                 ),
             ],
         }),
+        Box::new(Table {
+            module: Module::RayCone,
+            function: "refract_ray_cone",
+            mirror: |(c, n, d, beta, eta)| rc::refract_ray_cone(c, n, d, beta, eta),
+            // The agreement check's enclosure, widest over the three components.
+            tolerance: |a, _| widest(cone_suite::refract_ray_cone(), a),
+            rows: vec![
+                value(
+                    "normal incidence, flat, no spread (eta 1.5)",
+                    "(width, 0), not reflected",
+                    (cone(0.5, 0.0), z, head_on, 0.0, 1.5),
+                    vec![0.5, 0.0, 0.0],
+                ),
+                value(
+                    "zero cone",
+                    "zero cone",
+                    (cone(0.0, 0.0), z, thirty_degrees, 0.0, 1.5),
+                    vec![0.0, 0.0, 0.0],
+                ),
+                value(
+                    "central ray past the critical angle (sin i = 0.8, eta 1.5)",
+                    "the reflected cone (width, spread + 2 beta), flag set",
+                    (cone(0.25, 0.125), z, Vec3::new(0.8, 0.0, -0.6), 0.0625, 1.5),
+                    vec![0.25, 0.25, 1.0],
+                ),
+                same(
+                    "normal facing away from the ray (dot(n, d) > 0)",
+                    "as the flipped normal with the negated normal spread",
+                    (cone(0.01, 0.002), -z, thirty_degrees, 0.01, 1.5),
+                    (cone(0.01, 0.002), z, thirty_degrees, -0.01, 1.5),
+                ),
+                same(
+                    "grazing (|dot(n, d)| = 1e-6), eta 0.5",
+                    "as a direction in the surface plane: both boundary rays land at |cos| = MIN_COS",
+                    (cone(0.01, 0.002), z, grazing, 0.0, 0.5),
+                    (cone(0.01, 0.002), z, in_plane, 0.0, 0.5),
+                ),
+                same(
+                    "spread wider than the surface allows (3.5 at normal incidence)",
+                    "as spread 2 MAX_INCIDENCE_ANGLE (both boundary rays graze)",
+                    (cone(0.01, 3.5), z, head_on, 0.0, 1.5),
+                    (cone(0.01, 2.0 * MAX_INCIDENCE_ANGLE), z, head_on, 0.0, 1.5),
+                ),
+                same(
+                    "normal spread 10",
+                    "as MAX_NORMAL_SPREAD",
+                    (cone(0.01, 0.002), z, thirty_degrees, 10.0, 1.5),
+                    (cone(0.01, 0.002), z, thirty_degrees, MAX_NORMAL_SPREAD, 1.5),
+                ),
+                same(
+                    "negative eta",
+                    "as eta 0",
+                    (cone(0.01, 0.002), z, thirty_degrees, 0.0, -2.0),
+                    (cone(0.01, 0.002), z, thirty_degrees, 0.0, 0.0),
+                ),
+                same(
+                    "zero direction",
+                    "as normal incidence (d = -n)",
+                    (cone(0.5, 0.01), z, Vec3::ZERO, 0.0, 1.5),
+                    (cone(0.5, 0.01), z, head_on, 0.0, 1.5),
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
+            function: "roughness_spread_angle",
+            mirror: |(r,)| rc::roughness_spread_angle(r),
+            // The agreement check's enclosure.
+            tolerance: |a, e| cone_suite::roughness_spread_angle().bounds(a, &e)[0],
+            rows: vec![
+                value("roughness 0", "0", (0.0,), vec![0.0]),
+                value(
+                    "roughness 1",
+                    "2 sqrt(0.5 / MIN_ROUGHNESS_DENOMINATOR), about 141.4",
+                    (1.0,),
+                    vec![2.0 * (0.5 / MIN_ROUGHNESS_DENOMINATOR).sqrt()],
+                ),
+                same("negative roughness", "as roughness 0", (-0.5,), (0.0,)),
+                same("roughness 2", "as roughness 1", (2.0,), (1.0,)),
+            ],
+        }),
     ]
 }
 
@@ -1103,7 +1189,131 @@ fn ray_diff() -> Vec<Box<dyn Degenerate>> {
                 ),
             ],
         }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "anisotropic_cone_axes",
+            mirror: |(w, n, d)| rd::anisotropic_cone_axes(w, n, d),
+            tolerance: |a, _| widest(diff_suite::anisotropic_cone_axes(), a),
+            rows: vec![
+                value(
+                    "normal incidence (d = -n)",
+                    "a circle: |width| along Duff et al.'s tangent of n and along cross(n, tangent)",
+                    (0.5, z, -z),
+                    vec![0.5, 0.0, 0.0, 0.0, 0.5, 0.0],
+                ),
+                value(
+                    "ray in the surface plane",
+                    "major axis |width| / DIFF_MIN_COS along d, minor |width|",
+                    (0.5, z, x),
+                    vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.0, 0.5, 0.0],
+                ),
+                value(
+                    "grazing (|dot(n, d)| = 1e-6)",
+                    "as the ray in the surface plane (|cos| clamped to DIFF_MIN_COS)",
+                    (0.5, z, direction_at(1.0e-6)),
+                    vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.0, 0.5, 0.0],
+                ),
+                value("zero width", "zero axes", (0.0, z, -z), vec![0.0; 6]),
+                same("negative width", "as |width|", (-0.5, z, -z), (0.5, z, -z)),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "anisotropic_cone_gradients",
+            mirror: |(w, d, p0, p1, p2, uv0, uv1, uv2)| {
+                rd::anisotropic_cone_gradients(w, d, p0, p1, p2, uv0, uv1, uv2)
+            },
+            tolerance: |a, _| widest(diff_suite::anisotropic_cone_gradients(), a),
+            rows: vec![
+                value(
+                    "normal incidence, unit triangle, uv = xy",
+                    "(|width|, 0), (0, |width|)",
+                    (0.5, -z, Vec3::ZERO, x, y, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.5, 0.0, 0.0, 0.5],
+                ),
+                value(
+                    "ray in the triangle's plane",
+                    "(|width| / DIFF_MIN_COS, 0), (0, |width|)",
+                    (0.5, x, Vec3::ZERO, x, y, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.5],
+                ),
+                value(
+                    "zero-area triangle (repeated vertex)",
+                    "zero gradients (the unit normal is 0)",
+                    (0.5, -z, Vec3::ZERO, x, Vec3::ZERO, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.0; 4],
+                ),
+                value(
+                    "zero width",
+                    "zero gradients",
+                    (0.0, -z, Vec3::ZERO, x, y, Vec2::ZERO, Vec2::X, Vec2::Y),
+                    vec![0.0; 4],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "ray_diff_from_cone",
+            mirror: |(c, d)| rd::ray_diff_from_cone(c, d),
+            tolerance: |a, _| widest(diff_suite::ray_diff_from_cone(), a),
+            rows: vec![
+                value("zero cone", "zero differential", (Vec2::ZERO, -z), vec![0.0; 16]),
+                value(
+                    "direction -Z",
+                    "u = (1, 0, 0), v = (0, -1, 0)",
+                    (Vec2::new(0.5, 0.25), -z),
+                    parts(RayDiff::new(0.5 * x, -0.5 * y, 0.25 * x, -0.25 * y)),
+                ),
+                value(
+                    "direction +Z",
+                    "u = (1, 0, 0), v = (0, 1, 0)",
+                    (Vec2::new(0.5, 0.25), z),
+                    parts(RayDiff::new(0.5 * x, 0.5 * y, 0.25 * x, 0.25 * y)),
+                ),
+                value(
+                    "zero direction",
+                    "u = (1, 0, 0), v = 0: the y differentials vanish",
+                    (Vec2::new(0.5, 0.25), Vec3::ZERO),
+                    parts(RayDiff::new(0.5 * x, Vec3::ZERO, 0.25 * x, Vec3::ZERO)),
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayDiff,
+            function: "cone_from_ray_diff",
+            mirror: |(diff, d)| rd::cone_from_ray_diff(diff, d),
+            tolerance: |a, _| widest(diff_suite::cone_from_ray_diff(), a),
+            rows: vec![
+                value("zero differential", "(0, 0)", (RayDiff::ZERO, -z), vec![0.0, 0.0]),
+                value(
+                    "pinhole eye ray (dO = 0), |dD/dx| = 0.01, |dD/dy| = 0.02",
+                    "(0, mean spread 0.015), diverging",
+                    (RayDiff::new(Vec3::ZERO, Vec3::ZERO, 0.01 * x, 0.02 * y), -z),
+                    vec![0.0, 0.5 * (0.01 + 0.02)],
+                ),
+                value(
+                    "origin and direction changes pointing apart",
+                    "negative spread (converging)",
+                    (RayDiff::new(x, y, -0.5 * x, -0.5 * y), -z),
+                    vec![1.0, -0.5],
+                ),
+                value(
+                    "changes along the ray only",
+                    "(0, 0): only the parts across the ray count",
+                    (RayDiff::new(2.0 * z, 2.0 * z, z, z), -z),
+                    vec![0.0, 0.0],
+                ),
+            ],
+        }),
     ]
+}
+
+/// The widest of an agreement check's per-component tolerances for `args`.
+fn widest<A: Args, R: Value>(check: FunctionCheck<A, R>, args: &A) -> f32 {
+    check
+        .bounds(args, &check.mirror(args.clone()))
+        .into_iter()
+        .fold(0.0, f32::max)
 }
 
 /// `(1, 0, 0) - hit` for the hit of [`offset_args`]: what a zero-area triangle gives.
