@@ -32,9 +32,12 @@ pub const DIFF_MAX_FOV_Y: f32 = 3.1;
 pub const DIFF_MIN_COS: f32 = 1.0e-4;
 /// Smallest magnitude used as a divisor (squared lengths, triangle determinants) or passed to `log2`.
 pub const DIFF_MIN_MAGNITUDE: f32 = 1.0e-30;
-/// Largest magnitude of a barycentric coordinate or barycentric differential: a ray (nearly) parallel
-/// to the triangle's plane gives this instead of infinity.
-pub const DIFF_MAX_VALUE: f32 = 1.0e30;
+/// Largest magnitude of a barycentric coordinate, barycentric differential or closed-form delta: a
+/// ray (nearly) parallel to the triangle's plane gives this instead of infinity. `2^40` (about
+/// `1.1e12`, the top of the documented input domain): such a value times any input of the domain,
+/// summed over three terms (the UV gradients of barycentric changes), stays finite in f32, so the
+/// functions compose; a power of two, exact in every precision.
+pub const DIFF_MAX_VALUE: f32 = 1_099_511_627_776.0;
 /// Largest triplanar blend sharpness; larger exponents are clamped so the weights cannot all underflow.
 pub const DIFF_MAX_SHARPNESS: f32 = 64.0;
 
@@ -644,11 +647,16 @@ pub fn planar_mapping_gradients(d_position: Derivatives3, scale: Vec2) -> Deriva
 }
 
 /// Triplanar blend weights (Quilez): `m = |n|^k / (m.x + m.y + m.z)` with `k = sharpness` clamped to
-/// `[0, DIFF_MAX_SHARPNESS]`, `|n|` to `>= DIFF_MIN_MAGNITUDE` (so `0^0` never occurs) and the sum to
-/// `>= DIFF_MIN_MAGNITUDE`. The weights of the yz, zx and xy projections, summing to 1.
+/// `[0, DIFF_MAX_SHARPNESS]`. The weights of the yz, zx and xy projections, summing to 1. The
+/// weights do not depend on `|n|`, so `|n|` is first divided by its largest component (at least
+/// `DIFF_MIN_MAGNITUDE`): `|n|^k` can then neither overflow nor underflow to all zeros, for any
+/// finite normal; each component is clamped to `>= DIFF_MIN_MAGNITUDE` (so `0^0` never occurs) and
+/// the sum to `>= DIFF_MIN_MAGNITUDE`.
 pub fn triplanar_weights(normal: Vec3, sharpness: f32) -> Vec3 {
     let k = sharpness.clamp(0.0, DIFF_MAX_SHARPNESS);
-    let m = normal.abs().max(Vec3::splat(DIFF_MIN_MAGNITUDE)).powf(k);
+    let size = normal.abs();
+    let largest = size.x.max(size.y).max(size.z.max(DIFF_MIN_MAGNITUDE));
+    let m = (size / largest).max(Vec3::splat(DIFF_MIN_MAGNITUDE)).powf(k);
     m / (m.x + m.y + m.z).max(DIFF_MIN_MAGNITUDE)
 }
 

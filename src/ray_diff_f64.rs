@@ -17,13 +17,14 @@
 
 use glam::{DVec2, DVec3, Mat4, Vec3, Vec4Swizzles};
 
-/// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane),
-/// as `DIFF_MIN_MAGNITUDE` in [`crate::ray_diff`]: the f32 value `1e-30` widened, the same in all three
-/// languages (naga's GLSL front end reads no double literals, so the shaders convert a float literal).
-pub const F64_MIN_MAGNITUDE: f64 = 1.0e-30_f32 as f64;
-/// Largest magnitude of a barycentric coordinate, as `DIFF_MAX_VALUE` in [`crate::ray_diff`] (the f32
-/// value `1e30` widened); it also keeps the conversion to f32 finite.
-pub const F64_MAX_VALUE: f64 = 1.0e30_f32 as f64;
+/// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane):
+/// `2^-100` (about `7.9e-31`). A power of two, so the shaders' float literal widened to double is
+/// this exact value whichever way a compiler reads the literal (glslang folds a float literal at
+/// double precision, naga's GLSL front end reads no double literals).
+pub const F64_MIN_MAGNITUDE: f64 = 7.888_609_052_210_118e-31;
+/// Largest magnitude of a barycentric coordinate, `DIFF_MAX_VALUE` of [`crate::ray_diff`] (`2^40`,
+/// exact in every precision); it also keeps the conversion to f32 finite.
+pub const F64_MAX_VALUE: f64 = 1_099_511_627_776.0;
 
 /// Signed barycentric differences to the neighbour pixels, `(b_x - b, b_y - b)` (shader
 /// `RfBarycentricOffsets`; the same values as [`crate::ray_diff::Derivatives3`] from

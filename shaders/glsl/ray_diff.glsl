@@ -20,8 +20,9 @@ const float RF_DIFF_MAX_FOV_Y = 3.1;
 const float RF_DIFF_MIN_COS = 1.0e-4;
 // Smallest magnitude used as a divisor (squared lengths, triangle determinants) or passed to log2.
 const float RF_DIFF_MIN_MAGNITUDE = 1.0e-30;
-// Largest magnitude of a barycentric coordinate or barycentric differential (ray parallel to a plane).
-const float RF_DIFF_MAX_VALUE = 1.0e30;
+// Largest magnitude of a barycentric coordinate, differential or delta (ray parallel to a plane): 2^40,
+// so that such a value times any input of the domain (up to 1e12) stays finite.
+const float RF_DIFF_MAX_VALUE = 1099511627776.0;
 // Largest triplanar blend sharpness.
 const float RF_DIFF_MAX_SHARPNESS = 64.0;
 
@@ -362,7 +363,9 @@ RfDerivatives2 rf_planar_mapping_gradients(RfDerivatives3 d_position, vec2 scale
 // Triplanar weights (Quilez): |n|^k / sum, k clamped to [0, RF_DIFF_MAX_SHARPNESS], |n| and sum clamped.
 vec3 rf_triplanar_weights(vec3 normal, float sharpness) {
     float k = clamp(sharpness, 0.0, RF_DIFF_MAX_SHARPNESS);
-    vec3 m = pow(max(abs(normal), vec3(RF_DIFF_MIN_MAGNITUDE)), vec3(k));
+    vec3 size = abs(normal);
+    float largest = max(max(size.x, size.y), max(size.z, RF_DIFF_MIN_MAGNITUDE));
+    vec3 m = pow(max(size / largest, vec3(RF_DIFF_MIN_MAGNITUDE)), vec3(k));
     return m / max(m.x + m.y + m.z, RF_DIFF_MIN_MAGNITUDE);
 }
 

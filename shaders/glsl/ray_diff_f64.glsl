@@ -9,11 +9,12 @@
 #ifndef RAY_FOOTPRINT_RAY_DIFF_F64_GLSL
 #define RAY_FOOTPRINT_RAY_DIFF_F64_GLSL
 
-// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane): the
-// float 1e-30 widened (naga's GLSL front end reads no double literals).
-const double RF_F64_MIN_MAGNITUDE = double(1.0e-30);
-// Largest magnitude of a barycentric coordinate; keeps the conversion to float finite.
-const double RF_F64_MAX_VALUE = double(1.0e30);
+// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane): 2^-100,
+// a power of two, so the float literal widened is this exact value whichever way a compiler reads it.
+const double RF_F64_MIN_MAGNITUDE = double(7.888609052210118e-31);
+// Largest magnitude of a barycentric coordinate: 2^40, as RF_DIFF_MAX_VALUE; keeps the conversion to
+// float finite.
+const double RF_F64_MAX_VALUE = double(1099511627776.0);
 
 // Signed barycentric differences to the neighbour pixels: (b_x - b, b_y - b).
 struct RfBarycentricOffsets {

@@ -16,8 +16,9 @@ const RF_DIFF_MAX_FOV_Y: f32 = 3.1;
 const RF_DIFF_MIN_COS: f32 = 1.0e-4;
 // Smallest magnitude used as a divisor (squared lengths, triangle determinants) or passed to log2.
 const RF_DIFF_MIN_MAGNITUDE: f32 = 1.0e-30;
-// Largest magnitude of a barycentric coordinate or barycentric differential (ray parallel to a plane).
-const RF_DIFF_MAX_VALUE: f32 = 1.0e30;
+// Largest magnitude of a barycentric coordinate, differential or delta (ray parallel to a plane): 2^40,
+// so that such a value times any input of the domain (up to 1e12) stays finite.
+const RF_DIFF_MAX_VALUE: f32 = 1099511627776.0;
 // Largest triplanar blend sharpness.
 const RF_DIFF_MAX_SHARPNESS: f32 = 64.0;
 
@@ -397,7 +398,9 @@ fn rf_planar_mapping_gradients(d_position: RfDerivatives3, scale: vec2<f32>) -> 
 // Triplanar weights (Quilez): |n|^k / sum, k clamped to [0, RF_DIFF_MAX_SHARPNESS], |n| and sum clamped.
 fn rf_triplanar_weights(normal: vec3<f32>, sharpness: f32) -> vec3<f32> {
     let k = clamp(sharpness, 0.0, RF_DIFF_MAX_SHARPNESS);
-    let m = pow(max(abs(normal), vec3<f32>(RF_DIFF_MIN_MAGNITUDE)), vec3<f32>(k));
+    let size = abs(normal);
+    let largest = max(max(size.x, size.y), max(size.z, RF_DIFF_MIN_MAGNITUDE));
+    let m = pow(max(size / largest, vec3<f32>(RF_DIFF_MIN_MAGNITUDE)), vec3<f32>(k));
     return m / max(m.x + m.y + m.z, RF_DIFF_MIN_MAGNITUDE);
 }
 

@@ -6,11 +6,12 @@
 // rf_barycentric_deltas) computed in f64, as the wireframe tutorial's computeDerivativeHighp: f32 in,
 // f32 out, drop-in replacements with the suffix _f64. Independent of ray_diff.wgsl.
 
-// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane): the
-// f32 1e-30 widened, as in the GLSL twin (naga's GLSL front end reads no double literals).
-const RF_F64_MIN_MAGNITUDE: f64 = f64(1.0e-30f);
-// Largest magnitude of a barycentric coordinate; keeps the conversion to f32 finite.
-const RF_F64_MAX_VALUE: f64 = f64(1.0e30f);
+// Smallest magnitude of the triangle determinant used as a divisor (ray parallel to the plane): 2^-100,
+// a power of two, so the f32 literal widened is this exact value whichever way a compiler reads it.
+const RF_F64_MIN_MAGNITUDE: f64 = f64(7.888609052210118e-31f);
+// Largest magnitude of a barycentric coordinate: 2^40, as RF_DIFF_MAX_VALUE; keeps the conversion to
+// f32 finite.
+const RF_F64_MAX_VALUE: f64 = f64(1099511627776.0f);
 
 // Signed barycentric differences to the neighbour pixels: (b_x - b, b_y - b).
 struct RfBarycentricOffsets {

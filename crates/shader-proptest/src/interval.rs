@@ -246,19 +246,28 @@ impl Interval {
         }
     }
 
-    /// `pow(x, y)` for an exact `x > 0` and exact `y >= 0` (f32 only): `exp2(y * log2(x))` with the
-    /// errors of `log2` (absolute `e`), the product (0.5 ULP) and `exp2` (`3 + 2|z|` ULP), and the
-    /// mirror's `powf` (1 ULP).
+    /// `pow(x, y)` for an exact `x > 0` and exact `y >= 0` (f32 only): see [`Interval::pow`].
     pub fn pow_exact(x: f32, y: f32) -> Interval {
-        let (x, y) = (f64::from(x), f64::from(y));
-        let log = x.log2();
-        let z = y * log;
-        let z_error = y * f64::from(crate::tolerance::log2_error(log as f32)) + 0.5 * F32.ulp * z.abs();
-        let value = x.powf(y);
-        let relative = (z_error * std::f64::consts::LN_2).exp_m1() + (4.0 + 2.0 * z.abs()) * F32.ulp;
+        Interval::exact(x).pow(y)
+    }
+
+    /// `pow(x, y)` for `x` in a positive interval and an exact `y >= 0` (f32 only), computed as
+    /// `exp2(y * log2(x))` with the errors of `log2` (absolute `e`), the product (0.5 ULP) and
+    /// `exp2` (`3 + 2|z|` ULP), and the mirror's `powf` (1 ULP); increasing in `x`, so each end
+    /// of the interval bounds one side.
+    pub fn pow(self, y: f32) -> Interval {
+        let y = f64::from(y);
+        let end = |x: f64, side: f64| {
+            let log = x.log2();
+            let z = y * log;
+            let z_error = y * f64::from(crate::tolerance::log2_error(log as f32)) + 0.5 * F32.ulp * z.abs();
+            let value = x.powf(y);
+            let relative = (z_error * std::f64::consts::LN_2).exp_m1() + (4.0 + 2.0 * z.abs()) * F32.ulp;
+            value + side * (value * relative + F32.floor)
+        };
         Interval {
-            lo: value - value * relative - F32.floor,
-            hi: value + value * relative + F32.floor,
+            lo: end(self.lo, -1.0),
+            hi: end(self.hi, 1.0),
             p: F32,
         }
     }

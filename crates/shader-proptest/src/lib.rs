@@ -52,6 +52,8 @@ pub mod interval;
 mod kernel;
 pub mod layout;
 mod shader;
+#[cfg(feature = "gpu")]
+pub mod strategy;
 pub mod tolerance;
 pub mod value;
 

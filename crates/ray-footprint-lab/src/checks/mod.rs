@@ -6,16 +6,44 @@
 //! with a comment saying how) or mechanically, as the width of an interval enclosure of the
 //! function (`shader_proptest::interval`).
 
+pub mod edge;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
 pub mod strategy;
 pub mod wireframe;
 
+use edge::Edge;
 use proptest::strategy::BoxedStrategy;
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::Interval;
 use shader_proptest::{Args, Check, FunctionCheck, Tolerance, Value};
+
+/// One function's checks: the agreement check on its well-conditioned domain, and the same
+/// function, mirror and tolerance on edge cases ([`edge`]).
+pub struct Entry {
+    /// The module declaring the function.
+    pub module: Module,
+    /// The agreement check.
+    pub check: Box<dyn Check>,
+    /// The edge-case check.
+    pub edge: Box<dyn Check>,
+}
+
+impl Entry {
+    /// The entry of `check`, a function of `module`, with its edge variant.
+    pub fn new<A: Args + Edge, R: Value>(module: Module, check: FunctionCheck<A, R>) -> Entry {
+        let edge = Box::new(check.with_perturbation(|mut args: A, rng| {
+            args.perturb(rng);
+            args
+        }));
+        Entry {
+            module,
+            check: Box::new(check),
+            edge,
+        }
+    }
+}
 
 /// A check of `rf_<function>` whose tolerance is `bound(arguments, component, expected)`.
 pub fn per_component<A: Args, R: Value>(
@@ -45,20 +73,30 @@ pub fn enclosed<A: Args, R: Value>(
     FunctionCheck::new(format!("rf_{function}"), strategy, mirror).tolerance(Tolerance::per_case(widths))
 }
 
-/// Every check of one module, in the module's function order.
-pub fn checks(module: Module) -> Vec<Box<dyn Check>> {
+/// Every function's entry in one module, in the module's function order.
+pub fn entries(module: Module) -> Vec<Entry> {
     match module {
-        Module::RayCone => ray_cone::checks(),
-        Module::RayDiff => ray_diff::checks(),
-        Module::RayDiffF64 => ray_diff_f64::checks(),
-        Module::Wireframe => wireframe::checks(),
+        Module::RayCone => ray_cone::entries(),
+        Module::RayDiff => ray_diff::entries(),
+        Module::RayDiffF64 => ray_diff_f64::entries(),
+        Module::Wireframe => wireframe::entries(),
     }
 }
 
-/// Every check of every module with its module, in module order.
+/// Every function's entry, in module order.
+pub fn all_entries() -> Vec<Entry> {
+    Module::ALL.iter().flat_map(|&module| entries(module)).collect()
+}
+
+/// The agreement checks of one module, in the module's function order.
+pub fn checks(module: Module) -> Vec<Box<dyn Check>> {
+    entries(module).into_iter().map(|entry| entry.check).collect()
+}
+
+/// Every agreement check with its module, in module order.
 pub fn all_checks() -> Vec<(Module, Box<dyn Check>)> {
-    Module::ALL
-        .iter()
-        .flat_map(|&module| checks(module).into_iter().map(move |check| (module, check)))
+    all_entries()
+        .into_iter()
+        .map(|entry| (entry.module, entry.check))
         .collect()
 }

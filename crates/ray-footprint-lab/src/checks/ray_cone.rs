@@ -3,10 +3,12 @@
 //! Each tolerance is derived from the operations the function performs (see
 //! [`shader_proptest::tolerance`]); the comment next to it says how.
 
+use super::edge::Edge;
 use super::strategy::{
     angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle,
     uv_triangle, vec3,
 };
+use super::Entry;
 use super::{enclosed, per_component};
 use glam::{Mat4, Vec2, Vec3, Vec3Swizzles};
 use proptest::prelude::*;
@@ -14,9 +16,10 @@ use ray_footprint::ray_cone::{
     self as rc, PackedRayCone, RayCone, RefractedRayCone, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD,
     MIN_COS, MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
 };
+use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3 as v3, select, Interval as I, Interval2 as V2, IntervalVec as V};
 use shader_proptest::tolerance::{atan_error, dot_error, log2_error, tan_error, ulps, ULP};
-use shader_proptest::{Args, Check, FunctionCheck, Value};
+use shader_proptest::{Args, FunctionCheck, Value};
 
 fn ray_cone() -> BoxedStrategy<RayCone> {
     (scalar(), angle())
@@ -308,7 +311,7 @@ fn off_the_plane(normal: Vec3, direction: Vec3) -> Vec3 {
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);
 
 /// `rf_pack_ray_cone`.
-pub fn pack_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+pub fn pack_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "pack_ray_cone",
         || ray_cone().prop_map(|c| (c,)).boxed(),
@@ -320,7 +323,7 @@ pub fn pack_ray_cone() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_unpack_ray_cone`.
-pub fn unpack_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+pub fn unpack_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "unpack_ray_cone",
         || packed_ray_cone().prop_map(|p| (p,)).boxed(),
@@ -331,7 +334,7 @@ pub fn unpack_ray_cone() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_pixel_spread_angle`.
-pub fn pixel_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+pub fn pixel_spread_angle() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "pixel_spread_angle",
         || (fov_y(), pixels()).boxed(),
@@ -347,7 +350,7 @@ pub fn pixel_spread_angle() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_pixel_spread_angle_small`.
-pub fn pixel_spread_angle_small() -> FunctionCheck<impl Args, impl Value> {
+pub fn pixel_spread_angle_small() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "pixel_spread_angle_small",
         || (fov_y(), pixels()).boxed(),
@@ -358,7 +361,7 @@ pub fn pixel_spread_angle_small() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_pixel_spread_angle_from_proj_inv`.
-pub fn pixel_spread_angle_from_proj_inv() -> FunctionCheck<impl Args, impl Value> {
+pub fn pixel_spread_angle_from_proj_inv() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "pixel_spread_angle_from_proj_inv",
         || (proj_inv(), pixels()).boxed(),
@@ -372,7 +375,7 @@ pub fn pixel_spread_angle_from_proj_inv() -> FunctionCheck<impl Args, impl Value
 }
 
 /// `rf_pinhole_ray_cone`.
-pub fn pinhole_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+pub fn pinhole_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "pinhole_ray_cone",
         || angle().prop_map(|a| (a,)).boxed(),
@@ -411,7 +414,7 @@ pub fn pinhole_ray_cone_for_ray() -> FunctionCheck<PinholeRayConeForRayArgs, Ray
 }
 
 /// `rf_orthographic_ray_cone`.
-pub fn orthographic_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+pub fn orthographic_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "orthographic_ray_cone",
         || (magnitude(), pixels()).boxed(),
@@ -422,7 +425,7 @@ pub fn orthographic_ray_cone() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_thin_lens_ray_cone`.
-pub fn thin_lens_ray_cone() -> FunctionCheck<impl Args, impl Value> {
+pub fn thin_lens_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "thin_lens_ray_cone",
         || (angle(), magnitude(), scalar()).boxed(),
@@ -441,7 +444,7 @@ pub fn thin_lens_ray_cone() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_width_at`.
-pub fn width_at() -> FunctionCheck<impl Args, impl Value> {
+pub fn width_at() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "width_at",
         || (ray_cone(), distance()).boxed(),
@@ -452,7 +455,7 @@ pub fn width_at() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_propagate`.
-pub fn propagate() -> FunctionCheck<impl Args, impl Value> {
+pub fn propagate() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "propagate",
         || (ray_cone(), distance(), angle()).boxed(),
@@ -469,7 +472,7 @@ pub fn propagate() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_normal_spread_angle`.
-pub fn normal_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+pub fn normal_spread_angle() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "normal_spread_angle",
         || (small_vec3(), small_vec3()).boxed(),
@@ -484,7 +487,7 @@ pub fn normal_spread_angle() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_normal_spread_angle_small`.
-pub fn normal_spread_angle_small() -> FunctionCheck<impl Args, impl Value> {
+pub fn normal_spread_angle_small() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "normal_spread_angle_small",
         || (small_vec3(), small_vec3()).boxed(),
@@ -495,7 +498,7 @@ pub fn normal_spread_angle_small() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_curvature_sign`.
-pub fn curvature_sign() -> FunctionCheck<impl Args, impl Value> {
+pub fn curvature_sign() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "curvature_sign",
         || (small_vec3(), small_vec3(), small_vec3(), small_vec3()).boxed(),
@@ -515,7 +518,7 @@ pub fn curvature_sign() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_surface_spread_angle`.
-pub fn surface_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+pub fn surface_spread_angle() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "surface_spread_angle",
         || {
@@ -534,7 +537,7 @@ pub fn surface_spread_angle() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_edge_curvature`.
-pub fn edge_curvature() -> FunctionCheck<impl Args, impl Value> {
+pub fn edge_curvature() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "edge_curvature",
         || (vec3(), vec3(), small_vec3(), small_vec3()).boxed(),
@@ -544,7 +547,7 @@ pub fn edge_curvature() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_triangle_curvature`.
-pub fn triangle_curvature() -> FunctionCheck<impl Args, impl Value> {
+pub fn triangle_curvature() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "triangle_curvature",
         || {
@@ -571,7 +574,7 @@ pub fn triangle_curvature() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_curvature_spread_angle`.
-pub fn curvature_spread_angle() -> FunctionCheck<impl Args, impl Value> {
+pub fn curvature_spread_angle() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "curvature_spread_angle",
         // Signed curvatures and widths; the ray meets the normal's side or the other one, never
@@ -592,7 +595,7 @@ pub fn curvature_spread_angle() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_world_footprint`.
-pub fn world_footprint() -> FunctionCheck<impl Args, impl Value> {
+pub fn world_footprint() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "world_footprint",
         || {
@@ -613,7 +616,7 @@ pub fn world_footprint() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_triangle_world_area2`.
-pub fn triangle_world_area2() -> FunctionCheck<impl Args, impl Value> {
+pub fn triangle_world_area2() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "triangle_world_area2",
         || triangle().prop_map(|p| (p[0], p[1], p[2])).boxed(),
@@ -623,7 +626,7 @@ pub fn triangle_world_area2() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_triangle_uv_area2`.
-pub fn triangle_uv_area2() -> FunctionCheck<impl Args, impl Value> {
+pub fn triangle_uv_area2() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "triangle_uv_area2",
         || uv_triangle().prop_map(|uv| (uv[0], uv[1], uv[2])).boxed(),
@@ -633,7 +636,7 @@ pub fn triangle_uv_area2() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_texel_density`.
-pub fn texel_density() -> FunctionCheck<impl Args, impl Value> {
+pub fn texel_density() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "texel_density",
         || {
@@ -654,7 +657,7 @@ pub fn texel_density() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_triangle_base_lod`.
-pub fn triangle_base_lod() -> FunctionCheck<impl Args, impl Value> {
+pub fn triangle_base_lod() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "triangle_base_lod",
         || {
@@ -716,7 +719,7 @@ pub fn texture_lod() -> FunctionCheck<TextureLodArgs, f32> {
 }
 
 /// `rf_texture_gradient`.
-pub fn texture_gradient() -> FunctionCheck<impl Args, impl Value> {
+pub fn texture_gradient() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "texture_gradient",
         || (scalar(), -1.0f32..4.0).boxed(),
@@ -727,7 +730,7 @@ pub fn texture_gradient() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_environment_lod`.
-pub fn environment_lod() -> FunctionCheck<impl Args, impl Value> {
+pub fn environment_lod() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "environment_lod",
         || (angle(), pixels()).boxed(),
@@ -779,36 +782,36 @@ pub fn roughness_spread_angle() -> FunctionCheck<(f32,), f32> {
     )
 }
 
-/// Every check of the module, in the module's function order.
-pub fn checks() -> Vec<Box<dyn Check>> {
+/// Every function's checks, in the module's function order.
+pub fn entries() -> Vec<Entry> {
     vec![
-        Box::new(pack_ray_cone()),
-        Box::new(unpack_ray_cone()),
-        Box::new(pixel_spread_angle()),
-        Box::new(pixel_spread_angle_small()),
-        Box::new(pixel_spread_angle_from_proj_inv()),
-        Box::new(pinhole_ray_cone()),
-        Box::new(pinhole_ray_cone_for_ray()),
-        Box::new(orthographic_ray_cone()),
-        Box::new(thin_lens_ray_cone()),
-        Box::new(width_at()),
-        Box::new(propagate()),
-        Box::new(normal_spread_angle()),
-        Box::new(normal_spread_angle_small()),
-        Box::new(curvature_sign()),
-        Box::new(surface_spread_angle()),
-        Box::new(edge_curvature()),
-        Box::new(triangle_curvature()),
-        Box::new(curvature_spread_angle()),
-        Box::new(world_footprint()),
-        Box::new(triangle_world_area2()),
-        Box::new(triangle_uv_area2()),
-        Box::new(texel_density()),
-        Box::new(triangle_base_lod()),
-        Box::new(texture_lod()),
-        Box::new(texture_gradient()),
-        Box::new(environment_lod()),
-        Box::new(refract_ray_cone()),
-        Box::new(roughness_spread_angle()),
+        Entry::new(Module::RayCone, pack_ray_cone()),
+        Entry::new(Module::RayCone, unpack_ray_cone()),
+        Entry::new(Module::RayCone, pixel_spread_angle()),
+        Entry::new(Module::RayCone, pixel_spread_angle_small()),
+        Entry::new(Module::RayCone, pixel_spread_angle_from_proj_inv()),
+        Entry::new(Module::RayCone, pinhole_ray_cone()),
+        Entry::new(Module::RayCone, pinhole_ray_cone_for_ray()),
+        Entry::new(Module::RayCone, orthographic_ray_cone()),
+        Entry::new(Module::RayCone, thin_lens_ray_cone()),
+        Entry::new(Module::RayCone, width_at()),
+        Entry::new(Module::RayCone, propagate()),
+        Entry::new(Module::RayCone, normal_spread_angle()),
+        Entry::new(Module::RayCone, normal_spread_angle_small()),
+        Entry::new(Module::RayCone, curvature_sign()),
+        Entry::new(Module::RayCone, surface_spread_angle()),
+        Entry::new(Module::RayCone, edge_curvature()),
+        Entry::new(Module::RayCone, triangle_curvature()),
+        Entry::new(Module::RayCone, curvature_spread_angle()),
+        Entry::new(Module::RayCone, world_footprint()),
+        Entry::new(Module::RayCone, triangle_world_area2()),
+        Entry::new(Module::RayCone, triangle_uv_area2()),
+        Entry::new(Module::RayCone, texel_density()),
+        Entry::new(Module::RayCone, triangle_base_lod()),
+        Entry::new(Module::RayCone, texture_lod()),
+        Entry::new(Module::RayCone, texture_gradient()),
+        Entry::new(Module::RayCone, environment_lod()),
+        Entry::new(Module::RayCone, refract_ray_cone()),
+        Entry::new(Module::RayCone, roughness_spread_angle()),
     ]
 }

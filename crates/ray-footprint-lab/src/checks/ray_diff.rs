@@ -6,22 +6,25 @@
 //! The `b_*` functions below are those re-evaluations, one per shader function, in the module's
 //! order of operations.
 
+use super::edge::Edge;
 use super::enclosed;
 use super::strategy::{
     angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle, unit_vec3,
     uv_triangle, vec3,
 };
+use super::Entry;
 use glam::{Mat4, Quat, Vec2, Vec3, Vec4Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, DIFF_MAX_FOV_Y,
     DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE, DIFF_MIN_SINE,
 };
+use ray_footprint::shaders::Module;
 use shader_proptest::interval::{
     interval2 as v2, interval3 as v3, mat_vec, Interval as I, Interval2 as V2, Interval3 as V3,
     IntervalVec as V, F32,
 };
-use shader_proptest::{Args, Check, FunctionCheck, Value};
+use shader_proptest::{Args, FunctionCheck, Value};
 
 // ---------------------------------------------------------------------------------------------
 // Strategies
@@ -488,7 +491,10 @@ fn b_tangent_plane_offset(rd: Vec3, rd_neighbour: Vec3, t: f32, normal: Vec3) ->
 
 fn b_triplanar_weights(normal: Vec3, sharpness: f32) -> Vec<I> {
     let k = sharpness.clamp(0.0, DIFF_MAX_SHARPNESS);
-    let m: [I; 3] = std::array::from_fn(|i| I::pow_exact(normal[i].abs().max(DIFF_MIN_MAGNITUDE), k));
+    let size = normal.abs();
+    let largest = s(size.x.max(size.y).max(size.z.max(DIFF_MIN_MAGNITUDE)));
+    let m: [I; 3] =
+        std::array::from_fn(|i| (s(size[i]) / largest).max_c(f64::from(DIFF_MIN_MAGNITUDE)).pow(k));
     let sum = (m[0] + m[1] + m[2]).max_c(f64::from(DIFF_MIN_MAGNITUDE));
     m.iter().map(|&x| x / sum).collect()
 }
@@ -635,7 +641,7 @@ fn matrices() -> BoxedStrategy<Matrices> {
 }
 
 /// `rf_eye_ray_direction`.
-pub fn eye_ray_direction() -> FunctionCheck<impl Args, impl Value> {
+pub fn eye_ray_direction() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "eye_ray_direction",
         camera,
@@ -645,7 +651,7 @@ pub fn eye_ray_direction() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_normalized_derivative`.
-pub fn normalized_derivative() -> FunctionCheck<impl Args, impl Value> {
+pub fn normalized_derivative() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "normalized_derivative",
         || (any_direction(), differential_vec3()).boxed(),
@@ -655,7 +661,7 @@ pub fn normalized_derivative() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_eye_ray_diff`.
-pub fn eye_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+pub fn eye_ray_diff() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "eye_ray_diff",
         camera_with_a_view,
@@ -665,7 +671,7 @@ pub fn eye_ray_diff() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_eye_ray_direction_from_matrices`.
-pub fn eye_ray_direction_from_matrices() -> FunctionCheck<impl Args, impl Value> {
+pub fn eye_ray_direction_from_matrices() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "eye_ray_direction_from_matrices",
         matrices,
@@ -697,7 +703,7 @@ pub fn pixel_directions() -> FunctionCheck<Matrices, NeighbourDirections> {
 }
 
 /// `rf_transfer`.
-pub fn transfer() -> FunctionCheck<impl Args, impl Value> {
+pub fn transfer() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "transfer",
         || {
@@ -728,7 +734,7 @@ pub fn barycentric_derivatives() -> FunctionCheck<BarycentricArgs, Derivatives2>
 }
 
 /// `rf_barycentric_w_derivatives`.
-pub fn barycentric_w_derivatives() -> FunctionCheck<impl Args, impl Value> {
+pub fn barycentric_w_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "barycentric_w_derivatives",
         || derivatives2().prop_map(|b| (b,)).boxed(),
@@ -758,7 +764,7 @@ pub fn texture_derivatives() -> FunctionCheck<(Derivatives2, Vec2, Vec2, Vec2), 
 }
 
 /// `rf_texel_derivatives`.
-pub fn texel_derivatives() -> FunctionCheck<impl Args, impl Value> {
+pub fn texel_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "texel_derivatives",
         || {
@@ -776,7 +782,7 @@ pub fn texel_derivatives() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_secondary_origin_derivatives`.
-pub fn secondary_origin_derivatives() -> FunctionCheck<impl Args, impl Value> {
+pub fn secondary_origin_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "secondary_origin_derivatives",
         || {
@@ -800,7 +806,7 @@ pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
 }
 
 /// `rf_lod_box`.
-pub fn lod_box() -> FunctionCheck<impl Args, impl Value> {
+pub fn lod_box() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "lod_box",
         || derivatives2().prop_map(|g| (g,)).boxed(),
@@ -810,7 +816,7 @@ pub fn lod_box() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_sample_grad_gradients`.
-pub fn sample_grad_gradients() -> FunctionCheck<impl Args, impl Value> {
+pub fn sample_grad_gradients() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "sample_grad_gradients",
         || (derivatives2(), -1.0f32..4.0).boxed(),
@@ -823,7 +829,7 @@ pub fn sample_grad_gradients() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_normal_derivatives`.
-pub fn normal_derivatives() -> FunctionCheck<impl Args, impl Value> {
+pub fn normal_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "normal_derivatives",
         || {
@@ -841,7 +847,7 @@ pub fn normal_derivatives() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_reflect_ray_diff`.
-pub fn reflect_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+pub fn reflect_ray_diff() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "reflect_ray_diff",
         || {
@@ -855,7 +861,7 @@ pub fn reflect_ray_diff() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_refract_ray_diff`.
-pub fn refract_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+pub fn refract_ray_diff() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "refract_ray_diff",
         // Within rounding of the critical angle (the enclosure of `k` contains 0) either branch is
@@ -875,7 +881,7 @@ pub fn refract_ray_diff() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_gbuffer_ray_diff`.
-pub fn gbuffer_ray_diff() -> FunctionCheck<impl Args, impl Value> {
+pub fn gbuffer_ray_diff() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "gbuffer_ray_diff",
         // The neighbour choice compares correctly rounded differences: the device makes the same
@@ -896,7 +902,7 @@ pub fn gbuffer_ray_diff() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_tangent_plane_offsets`.
-pub fn tangent_plane_offsets() -> FunctionCheck<impl Args, impl Value> {
+pub fn tangent_plane_offsets() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "tangent_plane_offsets",
         || {
@@ -914,7 +920,7 @@ pub fn tangent_plane_offsets() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_planar_mapping_gradients`.
-pub fn planar_mapping_gradients() -> FunctionCheck<impl Args, impl Value> {
+pub fn planar_mapping_gradients() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "planar_mapping_gradients",
         || {
@@ -931,7 +937,7 @@ pub fn planar_mapping_gradients() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_triplanar_weights`.
-pub fn triplanar_weights() -> FunctionCheck<impl Args, impl Value> {
+pub fn triplanar_weights() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "triplanar_weights",
         || {
@@ -944,7 +950,7 @@ pub fn triplanar_weights() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_triplanar_gradients`.
-pub fn triplanar_gradients() -> FunctionCheck<impl Args, impl Value> {
+pub fn triplanar_gradients() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "triplanar_gradients",
         || (derivatives3(), -10.0f32..10.0).boxed(),
@@ -963,7 +969,7 @@ pub fn triplanar_gradients() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_intersect_triangle_plane`.
-pub fn intersect_triangle_plane() -> FunctionCheck<impl Args, impl Value> {
+pub fn intersect_triangle_plane() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "intersect_triangle_plane",
         || {
@@ -1228,40 +1234,40 @@ pub fn cone_from_ray_diff() -> FunctionCheck<(RayDiff, Vec3), Vec2> {
     )
 }
 
-/// Every check of the module, in the module's function order.
-pub fn checks() -> Vec<Box<dyn Check>> {
+/// Every function's checks, in the module's function order.
+pub fn entries() -> Vec<Entry> {
     vec![
-        Box::new(eye_ray_direction()),
-        Box::new(normalized_derivative()),
-        Box::new(eye_ray_diff()),
-        Box::new(eye_ray_direction_from_matrices()),
-        Box::new(eye_ray_diff_from_matrices()),
-        Box::new(pixel_directions()),
-        Box::new(transfer()),
-        Box::new(barycentric_derivatives()),
-        Box::new(barycentric_w_derivatives()),
-        Box::new(texture_derivatives()),
-        Box::new(texel_derivatives()),
-        Box::new(secondary_origin_derivatives()),
-        Box::new(lod_isotropic()),
-        Box::new(lod_box()),
-        Box::new(sample_grad_gradients()),
-        Box::new(normal_derivatives()),
-        Box::new(reflect_ray_diff()),
-        Box::new(refract_ray_diff()),
-        Box::new(gbuffer_ray_diff()),
-        Box::new(tangent_plane_offsets()),
-        Box::new(planar_mapping_gradients()),
-        Box::new(triplanar_weights()),
-        Box::new(triplanar_gradients()),
-        Box::new(intersect_triangle_plane()),
-        Box::new(barycentric_offsets()),
-        Box::new(barycentric_deltas()),
-        Box::new(uv_gradients_from_offsets()),
-        Box::new(cone_barycentric_deltas()),
-        Box::new(anisotropic_cone_axes()),
-        Box::new(anisotropic_cone_gradients()),
-        Box::new(ray_diff_from_cone()),
-        Box::new(cone_from_ray_diff()),
+        Entry::new(Module::RayDiff, eye_ray_direction()),
+        Entry::new(Module::RayDiff, normalized_derivative()),
+        Entry::new(Module::RayDiff, eye_ray_diff()),
+        Entry::new(Module::RayDiff, eye_ray_direction_from_matrices()),
+        Entry::new(Module::RayDiff, eye_ray_diff_from_matrices()),
+        Entry::new(Module::RayDiff, pixel_directions()),
+        Entry::new(Module::RayDiff, transfer()),
+        Entry::new(Module::RayDiff, barycentric_derivatives()),
+        Entry::new(Module::RayDiff, barycentric_w_derivatives()),
+        Entry::new(Module::RayDiff, texture_derivatives()),
+        Entry::new(Module::RayDiff, texel_derivatives()),
+        Entry::new(Module::RayDiff, secondary_origin_derivatives()),
+        Entry::new(Module::RayDiff, lod_isotropic()),
+        Entry::new(Module::RayDiff, lod_box()),
+        Entry::new(Module::RayDiff, sample_grad_gradients()),
+        Entry::new(Module::RayDiff, normal_derivatives()),
+        Entry::new(Module::RayDiff, reflect_ray_diff()),
+        Entry::new(Module::RayDiff, refract_ray_diff()),
+        Entry::new(Module::RayDiff, gbuffer_ray_diff()),
+        Entry::new(Module::RayDiff, tangent_plane_offsets()),
+        Entry::new(Module::RayDiff, planar_mapping_gradients()),
+        Entry::new(Module::RayDiff, triplanar_weights()),
+        Entry::new(Module::RayDiff, triplanar_gradients()),
+        Entry::new(Module::RayDiff, intersect_triangle_plane()),
+        Entry::new(Module::RayDiff, barycentric_offsets()),
+        Entry::new(Module::RayDiff, barycentric_deltas()),
+        Entry::new(Module::RayDiff, uv_gradients_from_offsets()),
+        Entry::new(Module::RayDiff, cone_barycentric_deltas()),
+        Entry::new(Module::RayDiff, anisotropic_cone_axes()),
+        Entry::new(Module::RayDiff, anisotropic_cone_gradients()),
+        Entry::new(Module::RayDiff, ray_diff_from_cone()),
+        Entry::new(Module::RayDiff, cone_from_ray_diff()),
     ]
 }

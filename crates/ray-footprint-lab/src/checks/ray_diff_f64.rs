@@ -4,15 +4,18 @@
 //! intermediate operation (the same ULP counts in units of 2^-52) and half an f32 ULP for each
 //! conversion back to f32.
 
+use super::edge::Edge;
 use super::enclosed;
 use super::ray_diff::{direction_well_conditioned, offset_args, OffsetArgs, WELL_CONDITIONED};
 use super::strategy::{triangle, unit_vec3, vec3};
+use super::Entry;
 use proptest::prelude::*;
 use ray_footprint::ray_diff_f64::{self as rd64, F64_MAX_VALUE, F64_MIN_MAGNITUDE};
+use ray_footprint::shaders::Module;
 use shader_proptest::interval::{
     interval3_f64 as v3_64, mat_vec, Interval as I, Interval3 as V3, IntervalVec as V, F64,
 };
-use shader_proptest::{Args, Check, FunctionCheck, Value};
+use shader_proptest::{Args, FunctionCheck, Value};
 
 /// The determinant of a ray against a triangle's plane, in f64.
 fn b_determinant_f64(direction: V3, p0: V3, p1: V3, p2: V3) -> I {
@@ -69,7 +72,7 @@ fn b_barycentric_offsets_f64(args: &OffsetArgs) -> (V3, V3) {
 }
 
 /// `rf_intersect_triangle_plane_f64`.
-pub fn intersect_triangle_plane_f64() -> FunctionCheck<impl Args, impl Value> {
+pub fn intersect_triangle_plane_f64() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "intersect_triangle_plane_f64",
         || {
@@ -91,7 +94,7 @@ pub fn intersect_triangle_plane_f64() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_barycentric_offsets_f64`.
-pub fn barycentric_offsets_f64() -> FunctionCheck<impl Args, impl Value> {
+pub fn barycentric_offsets_f64() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "barycentric_offsets_f64",
         well_conditioned_offset_args_f64,
@@ -104,7 +107,7 @@ pub fn barycentric_offsets_f64() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_barycentric_deltas_f64`.
-pub fn barycentric_deltas_f64() -> FunctionCheck<impl Args, impl Value> {
+pub fn barycentric_deltas_f64() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "barycentric_deltas_f64",
         well_conditioned_offset_args_f64,
@@ -116,11 +119,11 @@ pub fn barycentric_deltas_f64() -> FunctionCheck<impl Args, impl Value> {
     )
 }
 
-/// Every check of the module, in the module's function order.
-pub fn checks() -> Vec<Box<dyn Check>> {
+/// Every function's checks, in the module's function order.
+pub fn entries() -> Vec<Entry> {
     vec![
-        Box::new(intersect_triangle_plane_f64()),
-        Box::new(barycentric_offsets_f64()),
-        Box::new(barycentric_deltas_f64()),
+        Entry::new(Module::RayDiffF64, intersect_triangle_plane_f64()),
+        Entry::new(Module::RayDiffF64, barycentric_offsets_f64()),
+        Entry::new(Module::RayDiffF64, barycentric_deltas_f64()),
     ]
 }

@@ -7,15 +7,18 @@
 //! side (as the ray-cone `curvature_sign` check does), and a smoothstep's error is its input's error
 //! times its largest slope nearby.
 
+use super::edge::Edge;
 use super::per_component;
 use super::strategy::{magnitude, scalar, HUGE, TINY};
+use super::Entry;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
+use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{
     self as wf, WireframeSettings, WireframeSettingsIo, MAX_LINE_THICKNESS, MIN_LINE_RAMP,
 };
 use shader_proptest::tolerance::{ulps, SIN_COS_ERROR, ULP};
-use shader_proptest::{Args, Check, FunctionCheck, Value};
+use shader_proptest::{Args, FunctionCheck, Value};
 
 /// `10^exponent` for an exponent drawn from `range` (log-uniform magnitudes).
 fn log_uniform(range: std::ops::Range<f32>) -> BoxedStrategy<f32> {
@@ -299,7 +302,7 @@ fn process_wireframe_error(settings: WireframeSettings, b: Vec3, deltas: Vec3) -
 }
 
 /// `rf_unpack_wireframe_settings`.
-pub fn unpack_wireframe_settings() -> FunctionCheck<impl Args, impl Value> {
+pub fn unpack_wireframe_settings() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "unpack_wireframe_settings",
         || settings_io().prop_map(|io| (io,)).boxed(),
@@ -310,7 +313,7 @@ pub fn unpack_wireframe_settings() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_edge_position`.
-pub fn edge_position() -> FunctionCheck<impl Args, impl Value> {
+pub fn edge_position() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "edge_position",
         || {
@@ -328,7 +331,7 @@ pub fn edge_position() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_edge_thickness`.
-pub fn edge_thickness() -> FunctionCheck<impl Args, impl Value> {
+pub fn edge_thickness() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "edge_thickness",
         || {
@@ -342,7 +345,7 @@ pub fn edge_thickness() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_stipple`.
-pub fn stipple() -> FunctionCheck<impl Args, impl Value> {
+pub fn stipple() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "stipple",
         // 0 or 1, exact away from a dash boundary. Within its rounding band either value is
@@ -360,7 +363,7 @@ pub fn stipple() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_edge_ramp`.
-pub fn edge_ramp() -> FunctionCheck<impl Args, impl Value> {
+pub fn edge_ramp() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "edge_ramp",
         || {
@@ -387,7 +390,7 @@ pub fn edge_ramp() -> FunctionCheck<impl Args, impl Value> {
 }
 
 /// `rf_line_width`.
-pub fn line_width() -> FunctionCheck<impl Args, impl Value> {
+pub fn line_width() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "line_width",
         || {
@@ -420,15 +423,15 @@ pub fn process_wireframe() -> FunctionCheck<(WireframeSettings, Vec3, Vec3), f32
     )
 }
 
-/// Every check of the module, in the module's function order.
-pub fn checks() -> Vec<Box<dyn Check>> {
+/// Every function's checks, in the module's function order.
+pub fn entries() -> Vec<Entry> {
     vec![
-        Box::new(unpack_wireframe_settings()),
-        Box::new(edge_position()),
-        Box::new(edge_thickness()),
-        Box::new(stipple()),
-        Box::new(edge_ramp()),
-        Box::new(line_width()),
-        Box::new(process_wireframe()),
+        Entry::new(Module::Wireframe, unpack_wireframe_settings()),
+        Entry::new(Module::Wireframe, edge_position()),
+        Entry::new(Module::Wireframe, edge_thickness()),
+        Entry::new(Module::Wireframe, stipple()),
+        Entry::new(Module::Wireframe, edge_ramp()),
+        Entry::new(Module::Wireframe, line_width()),
+        Entry::new(Module::Wireframe, process_wireframe()),
     ]
 }

@@ -10,6 +10,7 @@
 mod abi;
 mod agreement;
 mod degenerate;
+mod edges;
 mod rt;
 
 use shader_proptest::Gpu;

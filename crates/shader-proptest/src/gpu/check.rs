@@ -296,6 +296,27 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         FunctionCheck { tolerance, ..self }
     }
 
+    /// The same check (function, mirror, tolerance) on its cases changed by `perturb`: for example
+    /// pushed towards edge values ([`crate::strategy`]). Shrinking simplifies the original case and
+    /// perturbs it again with the same random numbers.
+    pub fn with_perturbation(
+        &self,
+        perturb: impl Fn(A, &mut TestRng) -> A + Clone + Send + Sync + 'static,
+    ) -> FunctionCheck<A, R> {
+        let strategy = Arc::clone(&self.strategy);
+        FunctionCheck {
+            function: self.function.clone(),
+            strategy: Arc::new(move || {
+                let perturb = perturb.clone();
+                strategy()
+                    .prop_perturb(move |args, mut rng| perturb(args, &mut rng))
+                    .boxed()
+            }),
+            mirror: Arc::clone(&self.mirror),
+            tolerance: self.tolerance.clone(),
+        }
+    }
+
     /// The shader function.
     pub fn function(&self) -> &str {
         &self.function
@@ -480,16 +501,6 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let per_case = prepared.expected.len() / count.max(1);
         let mut words = &output[..];
         let mut got = Vec::with_capacity(per_case);
-        stats.vacuous += prepared.vacuous.cases;
-        let components = &prepared.vacuous.by_component;
-        stats
-            .vacuous_by_component
-            .resize(stats.vacuous_by_component.len().max(components.len()), 0);
-        stats
-            .vacuous_by_component
-            .iter_mut()
-            .zip(components)
-            .for_each(|(total, count)| *total += count);
         for (case, args) in prepared.cases.iter().enumerate() {
             got.clear();
             R::read(&mut words).components(&mut got);
@@ -508,6 +519,17 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
                 }));
             }
         }
+        // The batch agreed: its vacuous cases count (a failing batch's are not compared).
+        stats.vacuous += prepared.vacuous.cases;
+        let components = &prepared.vacuous.by_component;
+        stats
+            .vacuous_by_component
+            .resize(stats.vacuous_by_component.len().max(components.len()), 0);
+        stats
+            .vacuous_by_component
+            .iter_mut()
+            .zip(components)
+            .for_each(|(total, count)| *total += count);
         Ok(None)
     }
 
