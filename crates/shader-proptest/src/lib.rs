@@ -52,6 +52,7 @@ pub mod interval;
 mod kernel;
 pub mod layout;
 mod shader;
+pub mod spirv;
 #[cfg(feature = "gpu")]
 pub mod strategy;
 pub mod tolerance;

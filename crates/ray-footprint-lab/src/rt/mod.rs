@@ -46,9 +46,9 @@ mod renderer;
 mod scene;
 mod texture;
 
-pub use mode::Mode;
+pub use mode::{Mode, Payload};
 pub use pipeline::{ray_query_source, SHADER_DIR};
-pub use renderer::{open_device, Frame, Renderer, DEVICE_REQUEST};
+pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex, VERTEX_FLOATS, WIRE_COLOUR,
 };

@@ -90,3 +90,38 @@ impl fmt::Display for Mode {
         f.pad(self.name())
     }
 }
+
+impl Mode {
+    /// What the payload of the mode's colour-only shaders carries beyond the colour and the bounce
+    /// depth: the ray cone (every mode but mip 0: the level of detail, or in the gradient modes
+    /// that of what the mirror reflects) and the eye ray's direction differentials (ray
+    /// differentials).
+    pub fn payload(self) -> Payload {
+        Payload {
+            cone: self != Mode::Mip0,
+            differentials: self == Mode::RayDiff,
+        }
+    }
+
+    /// The `#define`s (name, value) the colour-only shaders are compiled with in this mode.
+    pub fn colour_defines(self) -> Vec<(&'static str, String)> {
+        let payload = self.payload();
+        let mut defines = vec![("RT_COLOUR_MODE", format!("{}u", self.id()))];
+        if payload.cone {
+            defines.push(("RT_PAYLOAD_CONE", String::new()));
+        }
+        if payload.differentials {
+            defines.push(("RT_PAYLOAD_DIFF", String::new()));
+        }
+        defines
+    }
+}
+
+/// What a mode's colour-only payload carries beyond the colour and the bounce depth.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Payload {
+    /// The ray cone (8 bytes).
+    pub cone: bool,
+    /// The eye ray's direction differentials (24 bytes).
+    pub differentials: bool,
+}

@@ -112,40 +112,60 @@ pub(super) struct RayTracing {
     pub loader: ash::khr::ray_tracing_pipeline::Device,
 }
 
-/// The ray-generation, miss and closest-hit shaders of [`SHADER_DIR`] in one pipeline (groups:
-/// 0 ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the mirror's reflection).
+/// The stages of the recording shaders: ray generation, miss, closest hit.
+const RECORD_STAGES: [&str; 3] = ["raygen.rgen", "miss.rmiss", "closest_hit.rchit"];
+
+/// The stages of the colour-only shaders, compiled once per mode.
+pub(super) const COLOUR_STAGES: [&str; 3] = [
+    "colour_raygen.rgen",
+    "colour_miss.rmiss",
+    "colour_closest_hit.rchit",
+];
+
+/// The shader stage of each of a pipeline's three files.
+const STAGES: [(Stage, vk::ShaderStageFlags); 3] = [
+    (Stage::RayGeneration, vk::ShaderStageFlags::RAYGEN_KHR),
+    (Stage::Miss, vk::ShaderStageFlags::MISS_KHR),
+    (Stage::ClosestHit, vk::ShaderStageFlags::CLOSEST_HIT_KHR),
+];
+
+/// The ray-generation, miss and closest-hit shaders of [`SHADER_DIR`] that record what they
+/// measured, in one pipeline.
 pub(super) fn ray_tracing(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<RayTracing, Error> {
+    ray_tracing_pipeline(owner, layout, &compile_stages(RECORD_STAGES, &[])?)
+}
+
+/// The ray-generation, miss and closest-hit `files` of [`SHADER_DIR`] compiled with `defines`
+/// (name and value), as SPIR-V words in that order.
+pub(super) fn compile_stages(files: [&str; 3], defines: &[(&str, String)]) -> Result<Vec<Vec<u32>>, Error> {
+    files
+        .iter()
+        .zip(STAGES)
+        .map(|(file, (stage, _))| compile_glsl(&Path::new(SHADER_DIR).join(file), stage, defines))
+        .collect()
+}
+
+/// The compiled ray-generation, miss and closest-hit shaders `spirv` in one pipeline (groups: 0
+/// ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the mirror's reflection).
+pub(super) fn ray_tracing_pipeline(
+    owner: &mut Owner<'_>,
+    layout: vk::PipelineLayout,
+    spirv: &[Vec<u32>],
+) -> Result<RayTracing, Error> {
     let properties = ray_tracing_properties(owner);
     if properties.max_ray_recursion_depth < 2 {
         return Err(Error::Setup(String::from(
             "the device's maxRayRecursionDepth is below 2 (the renderer traces reflections)",
         )));
     }
-    let files = [
-        (
-            "raygen.rgen",
-            Stage::RayGeneration,
-            vk::ShaderStageFlags::RAYGEN_KHR,
-        ),
-        ("miss.rmiss", Stage::Miss, vk::ShaderStageFlags::MISS_KHR),
-        (
-            "closest_hit.rchit",
-            Stage::ClosestHit,
-            vk::ShaderStageFlags::CLOSEST_HIT_KHR,
-        ),
-    ];
-    let spirv = files
-        .iter()
-        .map(|&(file, stage, _)| compile_glsl(&Path::new(SHADER_DIR).join(file), stage))
-        .collect::<Result<Vec<_>, _>>()?;
     let modules = spirv
         .iter()
         .map(|words| shader_module(owner, words))
         .collect::<Result<Vec<_>, _>>()?;
-    let stage_infos: Vec<_> = files
+    let stage_infos: Vec<_> = STAGES
         .iter()
         .zip(&modules)
-        .map(|(&(_, _, stage), &module)| {
+        .map(|(&(_, stage), &module)| {
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(stage)
                 .module(module)
@@ -288,13 +308,33 @@ fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, E
 }
 
 /// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.5), with the library's
-/// GLSL directory and [`SHADER_DIR`] on the include path.
-fn compile_glsl(path: &Path, stage: Stage) -> Result<Vec<u32>, Error> {
+/// GLSL directory and [`SHADER_DIR`] on the include path and `defines` after its `#version` line
+/// (messages keep the file's line numbers).
+fn compile_glsl(path: &Path, stage: Stage, defines: &[(&str, String)]) -> Result<Vec<u32>, Error> {
     let source =
         std::fs::read_to_string(path).map_err(|e| Error::Compile(format!("{}: {e}", path.display())))?;
+    let source = with_defines(&source, defines);
     let includes = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
     glslang(&source, stage, Target::Vulkan1_2, &includes)
         .map_err(|error| Error::Compile(format!("{}:\n{error}", path.display())))
+}
+
+/// `source` with a `#define` per entry of `defines` after its `#version` line, and a `#line`
+/// that gives the lines after it their own numbers again.
+fn with_defines(source: &str, defines: &[(&str, String)]) -> String {
+    if defines.is_empty() {
+        return source.to_string();
+    }
+    let mut lines: Vec<String> = source.lines().map(str::to_string).collect();
+    if let Some(version) = lines.iter().position(|line| line.starts_with("#version")) {
+        let mut inserted: Vec<String> = defines
+            .iter()
+            .map(|(name, value)| format!("#define {name} {value}"))
+            .collect();
+        inserted.push(format!("#line {}", version + 2));
+        lines.splice(version + 1..version + 1, inserted);
+    }
+    lines.join("\n")
 }
 
 /// Compiles the ray-query shader with naga: the library modules' capabilities plus ray queries

@@ -12,6 +12,10 @@ use ash::vk;
 use shader_proptest::{vulkan, Buffer, DeviceRequest, Feature, Gpu, Location, Object, Owner};
 use std::time::{Duration, Instant};
 
+mod colour;
+
+pub use colour::ColourPipeline;
+
 /// What the renderer asks of a device: acceleration structures and ray-tracing pipelines, and
 /// where the device has them, ray queries (the WGSL path) and anisotropic filtering.
 pub const DEVICE_REQUEST: DeviceRequest<'static> = DeviceRequest {

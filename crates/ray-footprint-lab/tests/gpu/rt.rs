@@ -156,6 +156,51 @@ fn wgsl_ray_query_agrees_with_the_mirror() {
     });
 }
 
+/// Each mode's colour-only pipeline, which computes only what its mode needs and records
+/// nothing, renders exactly the pixels of the recording pipeline in that mode: the ground view,
+/// the mirror close-up and the torus close-up.
+#[test]
+fn colour_pipelines_render_the_recorded_colours() {
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
+    let views = [
+        ("ground", Camera::ground(), (WIDTH, HEIGHT)),
+        ("reflection", Camera::reflection(), (WIDTH, HEIGHT)),
+        ("torus", Camera::torus(), (WIDTH, HEIGHT)),
+    ];
+    println!("device: {}", gpu.name());
+    for mode in Mode::ALL {
+        let colour = renderer
+            .colour_pipeline(mode)
+            .unwrap_or_else(|e| panic!("{mode}: {e}"));
+        for (view, camera, (width, height)) in &views {
+            let push = renderer.push_constants(camera, mode, TEX_GRAD_SCALE, *width, *height);
+            let uniforms = camera.uniforms((*width, *height), WireframeSettings::default());
+            let recorded = renderer
+                .render(&push, &uniforms)
+                .unwrap_or_else(|e| panic!("{e}"));
+            let rendered = colour.render(&push, &uniforms).unwrap_or_else(|e| panic!("{e}"));
+            let differing = recorded
+                .pixels
+                .iter()
+                .zip(&rendered.pixels)
+                .filter(|(a, b)| a != b)
+                .count();
+            println!(
+                "{mode:<15} {view:<10} payload {:>2} bytes: {differing} of {} pixels differ",
+                colour.payload_bytes(),
+                rendered.pixels.len()
+            );
+            assert_eq!(rendered.pixels.len(), recorded.pixels.len());
+            assert!(rendered.records.is_empty());
+            assert_eq!(
+                differing, 0,
+                "{mode}, {view} view: the colour-only pipeline renders other pixels"
+            );
+        }
+    }
+}
+
 /// The views every path traces: the ground view and the mirror close-up, and the torus close-up
 /// once per wireframe preset, each with its mode, wireframe settings and image size.
 fn views() -> Vec<(Camera, Mode, WireframeSettings, (u32, u32))> {

@@ -233,6 +233,7 @@ pub trait Check: Send + Sync {
 pub struct FunctionCheck<A, R> {
     function: String,
     strategy: Arc<dyn Fn() -> BoxedStrategy<A> + Send + Sync>,
+    generator: Arc<Generator<A>>,
     mirror: Arc<dyn Fn(A) -> R + Send + Sync>,
     tolerance: Tolerance<A>,
 }
@@ -283,11 +284,34 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     where
         S: Strategy<Value = A> + 'static,
     {
+        FunctionCheck::with_parts(function.into(), strategy, Arc::new(mirror), Tolerance::Exact)
+    }
+
+    /// A check of `mirror` within `tolerance` on the cases of `strategy`: the boxed strategy that
+    /// shrinking replays, and the generator that makes batches through the strategy's own type.
+    fn with_parts<S>(
+        function: String,
+        strategy: impl Fn() -> S + Send + Sync + 'static,
+        mirror: Arc<dyn Fn(A) -> R + Send + Sync>,
+        tolerance: Tolerance<A>,
+    ) -> FunctionCheck<A, R>
+    where
+        S: Strategy<Value = A> + 'static,
+    {
+        let strategy = Arc::new(strategy);
+        let boxed = Arc::clone(&strategy);
         FunctionCheck {
-            function: function.into(),
-            strategy: Arc::new(move || strategy().boxed()),
-            mirror: Arc::new(mirror),
-            tolerance: Tolerance::Exact,
+            function,
+            strategy: Arc::new(move || boxed().boxed()),
+            generator: Arc::new(move |runner, count, cases| {
+                let strategy = strategy();
+                for _ in 0..count {
+                    cases.push(generate(&strategy, runner)?.current());
+                }
+                Ok(())
+            }),
+            mirror,
+            tolerance,
         }
     }
 
@@ -304,17 +328,16 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         perturb: impl Fn(A, &mut TestRng) -> A + Clone + Send + Sync + 'static,
     ) -> FunctionCheck<A, R> {
         let strategy = Arc::clone(&self.strategy);
-        FunctionCheck {
-            function: self.function.clone(),
-            strategy: Arc::new(move || {
-                let perturb = perturb.clone();
-                strategy()
-                    .prop_perturb(move |args, mut rng| perturb(args, &mut rng))
-                    .boxed()
-            }),
-            mirror: Arc::clone(&self.mirror),
-            tolerance: self.tolerance.clone(),
-        }
+        let perturbed = move || {
+            let perturb = perturb.clone();
+            strategy().prop_perturb(move |args, mut rng| perturb(args, &mut rng))
+        };
+        FunctionCheck::with_parts(
+            self.function.clone(),
+            perturbed,
+            Arc::clone(&self.mirror),
+            self.tolerance.clone(),
+        )
     }
 
     /// The shader function.
@@ -467,7 +490,6 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// Generates batch `index` (`size` cases) and runs the mirror and the tolerance on it.
     fn prepare(&self, seed: u64, index: usize, size: usize) -> Result<Prepared<A>, Error> {
         let mut runner = batch_runner(seed, index);
-        let strategy = (self.strategy)();
         let mut prepared = Prepared {
             index,
             cases: Vec::with_capacity(size),
@@ -476,14 +498,13 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             bounds: Vec::new(),
             vacuous: Vacuous::default(),
         };
-        for _ in 0..size {
-            let args = generate(&strategy, &mut runner)?.current();
+        (self.generator)(&mut runner, size, &mut prepared.cases)?;
+        for args in &prepared.cases {
             args.write(&mut prepared.input);
             let start = prepared.expected.len();
             self.mirror(args.clone()).components(&mut prepared.expected);
             self.tolerance
-                .bounds(&args, &prepared.expected[start..], &mut prepared.bounds);
-            prepared.cases.push(args);
+                .bounds(args, &prepared.expected[start..], &mut prepared.bounds);
         }
         prepared.vacuous = count_vacuous(&prepared.expected, &prepared.bounds, size);
         Ok(prepared)
@@ -661,11 +682,13 @@ fn check_layouts(shader: &Shader, parameters: &[ShaderType], result: ShaderType)
     Ok(())
 }
 
+/// Appends `count` cases from `runner` to a batch, each made by [`generate`] from the check's
+/// strategy in its own type (no boxed value trees): the values, and the random numbers drawn, are
+/// those of the boxed strategy that shrinking replays.
+type Generator<A> = dyn Fn(&mut TestRunner, usize, &mut Vec<A>) -> Result<(), Error> + Send + Sync;
+
 /// A value tree from `strategy`, retrying rejected values.
-fn generate<A: fmt::Debug>(
-    strategy: &BoxedStrategy<A>,
-    runner: &mut TestRunner,
-) -> Result<Box<dyn ValueTree<Value = A>>, Error> {
+fn generate<S: Strategy>(strategy: &S, runner: &mut TestRunner) -> Result<S::Tree, Error> {
     for _ in 0..MAX_REJECTIONS {
         if let Ok(tree) = strategy.new_tree(runner) {
             return Ok(tree);
@@ -747,4 +770,34 @@ fn count_vacuous(expected: &[f32], bounds: &[f32], cases: usize) -> Vacuous {
         vacuous.cases += usize::from(any);
     }
     vacuous
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A batch's cases are the values that shrinking re-generates from the batch's seed through
+    /// the boxed strategy, case by case, rejections included.
+    #[test]
+    fn batches_replay_through_the_boxed_strategy() {
+        let check = FunctionCheck::new(
+            "f",
+            || {
+                let mixed = prop_oneof![3 => -1.0f32..1.0, 1 => Just(0.0f32)];
+                (mixed, 0u32..100).prop_filter("odd", |(_, n)| n % 2 == 0)
+            },
+            |(x, n): (f32, u32)| x + n as f32,
+        );
+        let mut cases = Vec::new();
+        (check.generator)(&mut batch_runner(7, 3), 500, &mut cases).expect("cases");
+        let strategy = check.strategy();
+        let mut runner = batch_runner(7, 3);
+        for case in &cases {
+            let replayed = generate(&strategy, &mut runner).expect("a case").current();
+            assert_eq!(case.0.to_bits(), replayed.0.to_bits());
+            assert_eq!(case.1, replayed.1);
+        }
+        assert!(cases.iter().all(|(_, n)| n % 2 == 0));
+    }
 }

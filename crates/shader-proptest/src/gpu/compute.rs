@@ -1,10 +1,13 @@
 //! Compute kernels on the device: a pipeline over two storage buffers (binding 0 the input words,
 //! binding 1 the output words) and an optional push-constant block, dispatched once per batch.
+//! The buffers and their descriptor set are made by the first dispatch and reused by the next
+//! ones while they are large enough.
 
 use super::device::{vulkan, Error, Gpu};
-use super::resources::{Location, Object, Owner};
+use super::resources::{Buffer, Location, Object, Owner};
 use crate::kernel::WORKGROUP_SIZE;
 use ash::vk;
+use std::sync::Mutex;
 
 /// A compute pipeline for one kernel whose entry point is `main`; destroys itself when dropped.
 pub struct ComputeKernel<'g> {
@@ -13,6 +16,24 @@ pub struct ComputeKernel<'g> {
     layout: vk::PipelineLayout,
     set_layout: vk::DescriptorSetLayout,
     push_constant_bytes: u32,
+    /// The buffers of the last dispatch, kept for the next one.
+    io: Mutex<Option<KernelIo<'g>>>,
+}
+
+/// A kernel's input and output buffers and the descriptor set that binds them.
+struct KernelIo<'g> {
+    /// Owns the buffers, their memory and the descriptor pool.
+    owner: Owner<'g>,
+    input: Buffer,
+    output: Buffer,
+    set: vk::DescriptorSet,
+}
+
+impl KernelIo<'_> {
+    /// Whether the buffers hold `input_bytes` and `output_bytes`.
+    fn holds(&self, input_bytes: u64, output_bytes: u64) -> bool {
+        self.input.size >= input_bytes && self.output.size >= output_bytes
+    }
 }
 
 impl<'g> ComputeKernel<'g> {
@@ -80,6 +101,7 @@ impl<'g> ComputeKernel<'g> {
                 layout,
                 set_layout,
                 push_constant_bytes,
+                io: Mutex::new(None),
             })
         }
     }
@@ -109,34 +131,51 @@ impl<'g> ComputeKernel<'g> {
         if groups > gpu.properties().limits.max_compute_work_group_count[0] as usize {
             return Err(Error::BatchTooLarge(invocations));
         }
-        let mut frame = Owner::new(gpu);
-        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
-        let input_buffer = frame.buffer((input.len().max(1) * 4) as u64, storage, Location::Host, 4)?;
-        let output_buffer = frame.buffer((output_words.max(1) * 4) as u64, storage, Location::Host, 4)?;
-        frame.write(&input_buffer, bytemuck::cast_slice(input))?;
-        let set = self.descriptor_set(&mut frame, [input_buffer.buffer, output_buffer.buffer])?;
+        let (input_bytes, output_bytes) = ((input.len().max(1) * 4) as u64, (output_words.max(1) * 4) as u64);
+        let mut io = self.io.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        if !io.as_ref().is_some_and(|io| io.holds(input_bytes, output_bytes)) {
+            // The old buffers go first, so that only one set is alive at a time.
+            *io = None;
+            *io = Some(self.kernel_io(input_bytes, output_bytes)?);
+        }
+        let io = io.as_ref().expect("made above");
+        io.owner.write(&io.input, bytemuck::cast_slice(input))?;
+        self.bind(
+            io.set,
+            [(io.input.buffer, input_bytes), (io.output.buffer, output_bytes)],
+        );
         let mut push = vec![0u8; self.push_constant_bytes as usize];
         let used = push_constants.len().min(push.len());
         push[..used].copy_from_slice(&push_constants[..used]);
-        frame.submit(|device, command_buffer| {
-            self.record(device, command_buffer, set, &push, groups as u32)
+        io.owner.submit(|device, command_buffer| {
+            self.record(device, command_buffer, io.set, &push, groups as u32)
         })?;
-        frame.read(&output_buffer, output_words)
+        io.owner.read(&io.output, output_words)
     }
 
-    /// A descriptor set (from a pool `frame` owns) binding `buffers` as bindings 0 and 1.
-    fn descriptor_set(
-        &self,
-        frame: &mut Owner<'_>,
-        buffers: [vk::Buffer; 2],
-    ) -> Result<vk::DescriptorSet, Error> {
+    /// Host buffers of `input_bytes` and `output_bytes` and a descriptor set binding them.
+    fn kernel_io(&self, input_bytes: u64, output_bytes: u64) -> Result<KernelIo<'g>, Error> {
+        let mut owner = Owner::new(self.owner.gpu);
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let input = owner.buffer(input_bytes, storage, Location::Host, 4)?;
+        let output = owner.buffer(output_bytes, storage, Location::Host, 4)?;
+        let set = self.descriptor_set(&mut owner)?;
+        Ok(KernelIo {
+            owner,
+            input,
+            output,
+            set,
+        })
+    }
+
+    /// A descriptor set of the kernel's layout, from a pool `owner` owns.
+    fn descriptor_set(&self, owner: &mut Owner<'_>) -> Result<vk::DescriptorSet, Error> {
         let sizes = [vk::DescriptorPoolSize::default()
             .ty(vk::DescriptorType::STORAGE_BUFFER)
             .descriptor_count(2)];
-        // SAFETY: valid create/allocate infos; the pool is handed to `frame`, the writes match the
-        // set layout.
+        // SAFETY: valid create/allocate infos; the pool is handed to `owner`.
         unsafe {
-            let pool = frame
+            let pool = owner
                 .device()
                 .create_descriptor_pool(
                     &vk::DescriptorPoolCreateInfo::default()
@@ -145,31 +184,33 @@ impl<'g> ComputeKernel<'g> {
                     None,
                 )
                 .map_err(vulkan("vkCreateDescriptorPool"))?;
-            frame.keep(pool, Object::DescriptorPool);
+            owner.keep(pool, Object::DescriptorPool);
             let set_layouts = [self.set_layout];
-            let set = frame
+            Ok(owner
                 .device()
                 .allocate_descriptor_sets(
                     &vk::DescriptorSetAllocateInfo::default()
                         .descriptor_pool(pool)
                         .set_layouts(&set_layouts),
                 )
-                .map_err(vulkan("vkAllocateDescriptorSets"))?[0];
-            let infos = buffers.map(|buffer| {
-                [vk::DescriptorBufferInfo::default()
-                    .buffer(buffer)
-                    .range(vk::WHOLE_SIZE)]
-            });
-            let writes = [0, 1].map(|binding| {
-                vk::WriteDescriptorSet::default()
-                    .dst_set(set)
-                    .dst_binding(binding as u32)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .buffer_info(&infos[binding])
-            });
-            frame.device().update_descriptor_sets(&writes, &[]);
-            Ok(set)
+                .map_err(vulkan("vkAllocateDescriptorSets"))?[0])
         }
+    }
+
+    /// Binds the first `bytes` of each of `buffers` as bindings 0 and 1 of `set` (the kernel sees
+    /// exactly the dispatch's words, whatever the buffers' capacity). `set` is not in use.
+    fn bind(&self, set: vk::DescriptorSet, buffers: [(vk::Buffer, u64); 2]) {
+        let infos =
+            buffers.map(|(buffer, bytes)| [vk::DescriptorBufferInfo::default().buffer(buffer).range(bytes)]);
+        let writes = [0, 1].map(|binding| {
+            vk::WriteDescriptorSet::default()
+                .dst_set(set)
+                .dst_binding(binding as u32)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .buffer_info(&infos[binding])
+        });
+        // SAFETY: the writes match the set layout; every submission that used `set` was waited for.
+        unsafe { self.owner.device().update_descriptor_sets(&writes, &[]) };
     }
 
     /// Records the dispatch and makes its writes visible to the host.

@@ -88,6 +88,7 @@ pub struct Gpu {
     physical: vk::PhysicalDevice,
     device: ash::Device,
     queue: vk::Queue,
+    family: u32,
     pool: vk::CommandPool,
     name: String,
     driver: String,
@@ -180,6 +181,7 @@ impl Gpu {
             physical: candidate.physical,
             device,
             queue,
+            family: candidate.family,
             pool,
             name: candidate.name,
             driver: candidate.driver,
@@ -233,6 +235,12 @@ impl Gpu {
     pub fn properties(&self) -> vk::PhysicalDeviceProperties {
         // SAFETY: a plain query.
         unsafe { self.instance.get_physical_device_properties(self.physical) }
+    }
+
+    /// The queue family of the queue every submission goes to (its properties say, for example,
+    /// how many bits its timestamps have).
+    pub fn queue_family(&self) -> u32 {
+        self.family
     }
 
     pub(crate) fn queue(&self) -> vk::Queue {

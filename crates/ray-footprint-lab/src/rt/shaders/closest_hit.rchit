@@ -12,9 +12,6 @@ layout(location = 0) rayPayloadInEXT RfHitPayload payload;
 layout(location = 1) rayPayloadEXT RfHitPayload reflected;
 hitAttributeEXT vec2 rt_hit_barycentrics;
 
-// Direction towards the light.
-const vec3 RT_LIGHT = vec3(0.4, 0.85, 0.35);
-
 void main() {
     uint mesh = gl_InstanceCustomIndexEXT;
     RtTriangle tri = rt_triangle(mesh, gl_PrimitiveID);
@@ -34,7 +31,7 @@ void main() {
     }
     if (rt_meshes[3u * mesh + 2u] == RT_MATERIAL_MIRROR && primary) {
         float spread = pc.mode == RT_MODE_CONE_CURVATURE ? record.curvature_spread : 0.0;
-        reflected = RfHitPayload(vec3(0.0), payload.weight * 0.9, rf_propagate(payload.cone, gl_HitTEXT, spread),
+        reflected = RfHitPayload(vec3(0.0), payload.weight * RT_MIRROR_REFLECTANCE, rf_propagate(payload.cone, gl_HitTEXT, spread),
             payload.depth + 1u, 0u);
         vec3 origin = gl_WorldRayOriginEXT + gl_HitTEXT * direction + RT_SURFACE_OFFSET * record.normal;
         traceRayEXT(rt_scene, gl_RayFlagsOpaqueEXT, 0xff, 0, 0, 0, origin, 0.0,
@@ -43,8 +40,7 @@ void main() {
         return;
     }
     vec2 uv = w.x * tri.uv[0] + w.y * tri.uv[1] + w.z * tri.uv[2];
-    float light = 0.35 + 0.65 * max(dot(record.normal, normalize(RT_LIGHT)), 0.0);
-    vec3 colour = light * rt_texture_colour(record, uv, primary);
+    vec3 colour = rt_light(record.normal) * rt_texture_colour(record, uv, primary);
     if (pc.mode == RT_MODE_WIREFRAME) {
         colour = mix(colour, rt_frame.wireframe.colour.rgb, record.diff.coverage);
     }

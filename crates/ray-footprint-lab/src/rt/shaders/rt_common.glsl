@@ -30,6 +30,10 @@ const uint RT_VERTEX_FLOATS = 8u;
 const float RT_SURFACE_OFFSET = 1.0e-3;
 // Farthest hit distance.
 const float RT_MAX_DISTANCE = 1.0e4;
+// Share of the light a mirror reflects.
+const float RT_MIRROR_REFLECTANCE = 0.9;
+// Direction towards the light.
+const vec3 RT_LIGHT = vec3(0.4, 0.85, 0.35);
 
 layout(push_constant, std430) uniform RtPush { RtPushConstants pc; };
 layout(set = 0, binding = 0) uniform accelerationStructureEXT rt_scene;
@@ -73,6 +77,16 @@ vec3 rt_primary_direction(uvec2 pixel) {
     vec2 c = 2.0 * (vec2(pixel) + 0.5) / vec2(pc.width, pc.height) - 1.0;
     return normalize(pc.forward + c.x * pc.aspect * pc.tan_half_fov_y * pc.right
         - c.y * pc.tan_half_fov_y * pc.up);
+}
+
+// Diffuse lighting of a surface with unit normal `normal`: an ambient part and the light's.
+float rt_light(vec3 normal) {
+    return 0.35 + 0.65 * max(dot(normal, normalize(RT_LIGHT)), 0.0);
+}
+
+// A pixel's colour as stored: gamma 2.2, RGBA8.
+uint rt_display(vec3 colour) {
+    return packUnorm4x8(vec4(pow(clamp(colour, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0));
 }
 
 // A record with only the closed-form cone deltas and the coverage they give: what a secondary hit

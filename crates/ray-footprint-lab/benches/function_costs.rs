@@ -1,0 +1,166 @@
+//! What each shader function costs: for every public function of every module (the agreement
+//! suite's checks, in module order) and both languages, the function compiled alone in the
+//! suite's kernel for it (WGSL by naga, GLSL by glslang), optimised by `spirv-opt -O`, and
+//! counted with `shader_proptest::spirv`: instructions inside functions (the kernel's own loads
+//! and stores included: every function pays them, per argument and result word), conditional
+//! branches and switches, extended-instruction calls and, among them, transcendental calls
+//! (`shader_proptest::spirv::TRANSCENDENTAL`). Needs no Vulkan device. Every kernel has one
+//! conditional branch and one switch of its own: its bounds check, an early return that
+//! spirv-opt's merge-return pass wraps in a one-case switch.
+//!
+//! Prints a Markdown table (the README's), with a `*` where the WGSL and GLSL instruction counts
+//! differ by more than a quarter.
+//!
+//! `cargo bench -p ray-footprint-lab --bench function_costs [-- --function NAME] [--module NAME]`
+//!
+//! `--function` takes the shader name (`rf_process_wireframe`) or the mirror's
+//! (`process_wireframe`); `--module` a module's file stem (`wireframe`).
+
+use ray_footprint::shaders::Module;
+use ray_footprint_lab::checks::all_checks;
+use shader_proptest::spirv::{self, Statistics, TRANSCENDENTAL};
+use shader_proptest::{Check, Language};
+use std::process::{Command, ExitCode};
+
+/// Largest relative difference between the WGSL and GLSL instruction counts left unmarked.
+const MARK_ABOVE: f64 = 0.25;
+
+/// Which functions to measure.
+#[derive(Default)]
+struct Filter {
+    function: Option<String>,
+    module: Option<String>,
+}
+
+impl Filter {
+    fn accepts(&self, module: Module, function: &str) -> bool {
+        let function_matches = self
+            .function
+            .as_deref()
+            .is_none_or(|wanted| function == wanted || function.strip_prefix("rf_") == Some(wanted));
+        let module_matches = self
+            .module
+            .as_deref()
+            .is_none_or(|wanted| module.stem() == wanted);
+        function_matches && module_matches
+    }
+}
+
+fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Filter, String> {
+    let mut filter = Filter::default();
+    while let Some(flag) = args.next() {
+        let target = match flag.as_str() {
+            // cargo bench passes --bench to every benchmark.
+            "--bench" => continue,
+            "--function" => &mut filter.function,
+            "--module" => &mut filter.module,
+            other => return Err(format!("unknown argument '{other}'")),
+        };
+        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+        *target = Some(value);
+    }
+    Ok(filter)
+}
+
+/// The counts of `check`'s kernel for `module` in `language`, after `spirv-opt -O`.
+fn measure(module: Module, check: &dyn Check, language: Language) -> Result<Statistics, String> {
+    let shader = module.shader(language);
+    let words = shader
+        .compile_kernel(&check.kernel(&shader))
+        .map_err(|e| format!("{} ({language}): {e}", check.function()))?;
+    let optimized = spirv::optimize(&words).map_err(|e| format!("{} ({language}): {e}", check.function()))?;
+    Statistics::of(&optimized).map_err(|e| format!("{} ({language}): {e}", check.function()))
+}
+
+/// The first line `program --version` prints (on either stream), or why it did not run.
+fn version(program: &str) -> String {
+    match Command::new(program).arg("--version").output() {
+        Ok(output) => [output.stdout, output.stderr]
+            .iter()
+            .flat_map(|bytes| {
+                String::from_utf8_lossy(bytes)
+                    .lines()
+                    .map(str::to_string)
+                    .collect::<Vec<_>>()
+            })
+            .find(|line| !line.trim().is_empty())
+            .unwrap_or_default(),
+        Err(error) => format!("{program}: {error}"),
+    }
+}
+
+/// `(WGSL - GLSL) / GLSL` in per cent, marked `*` where the larger count exceeds the smaller by
+/// more than [`MARK_ABOVE`].
+fn difference(wgsl: usize, glsl: usize) -> String {
+    let ratio = wgsl as f64 / glsl.max(1) as f64;
+    let larger_over_smaller = wgsl.max(glsl) as f64 / wgsl.min(glsl).max(1) as f64;
+    let marked = larger_over_smaller > 1.0 + MARK_ABOVE;
+    format!("{:+.0}%{}", 100.0 * (ratio - 1.0), if marked { " *" } else { "" })
+}
+
+fn row(module: Module, function: &str, [wgsl, glsl]: [Statistics; 2]) -> String {
+    let branches = |s: &Statistics| format!("{}+{}", s.conditional_branches, s.switches);
+    format!(
+        "| {} | `{function}` | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+        module.stem(),
+        wgsl.instructions,
+        glsl.instructions,
+        difference(wgsl.instructions, glsl.instructions),
+        branches(&wgsl),
+        branches(&glsl),
+        wgsl.extended_calls,
+        glsl.extended_calls,
+        wgsl.transcendental_calls,
+        glsl.transcendental_calls,
+    )
+}
+
+fn main() -> ExitCode {
+    let filter = match parse_args(std::env::args().skip(1)) {
+        Ok(filter) => filter,
+        Err(message) => {
+            eprintln!("error: {message}\nusage: function_costs [--function NAME] [--module NAME]");
+            return ExitCode::from(2);
+        }
+    };
+    let checks: Vec<_> = all_checks()
+        .into_iter()
+        .filter(|(module, check)| filter.accepts(*module, check.function()))
+        .collect();
+    if checks.is_empty() {
+        eprintln!("error: no function matches");
+        return ExitCode::from(2);
+    }
+    println!(
+        "SPIR-V per function for Vulkan 1.1 after spirv-opt -O; WGSL by naga, GLSL by {}; {}",
+        version("glslangValidator"),
+        version("spirv-opt")
+    );
+    let names: Vec<_> = TRANSCENDENTAL.iter().map(|(_, name)| *name).collect();
+    println!("transcendental: GLSL.std.450 {}", names.join(", "));
+    println!(
+        "branches: conditional branches + switches, the kernel's own 1+1 (its bounds check) included; \
+         * marks a WGSL/GLSL instruction difference above 25%\n"
+    );
+    println!("| module | function | WGSL instructions | GLSL instructions | WGSL vs GLSL | WGSL branches | GLSL branches | WGSL extended | GLSL extended | WGSL transcendental | GLSL transcendental |");
+    println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    let mut failed = 0;
+    for (module, check) in &checks {
+        let counts = Language::ALL.map(|language| measure(*module, check.as_ref(), language));
+        match counts {
+            [Ok(wgsl), Ok(glsl)] => println!("{}", row(*module, check.function(), [wgsl, glsl])),
+            [wgsl, glsl] => {
+                for error in [wgsl.err(), glsl.err()].into_iter().flatten() {
+                    eprintln!("error: {error}");
+                }
+                failed += 1;
+            }
+        }
+    }
+    if failed == 0 {
+        ExitCode::SUCCESS
+    } else {
+        eprintln!("{failed} function(s) could not be measured");
+        ExitCode::FAILURE
+    }
+}

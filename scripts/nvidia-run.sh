@@ -1,0 +1,190 @@
+#!/usr/bin/env bash
+# Runs the checks, tests, gallery and benchmarks of ray-footprint on a machine with a real GPU
+# from binaries built elsewhere (no Rust toolchain, no network there), and writes a few small logs.
+#
+# 1. Here, on the build machine (Debian 12, scripts/setup.sh done), from the repository root:
+#
+#        scripts/nvidia-run.sh pack
+#
+#    builds the release binaries and puts into .nvidia/ (ignored by git, about 30 MiB):
+#      bin/      verify, gallery, gpu-tests (tests/gpu), function_costs, mode_costs,
+#                verification_speed, stripped
+#      debs/     libvulkan1, vulkan-validationlayers, glslang-tools, spirv-tools (amd64)
+#      build-root  the directory the binaries were built in (they read shaders from there)
+#
+# 2. There, from a copy of the repository at the same commit with .nvidia/ beside the sources
+#    (the only path to carry), as root:
+#
+#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
+#
+#    unpacks the Vulkan loader into / where the system has none, and the validation layer,
+#    glslangValidator and spirv-opt under /opt/gl (nothing else under /); links the build
+#    directory to the repository copy if the paths differ; then runs, with the validation layer on
+#    (any message fails the run) on the device SHADER_PROPTEST_DEVICE names (lavapipe without it):
+#      verify (every check, 100,000 cases per function and language)   -> verify.log
+#      the GPU tests (agreement, abi, degenerate, rt); the WGSL ray-query test
+#        apart: "not run" with the reason where the device has no ray queries -> gpu-tests.log
+#      the gallery at its default size                                   -> gallery.log, ground_modes.png
+#      bench mode_costs (1920 x 1080 off lavapipe)                       -> mode_costs.log
+#      bench function_costs                                              -> function_costs.md
+#      bench verification_speed                                          -> verification_speed.log
+#    and writes summary.txt (also printed last): eight files in OUT_DIR.
+set -uo pipefail
+
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+PACK="$ROOT/.nvidia"
+DEBS=(libvulkan1 vulkan-validationlayers glslang-tools spirv-tools)
+OPT=/opt/gl
+
+say() { printf 'nvidia-run: %s\n' "$*"; }
+
+# The executable cargo built for each target `kind:name` in its JSON messages on stdin.
+executables() {
+    python3 -c '
+import json, sys
+for line in sys.stdin:
+    message = json.loads(line)
+    if message.get("reason") == "compiler-artifact" and message.get("executable"):
+        target = message["target"]
+        print(target["kind"][0] + ":" + target["name"], message["executable"])
+'
+}
+
+pack() {
+    set -e
+    cd "$ROOT"
+    say "building the release binaries"
+    local built
+    built=$(cargo build --release -p ray-footprint-lab --all-features --examples --tests --benches \
+        --message-format=json | executables)
+    rm -rf "$PACK"
+    mkdir -p "$PACK/bin" "$PACK/debs"
+    local target name
+    for target in example:verify example:gallery test:gpu bench:function_costs bench:mode_costs \
+        bench:verification_speed; do
+        name=${target#*:}
+        [ "$name" = gpu ] && name=gpu-tests
+        local path
+        path=$(printf '%s\n' "$built" | awk -v t="$target" '$1 == t { print $2 }' | tail -n 1)
+        [ -n "$path" ] || { say "no executable for $target"; exit 1; }
+        cp "$path" "$PACK/bin/$name"
+        strip "$PACK/bin/$name"
+    done
+    say "downloading ${DEBS[*]}"
+    local lists=/tmp/nvidia-run-apt-lists
+    mkdir -p "$lists/partial"
+    local options=(-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 "-oDir::State::Lists=$lists")
+    apt-get "${options[@]}" update -qq
+    (cd "$PACK/debs" && apt-get "${options[@]}" download "${DEBS[@]}")
+    pwd >"$PACK/build-root"
+    du -sh "$PACK"
+    say "carry .nvidia/ with the repository; there run: SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR"
+}
+
+# The Vulkan loader (into / where the system has none), the layer and the tools (under /opt/gl).
+install_packages() {
+    [ -d "$PACK/debs" ] || return 0
+    local deb
+    for deb in "$PACK"/debs/*.deb; do
+        case "$(basename "$deb")" in
+            libvulkan1_*)
+                ldconfig -p | grep -q 'libvulkan.so.1 ' || dpkg -x "$deb" /
+                ;;
+            *) mkdir -p "$OPT" && dpkg -x "$deb" "$OPT" ;;
+        esac
+    done
+    ldconfig
+}
+
+setup_environment() {
+    if [ -d "$OPT/usr" ]; then
+        export PATH="$OPT/usr/bin:$PATH"
+        export LD_LIBRARY_PATH="$OPT/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+        export VK_LAYER_PATH="$OPT/usr/share/vulkan/explicit_layer.d"
+    fi
+    local nvidia_icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+    if [ -n "${SHADER_PROPTEST_DEVICE:-}" ] && [ -f "$nvidia_icd" ] && ! ls /usr/share/vulkan/icd.d/nvidia* \
+        /etc/vulkan/icd.d/nvidia* >/dev/null 2>&1; then
+        export VK_DRIVER_FILES="$nvidia_icd"
+    fi
+    # The binaries read the shaders from the directory they were built in.
+    local built
+    built=$(cat "$PACK/build-root" 2>/dev/null || echo "$ROOT")
+    if [ "$built" != "$ROOT" ] && [ ! -e "$built" ]; then
+        mkdir -p "$(dirname "$built")"
+        ln -s "$ROOT" "$built"
+    fi
+}
+
+# Runs a step: its name, its log, then the command; records the exit status and the seconds.
+STEPS=()
+step() {
+    local name=$1 log=$2
+    shift 2
+    say "$name ..."
+    local started=$SECONDS
+    "$@" >"$log" 2>&1
+    local status=$?
+    STEPS+=("$(printf '%-22s exit %3d  %4d s' "$name" "$status" $((SECONDS - started)))")
+}
+
+run() {
+    local out=${1:?usage: nvidia-run.sh run OUT_DIR}
+    mkdir -p "$out"
+    out=$(cd "$out" && pwd)
+    install_packages
+    setup_environment
+    local bin="$PACK/bin"
+    [ -x "$bin/verify" ] || { say "no binaries in $bin: run 'scripts/nvidia-run.sh pack' on the build machine"; exit 2; }
+    cd "$ROOT"
+    local wgsl_test=rt::wgsl_ray_query_agrees_with_the_mirror
+    local gallery_dir
+    gallery_dir=$(mktemp -d)
+    step verify "$out/verify.log" "$bin/verify"
+    step "gpu tests" "$out/gpu-tests.log" "$bin/gpu-tests" --skip "$wgsl_test"
+    step "wgsl ray-query test" "$out/wgsl.tmp" "$bin/gpu-tests" "$wgsl_test" --exact --nocapture
+    step gallery "$out/gallery.log" "$bin/gallery" --out "$gallery_dir"
+    cp "$gallery_dir/ground_modes.png" "$out/" 2>/dev/null
+    rm -rf "$gallery_dir"
+    step "mode costs" "$out/mode_costs.log" "$bin/mode_costs"
+    step "function costs" "$out/function_costs.md" "$bin/function_costs"
+    step "verification speed" "$out/verification_speed.log" "$bin/verification_speed"
+    { printf '\n--- %s ---\n' "$wgsl_test"; cat "$out/wgsl.tmp"; } >>"$out/gpu-tests.log"
+    rm -f "$out/wgsl.tmp"
+    summary "$out" | tee "$out/summary.txt"
+}
+
+# The lines that say how each step went.
+summary() {
+    local out=$1
+    echo "device and driver: $(grep -m1 '^device:' "$out/verify.log")"
+    printf '%s\n' "${STEPS[@]}"
+    echo "verify: $(tail -n 1 "$out/verify.log")"
+    echo "gpu tests: $(grep -m1 '^test result' "$out/gpu-tests.log")"
+    local wgsl
+    wgsl=$(sed -n '/^--- rt::wgsl/,$p' "$out/gpu-tests.log")
+    if grep -q '^test result: ok' <<<"$wgsl"; then
+        echo "wgsl ray-query test: passed"
+    elif grep -q 'not supported' <<<"$wgsl"; then
+        echo "wgsl ray-query test: not run: $(grep -m1 -o 'not supported: .*' <<<"$wgsl")"
+    else
+        echo "wgsl ray-query test: FAILED (see gpu-tests.log)"
+    fi
+    echo "gallery: $(grep -m1 '^image size' "$out/gallery.log"); $(grep -m1 '^files written' "$out/gallery.log")"
+    echo "mode costs:"
+    sed -n '/^| mode/,$p' "$out/mode_costs.log"
+    grep -m1 '^not run' "$out/mode_costs.log"
+    echo "function costs: $(grep -c '| `rf_' "$out/function_costs.md") functions (function_costs.md)"
+    echo "verification speed:"
+    sed -n '/^| threads/,$p' "$out/verification_speed.log"
+    grep -h 'VUID\|Validation\|validation layer' "$out"/*.log | head -n 5
+}
+
+case "${1:-}" in
+    pack) pack ;;
+    run) shift && run "$@" ;;
+    *)
+        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR" >&2
+        exit 2
+        ;;
+esac
