@@ -167,43 +167,42 @@ pub fn edge_thickness(thickness_var: Vec2, edge_position: f32) -> f32 {
 /// tutorial: `stipple_repeats <= 0` draws no dashes (returns 1); `stipple_length` is clamped to
 /// `[0, 1]` (1 = a solid line, 0 = nothing drawn) and `e` to `[0, 1]`.
 pub fn stipple(stipple_repeats: i32, stipple_length: f32, edge_position: f32) -> f32 {
-    if stipple_repeats <= 0 {
-        return 1.0;
-    }
-    let repeats = stipple_repeats as f32;
+    let repeats = stipple_repeats.max(1) as f32;
     let drawn = stipple_length.clamp(0.0, 1.0);
     let offset = 0.5 * drawn / repeats;
     let period = (edge_position.clamp(0.0, 1.0) + offset) * repeats;
     let pattern = period - period.floor();
-    if pattern < drawn {
-        1.0
+    let dash = if pattern < drawn { 1.0 } else { 0.0 };
+    if stipple_repeats > 0 {
+        dash
     } else {
-        0.0
+        1.0
     }
 }
 
-/// One barycentric component's distance-to-edge ramp: 0 below `start`, then the smoothstep
-/// `t * t * (3 - 2 * t)` with `t = min((x - start) / width, 1)`, reaching 1 at `start + width`.
+/// The distance-to-edge ramp of each barycentric component: 0 below `start`, then the smoothstep
+/// `t * t * (3 - 2 * t)` with `t = min((x - start) / width, 1)`, reaching 1 at `start + width`;
+/// component by component.
 ///
 /// This is `smoothstep(start, start + width, x)` of the wireframe tutorial's `getLineWidth`, written
 /// out so that it is defined everywhere: a ramp narrower than `MIN_LINE_RAMP` (including zero, where
-/// `smoothstep` is undefined) is the hard step `x < start ? 0 : 1`.
-pub fn edge_ramp(x: f32, start: f32, width: f32) -> f32 {
-    if x < start {
-        return 0.0;
-    }
-    if width <= MIN_LINE_RAMP {
-        return 1.0;
-    }
-    let t = ((x - start) / width).min(1.0);
-    t * t * (3.0 - 2.0 * t)
+/// `smoothstep` is undefined) is the hard step `x < start ? 0 : 1`. The shaders evaluate the ramp
+/// (dividing by `max(width, MIN_LINE_RAMP)`), the step and the part below `start` on all three
+/// components at once and select per component: no branch, one vector instruction per step. The
+/// selects never pass on the quotient of a discarded case (an overflowed `start` and `width` give
+/// `-inf / inf`).
+pub fn edge_ramp(x: Vec3, start: Vec3, width: Vec3) -> Vec3 {
+    let t = ((x - start) / width.max(Vec3::splat(MIN_LINE_RAMP))).min(Vec3::ONE);
+    let ramp = t * t * (3.0 - 2.0 * t);
+    let above_start = Vec3::select(width.cmpgt(Vec3::splat(MIN_LINE_RAMP)), ramp, Vec3::ONE);
+    Vec3::select(x.cmplt(start), Vec3::ZERO, above_start)
 }
 
 /// Line coverage from the barycentrics and their per-pixel deltas (wireframe tutorial,
 /// `getLineWidth`): per component `s_i = smoothstep(d_i * th, d_i * (th + sm), b_i)`, coverage
 /// `1 - min(s_i)`; 1 on an edge, 0 farther than `d_i * (th + sm)` from every edge.
 ///
-/// Evaluated as [`edge_ramp`]`(b_i, d_i * th, d_i * sm)` with `d = |deltas|` (deltas are magnitudes;
+/// Evaluated as [`edge_ramp`]`(b, d * th, d * sm)` with `d = |deltas|` (deltas are magnitudes;
 /// the ramp width is the product `d_i * sm` itself, not a difference of edges, so it neither cancels
 /// nor overflows into `inf - inf`). `thickness` (`th`) and `smoothing` (`sm`) are clamped to
 /// `[0, MAX_LINE_THICKNESS]`. A zero delta or zero smoothing gives a hard step.
@@ -211,11 +210,7 @@ pub fn line_width(deltas: Vec3, thickness: f32, smoothing: f32, barycentrics: Ve
     let magnitude = deltas.abs();
     let start = magnitude * thickness.clamp(0.0, MAX_LINE_THICKNESS);
     let width = magnitude * smoothing.clamp(0.0, MAX_LINE_THICKNESS);
-    let ramp = Vec3::new(
-        edge_ramp(barycentrics.x, start.x, width.x),
-        edge_ramp(barycentrics.y, start.y, width.y),
-        edge_ramp(barycentrics.z, start.z, width.z),
-    );
+    let ramp = edge_ramp(barycentrics, start, width);
     1.0 - ramp.x.min(ramp.y).min(ramp.z)
 }
 
@@ -232,11 +227,8 @@ pub fn process_wireframe(settings: WireframeSettings, barycentrics: Vec3, deltas
     let ramp_width = thickness * settings.smoothing;
     let pixel_deltas = if settings.screen_space { deltas } else { Vec3::ONE };
     let coverage = line_width(pixel_deltas, half_width, ramp_width, barycentrics);
-    if settings.stipple {
-        coverage * stipple(settings.stipple_repeats, settings.stipple_length, e)
-    } else {
-        coverage
-    }
+    let dashes = stipple(settings.stipple_repeats, settings.stipple_length, e);
+    coverage * if settings.stipple { dashes } else { 1.0 }
 }
 
 impl WireframeSettings {

@@ -74,8 +74,10 @@ proptest! {
     }
 
     #[test]
-    fn edge_ramp_is_finite_and_in_unit_interval(x in finite(), start in finite(), width in finite()) {
-        assert_coverage(wf::edge_ramp(x, start, width), "edge_ramp");
+    fn edge_ramp_is_finite_and_in_unit_interval(x in finite_vec3(), start in finite_vec3(), width in finite_vec3()) {
+        for ramp in wf::edge_ramp(x, start, width).to_array() {
+            assert_coverage(ramp, "edge_ramp");
+        }
     }
 
     #[test]
@@ -222,7 +224,7 @@ fn zero_smoothing_is_a_hard_step_at_the_half_width() {
     for b in [Vec3::ZERO, Vec3::new(0.0, 0.5, 0.5), Vec3::splat(1.0 / 3.0)] {
         let value = wf::line_width(Vec3::ZERO, 0.5, 0.0, b);
         assert!(value == 0.0 || value == 1.0, "{value}");
-        assert_eq!(wf::edge_ramp(b.x, 0.0, 0.0), 1.0);
+        assert_eq!(wf::edge_ramp(b, Vec3::ZERO, Vec3::ZERO), Vec3::ONE);
     }
 }
 

@@ -81,40 +81,32 @@ float rf_edge_thickness(vec2 thickness_var, float edge_position) {
 // Dash pattern: 1 if fract((e + 0.5 length / repeats) repeats) < length, else 0; repeats <= 0 is a
 // solid line (1); length and e clamped to [0, 1].
 float rf_stipple(int stipple_repeats, float stipple_length, float edge_position) {
-    if (stipple_repeats <= 0) {
-        return 1.0;
-    }
-    float repeats = float(stipple_repeats);
+    float repeats = float(max(stipple_repeats, 1));
     float drawn = clamp(stipple_length, 0.0, 1.0);
     float offset = 0.5 * drawn / repeats;
     float period = (clamp(edge_position, 0.0, 1.0) + offset) * repeats;
     float pattern = fract(period);
-    return pattern < drawn ? 1.0 : 0.0;
+    return mix(1.0, mix(0.0, 1.0, pattern < drawn), stipple_repeats > 0);
 }
 
-// smoothstep(start, start + width, x) written out: 0 below start, t t (3 - 2 t) with
-// t = min((x - start) / width, 1); a hard step at start when width <= RF_MIN_LINE_RAMP.
-float rf_edge_ramp(float x, float start, float width) {
-    if (x < start) {
-        return 0.0;
-    }
-    if (width <= RF_MIN_LINE_RAMP) {
-        return 1.0;
-    }
-    float t = min((x - start) / width, 1.0);
-    return t * t * (3.0 - 2.0 * t);
+// smoothstep(start, start + width, x) written out, per component: t t (3 - 2 t) with
+// t = min((x - start) / max(width, RF_MIN_LINE_RAMP), 1) from start on, 0 below start; 1 from start
+// on where width <= RF_MIN_LINE_RAMP (a hard step). Every case is evaluated and one selected per
+// component (mix with a bool vector is OpSelect): no branch.
+vec3 rf_edge_ramp(vec3 x, vec3 start, vec3 width) {
+    vec3 t = min((x - start) / max(width, vec3(RF_MIN_LINE_RAMP)), 1.0);
+    vec3 ramp = t * t * (3.0 - 2.0 * t);
+    vec3 above_start = mix(vec3(1.0), ramp, greaterThan(width, vec3(RF_MIN_LINE_RAMP)));
+    return mix(above_start, vec3(0.0), lessThan(x, start));
 }
 
-// Line coverage: 1 - min_i edge_ramp(b_i, |d_i| th, |d_i| sm), th and sm clamped to
+// Line coverage: 1 - min_i edge_ramp(b, |d| th, |d| sm)_i, th and sm clamped to
 // [0, RF_MAX_LINE_THICKNESS]; 1 on an edge, 0 beyond |d_i| (th + sm) from every edge.
 float rf_line_width(vec3 deltas, float thickness, float smoothing, vec3 barycentrics) {
     vec3 magnitude = abs(deltas);
     vec3 start = magnitude * clamp(thickness, 0.0, RF_MAX_LINE_THICKNESS);
     vec3 width = magnitude * clamp(smoothing, 0.0, RF_MAX_LINE_THICKNESS);
-    vec3 ramp = vec3(
-        rf_edge_ramp(barycentrics.x, start.x, width.x),
-        rf_edge_ramp(barycentrics.y, start.y, width.y),
-        rf_edge_ramp(barycentrics.z, start.z, width.z));
+    vec3 ramp = rf_edge_ramp(barycentrics, start, width);
     return 1.0 - min(min(ramp.x, ramp.y), ramp.z);
 }
 
@@ -126,12 +118,10 @@ float rf_process_wireframe(RfWireframeSettings settings, vec3 barycentrics, vec3
     float thickness = max(settings.thickness, 0.0);
     float half_width = 0.5 * thickness * rf_edge_thickness(settings.thickness_var, e);
     float ramp_width = thickness * settings.smoothing;
-    vec3 pixel_deltas = settings.screen_space ? deltas : vec3(1.0);
+    vec3 pixel_deltas = mix(vec3(1.0), deltas, bvec3(settings.screen_space));
     float coverage = rf_line_width(pixel_deltas, half_width, ramp_width, barycentrics);
-    if (settings.stipple) {
-        return coverage * rf_stipple(settings.stipple_repeats, settings.stipple_length, e);
-    }
-    return coverage;
+    float dashes = rf_stipple(settings.stipple_repeats, settings.stipple_length, e);
+    return coverage * mix(1.0, dashes, settings.stipple);
 }
 
 #endif // RAY_FOOTPRINT_WIREFRAME_GLSL

@@ -79,41 +79,32 @@ fn rf_edge_thickness(thickness_var: vec2<f32>, edge_position: f32) -> f32 {
 // Dash pattern: 1 if fract((e + 0.5 length / repeats) repeats) < length, else 0; repeats <= 0 is a
 // solid line (1); length and e clamped to [0, 1].
 fn rf_stipple(stipple_repeats: i32, stipple_length: f32, edge_position: f32) -> f32 {
-    if stipple_repeats <= 0 {
-        return 1.0;
-    }
-    let repeats = f32(stipple_repeats);
+    let repeats = f32(max(stipple_repeats, 1));
     let drawn = clamp(stipple_length, 0.0, 1.0);
     let offset = 0.5 * drawn / repeats;
     let period = (clamp(edge_position, 0.0, 1.0) + offset) * repeats;
     let pattern = fract(period);
-    return select(0.0, 1.0, pattern < drawn);
+    return select(1.0, select(0.0, 1.0, pattern < drawn), stipple_repeats > 0);
 }
 
-// smoothstep(start, start + width, x) written out: 0 below start, t t (3 - 2 t) with
-// t = min((x - start) / width, 1); a hard step at start when width <= RF_MIN_LINE_RAMP.
-fn rf_edge_ramp(x: f32, start: f32, width: f32) -> f32 {
-    if x < start {
-        return 0.0;
-    }
-    if width <= RF_MIN_LINE_RAMP {
-        return 1.0;
-    }
-    let t = min((x - start) / width, 1.0);
-    return t * t * (3.0 - 2.0 * t);
+// smoothstep(start, start + width, x) written out, per component: t t (3 - 2 t) with
+// t = min((x - start) / max(width, RF_MIN_LINE_RAMP), 1) from start on, 0 below start; 1 from start
+// on where width <= RF_MIN_LINE_RAMP (a hard step). Every case is evaluated and one selected per
+// component: no branch.
+fn rf_edge_ramp(x: vec3<f32>, start: vec3<f32>, width: vec3<f32>) -> vec3<f32> {
+    let t = min((x - start) / max(width, vec3<f32>(RF_MIN_LINE_RAMP)), vec3<f32>(1.0));
+    let ramp = t * t * (3.0 - 2.0 * t);
+    let above_start = select(vec3<f32>(1.0), ramp, width > vec3<f32>(RF_MIN_LINE_RAMP));
+    return select(above_start, vec3<f32>(0.0), x < start);
 }
 
-// Line coverage: 1 - min_i edge_ramp(b_i, |d_i| th, |d_i| sm), th and sm clamped to
+// Line coverage: 1 - min_i edge_ramp(b, |d| th, |d| sm)_i, th and sm clamped to
 // [0, RF_MAX_LINE_THICKNESS]; 1 on an edge, 0 beyond |d_i| (th + sm) from every edge.
 fn rf_line_width(deltas: vec3<f32>, thickness: f32, smoothing: f32, barycentrics: vec3<f32>) -> f32 {
     let magnitude = abs(deltas);
     let start = magnitude * clamp(thickness, 0.0, RF_MAX_LINE_THICKNESS);
     let width = magnitude * clamp(smoothing, 0.0, RF_MAX_LINE_THICKNESS);
-    let ramp = vec3<f32>(
-        rf_edge_ramp(barycentrics.x, start.x, width.x),
-        rf_edge_ramp(barycentrics.y, start.y, width.y),
-        rf_edge_ramp(barycentrics.z, start.z, width.z),
-    );
+    let ramp = rf_edge_ramp(barycentrics, start, width);
     return 1.0 - min(min(ramp.x, ramp.y), ramp.z);
 }
 
@@ -127,8 +118,6 @@ fn rf_process_wireframe(settings: RfWireframeSettings, barycentrics: vec3<f32>, 
     let ramp_width = thickness * settings.smoothing;
     let pixel_deltas = select(vec3<f32>(1.0), deltas, settings.screen_space);
     let coverage = rf_line_width(pixel_deltas, half_width, ramp_width, barycentrics);
-    if settings.stipple {
-        return coverage * rf_stipple(settings.stipple_repeats, settings.stipple_length, e);
-    }
-    return coverage;
+    let dashes = rf_stipple(settings.stipple_repeats, settings.stipple_length, e);
+    return coverage * select(1.0, dashes, settings.stipple);
 }

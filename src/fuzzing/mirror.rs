@@ -715,7 +715,7 @@ fn wireframe_functions() -> Vec<MirrorFunction> {
             within(d, on * (1.0 - on), 0.0, 0.0, "stipple * (1 - stipple)")
         }),
         f!(Wireframe, edge_ramp, |d| {
-            let ramp = wf::edge_ramp(d.scalar(), d.scalar(), d.scalar());
+            let ramp = wf::edge_ramp(d.vec3(), d.vec3(), d.vec3());
             within(d, ramp, 0.0, 1.0, "ramp")
         }),
         f!(Wireframe, line_width, |d| {

@@ -362,30 +362,45 @@ pub fn stipple() -> FunctionCheck<impl Args + Edge, impl Value> {
     )
 }
 
-/// `rf_edge_ramp`.
+/// One component of `rf_edge_ramp`'s arguments `(x, start, width)`: widths down to zero and
+/// beyond `MIN_LINE_RAMP`, `x` on the ramp, at its start, or anywhere around it.
+fn edge_ramp_component() -> impl Strategy<Value = (f32, f32, f32)> {
+    let width = prop_oneof![
+        4 => log_uniform(-6.0..0.0),
+        1 => Just(0.0f32),
+        1 => prop::sample::select(vec![1.0e-31f32, MIN_LINE_RAMP, 2.0e-30, TINY, HUGE]),
+        1 => magnitude(),
+    ];
+    (-0.5f32..1.5, magnitude(), width, 0.0f32..1.0).prop_flat_map(|(x, start, width, k)| {
+        prop_oneof![
+            Just((x, start, width)),
+            Just((start + (2.0 * k - 0.5) * width, start, width)),
+            Just((start, start, width)),
+        ]
+    })
+}
+
+/// `rf_edge_ramp`: three independent components.
 pub fn edge_ramp() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "edge_ramp",
         || {
-            let width = prop_oneof![
-                4 => log_uniform(-6.0..0.0),
-                1 => Just(0.0f32),
-                1 => prop::sample::select(vec![1.0e-31f32, MIN_LINE_RAMP, 2.0e-30, TINY, HUGE]),
-                1 => magnitude(),
-            ];
-            (-0.5f32..1.5, magnitude(), width, 0.0f32..1.0)
-                .prop_flat_map(|(x, start, width, k)| {
-                    prop_oneof![
-                        Just((x, start, width)),
-                        Just((start + (2.0 * k - 0.5) * width, start, width)),
-                        Just((start, start, width)),
-                    ]
-                })
-                .boxed()
+            [
+                edge_ramp_component(),
+                edge_ramp_component(),
+                edge_ramp_component(),
+            ]
+            .prop_map(|[a, b, c]| {
+                let x = Vec3::new(a.0, b.0, c.0);
+                let start = Vec3::new(a.1, b.1, c.1);
+                let width = Vec3::new(a.2, b.2, c.2);
+                (x, start, width)
+            })
+            .boxed()
         },
         |(x, start, width)| wf::edge_ramp(x, start, width),
         // start is an input here, so only the division and the polynomial differ.
-        |&(x, start, width), _, _| edge_ramp_error(x, start, width, 0.0),
+        |&(x, start, width), i, _| edge_ramp_error(x[i], start[i], width[i], 0.0),
     )
 }
 
