@@ -292,6 +292,8 @@ impl Camera {
             },
             width,
             height,
+            pixel_offset: Vec2::ZERO,
+            pad: [0; 2],
         }
     }
 

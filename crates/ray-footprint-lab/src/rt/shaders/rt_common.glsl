@@ -68,9 +68,10 @@ vec3 rt_weights(vec2 barycentrics) {
     return vec3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
 }
 
-// Unit direction of the primary ray through the centre of `pixel` (see RtPushConstants' Rust doc).
+// Unit direction of the primary ray through `pixel`, offset from its centre by pc.pixel_offset
+// (see RtPushConstants' Rust doc).
 vec3 rt_primary_direction(uvec2 pixel) {
-    vec2 c = 2.0 * (vec2(pixel) + 0.5) / vec2(pc.width, pc.height) - 1.0;
+    vec2 c = 2.0 * (vec2(pixel) + 0.5 + pc.pixel_offset) / vec2(pc.width, pc.height) - 1.0;
     return normalize(pc.forward + c.x * pc.aspect * pc.tan_half_fov_y * pc.right
         - c.y * pc.tan_half_fov_y * pc.up);
 }
@@ -128,7 +129,7 @@ float rt_coverage(vec3 weights, vec3 deltas) {
 // closed-form cone deltas.
 RtDiffRecord rt_measure_diff(RtTriangle tri, vec2 barycentrics, float t, vec3 origin, vec3 direction,
         mat4 world_to_object, uvec2 pixel, float footprint) {
-    vec2 xy = vec2(pixel);
+    vec2 xy = vec2(pixel) + pc.pixel_offset;
     vec2 size = vec2(pc.width, pc.height);
     RfRayDiff eye = rf_eye_ray_diff_from_matrices(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
     RfDerivatives2 bary = rf_barycentric_derivatives(eye, direction, t, tri.p[0], tri.p[1], tri.p[2]);
