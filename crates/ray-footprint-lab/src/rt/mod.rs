@@ -9,9 +9,10 @@
 //!
 //! - GLSL (`shaders/raygen.rgen`, `miss.rmiss`, `closest_hit.rchit`, compiled with glslang with the
 //!   library's GLSL directory on the include path): the closest-hit shader `#include`s
-//!   `ray_cone.glsl`, `ray_diff.glsl` and `wireframe.glsl`, carries the cone in an `RfHitPayload`,
-//!   reads `RfRayConePushConstants` inside the renderer's push constants and the inverse camera
-//!   matrices and `RfWireframePushConstants` from a uniform buffer ([`RtUniforms`]), measures every
+//!   `ray_cone.glsl`, `ray_diff.glsl` and `wireframe.glsl`, carries the cone in an `RfHitPayload`
+//!   and an `RfRayDiff` beside it (the renderer's payload), reads `RfRayConePushConstants` inside
+//!   the renderer's push constants and the inverse camera matrices and `RfWireframePushConstants`
+//!   from a uniform buffer ([`RtUniforms`]), measures every
 //!   ray-cone value at the hit and, on primary hits, the ray differentials, the re-intersected
 //!   barycentric offsets and the wireframe coverage, and shades in the chosen [`Mode`];
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
