@@ -51,9 +51,12 @@ pub use mode::Mode;
 pub use pipeline::{ray_query_source, SHADER_DIR};
 pub use renderer::{open_device, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
-    ground_plane, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex, VERTEX_FLOATS, WIRE_COLOUR,
+    ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex,
+    VERTEX_FLOATS, WIRE_COLOUR,
 };
-pub use texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE};
+pub use texture::{
+    checker, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,
+};
 
 use std::fmt;
 
@@ -78,6 +81,8 @@ pub enum Error {
     },
     /// The device lacks what this way of tracing needs: the reason. Report it as not run.
     NotSupported(String),
+    /// A texture given to [`Renderer::with_texture`] is not a full square mip chain: what is wrong.
+    InvalidTexture(String),
 }
 
 impl fmt::Display for Error {
@@ -93,6 +98,7 @@ impl fmt::Display for Error {
                 write!(f, "a frame of {width} x {height} pixels has no pixels")
             }
             Error::NotSupported(reason) => write!(f, "not supported: {reason}"),
+            Error::InvalidTexture(reason) => write!(f, "invalid texture: {reason}"),
         }
     }
 }
