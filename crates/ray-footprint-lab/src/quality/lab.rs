@@ -129,6 +129,7 @@ pub fn run(
     settings: &LabSettings,
     progress: &mut dyn Progress,
 ) -> Result<LabRun, LabError> {
+    check(settings)?;
     let device = gpu.name().to_string();
     let mut plans = Vec::new();
     for scene in scenes {
@@ -165,6 +166,30 @@ pub fn run(
         settings: settings.clone(),
         scenes: results,
     })
+}
+
+/// Fails with [`LabError::Settings`] unless N >= 1, K >= 2 (a change from frame to frame needs
+/// two frames) and the image is at least the SSIM window in each direction.
+fn check(settings: &LabSettings) -> Result<(), LabError> {
+    let window = metrics::WINDOW as u32;
+    let (n, k) = (settings.truth.samples_per_axis, settings.truth.frames);
+    if n < 1 {
+        return Err(LabError::Settings(format!(
+            "samples_per_axis is {n}, at least 1 is needed"
+        )));
+    }
+    if k < 2 {
+        return Err(LabError::Settings(format!(
+            "frames is {k}, at least 2 are needed"
+        )));
+    }
+    if settings.size.0 < window || settings.size.1 < window {
+        let (w, h) = settings.size;
+        return Err(LabError::Settings(format!(
+            "size is {w} x {h}, at least {window} x {window} is needed"
+        )));
+    }
+    Ok(())
 }
 
 /// One scene: its renderer, ground truth and methods.

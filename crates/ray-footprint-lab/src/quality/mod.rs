@@ -47,6 +47,8 @@ pub enum LabError {
     Io(String),
     /// A plot could not be drawn: why.
     Plot(String),
+    /// The run's settings are out of range: which and why.
+    Settings(String),
 }
 
 impl fmt::Display for LabError {
@@ -57,6 +59,7 @@ impl fmt::Display for LabError {
             LabError::Figure(error) => write!(f, "figure: {error}"),
             LabError::Io(reason) => write!(f, "{reason}"),
             LabError::Plot(reason) => write!(f, "plot: {reason}"),
+            LabError::Settings(reason) => write!(f, "settings: {reason}"),
         }
     }
 }

@@ -237,7 +237,7 @@ pub fn load(path: &Path, size: (u32, u32), frames: u32) -> Option<Truth> {
     let bytes = std::fs::read(path).ok()?;
     let header = CACHE_MAGIC.len() + 12;
     let word = |at: usize| u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]);
-    let pixels = (size.0 * size.1) as usize;
+    let pixels = size.0 as usize * size.1 as usize;
     let expected = header + 12 * pixels * frames as usize;
     if bytes.len() != expected
         || &bytes[..8] != CACHE_MAGIC
