@@ -1,19 +1,20 @@
 #!/usr/bin/env bash
 # Installs what ray-footprint's GPU tests and main job need on Debian 12 (bookworm): the Vulkan
 # loader, Mesa's lavapipe >= 24.1 from bookworm-backports (bookworm's own 22.3 lacks ray tracing),
-# the Khronos validation layer, glslang and SPIRV-Tools. Idempotent: installs only what is missing.
+# the Khronos validation layer, glslang and SPIRV-Tools, and g++ (the quality lab's nv-flip builds
+# NVIDIA's FLIP from C++). Idempotent: installs only what is missing.
 # Elsewhere it prints what to install and exits non-zero.
 set -euo pipefail
 
 MIN_MESA=24.1
-PACKAGES=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools)
+PACKAGES=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools g++)
 
 say() { printf 'setup: %s\n' "$*"; }
 
 other_system() {
     say "this script installs packages on Debian 12 (bookworm) only."
     say "elsewhere, install: the Vulkan loader, Mesa lavapipe >= $MIN_MESA (VK_KHR_ray_tracing_pipeline),"
-    say "the Khronos validation layer (VK_LAYER_KHRONOS_validation), glslangValidator and SPIRV-Tools,"
+    say "the Khronos validation layer (VK_LAYER_KHRONOS_validation), glslangValidator, SPIRV-Tools, a C++ compiler,"
     say "and a Rust toolchain (1.87 or newer)."
     exit 1
 }

@@ -9,13 +9,15 @@
 //! on the ground plane (`ground_modes.png`, in the order of `--help`), the isotropic and the
 //! anisotropic ways to pick a level of detail (`ground_gradients.png`: mip0, cone, ray_diff,
 //! bary_gradients), the reflection without and with curvature (`reflection_curvature.png`), and
-//! `tex_grad_scale` 0, 1 and 3 (`tex_grad_scale.png`).
+//! `tex_grad_scale` 0, 1 and 3 (`tex_grad_scale.png`). Every panel of a strip is captioned with
+//! its mode and what it was rendered with (the preset, the scale), in DejaVu Sans.
 //!
 //! `cargo run --release -p ray-footprint-lab --example gallery -- [--width N] [--height N] [--mode NAME|all] [--out DIR]`
 
 use ray_footprint::wireframe::WireframeSettings;
+use ray_footprint_lab::figure::{self, Panel, RgbaImage};
 use ray_footprint_lab::rt::{open_device, Camera, Error, Frame, Mode, Renderer, Scene};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// `tex_grad_scale` of the `tex_grad_scale` mode's own images: visibly blurred (1 matches `cone`).
@@ -143,7 +145,7 @@ fn run(options: &Options) -> Result<(), String> {
             let frame = gallery
                 .render(view, camera, mode, scale_of(mode), DEFAULT_PRESET)
                 .map_err(|e| e.to_string())?;
-            gallery.save(&format!("{view}_{mode}.png"), &[&frame])?;
+            gallery.save(&format!("{view}_{mode}.png"), &frame)?;
             frames.push(((*view, mode), frame));
         }
     }
@@ -166,6 +168,16 @@ const DEFAULT_PRESET: Preset = WireframeSettings::PRESETS[0];
 /// The file-name form of a preset's name: "Wire dot" -> "wire_dot".
 fn slug(name: &str) -> String {
     name.to_lowercase().replace(' ', "_")
+}
+
+/// The caption of a panel: the mode, and what it was rendered with where that matters (the
+/// preset of the wireframe, the scale of `tex_grad_scale`).
+fn caption(mode: Mode, tex_grad_scale: f32, (preset, _): Preset) -> String {
+    match mode {
+        Mode::Wireframe => format!("wireframe, preset {preset}"),
+        Mode::TexGradScale => format!("tex_grad_scale {tex_grad_scale}"),
+        _ => mode.name().to_string(),
+    }
 }
 
 /// The `tex_grad_scale` a mode renders with.
@@ -234,10 +246,11 @@ impl Gallery<'_, '_> {
             let frame = self
                 .render("torus", &Camera::torus(), Mode::Wireframe, 1.0, preset)
                 .map_err(|e| e.to_string())?;
-            self.save(&format!("wireframe_{}.png", slug(preset.0)), &[&frame])?;
-            frames.push(frame);
+            self.save(&format!("wireframe_{}.png", slug(preset.0)), &frame)?;
+            frames.push((caption(Mode::Wireframe, 1.0, preset), frame));
         }
-        self.save("wireframe_presets.png", &frames.iter().collect::<Vec<_>>())
+        let panels: Vec<_> = frames.iter().map(|(text, frame)| (text.clone(), frame)).collect();
+        self.save_strip("wireframe_presets.png", &panels)
     }
 
     /// The strips: every mode on the ground, the reflection without and with curvature, and
@@ -250,18 +263,20 @@ impl Gallery<'_, '_> {
                 .map(|(_, frame)| frame)
                 .expect("every mode was rendered in every view")
         };
-        let ground: Vec<&Frame> = Mode::ALL.iter().map(|&mode| find("ground", mode)).collect();
-        self.save("ground_modes.png", &ground)?;
+        let panel =
+            |view: &str, mode: Mode| (caption(mode, scale_of(mode), DEFAULT_PRESET), find(view, mode));
+        let ground: Vec<_> = Mode::ALL.iter().map(|&mode| panel("ground", mode)).collect();
+        self.save_strip("ground_modes.png", &ground)?;
         let gradients = [Mode::Mip0, Mode::Cone, Mode::RayDiff, Mode::BaryGradients];
-        self.save(
+        self.save_strip(
             "ground_gradients.png",
-            &gradients.map(|mode| find("ground", mode)),
+            &gradients.map(|mode| panel("ground", mode)),
         )?;
         let reflection = [
-            find("reflection", Mode::Cone),
-            find("reflection", Mode::ConeCurvature),
+            panel("reflection", Mode::Cone),
+            panel("reflection", Mode::ConeCurvature),
         ];
-        self.save("reflection_curvature.png", &reflection)?;
+        self.save_strip("reflection_curvature.png", &reflection)?;
         println!("[strip] ground view, tex_grad_scale 0 and 1 ...");
         let mut scaled = Vec::new();
         for scale in [0.0, 1.0] {
@@ -276,15 +291,32 @@ impl Gallery<'_, '_> {
                 .map_err(|e| e.to_string())?,
             );
         }
-        let strip = [&scaled[0], &scaled[1], find("ground", Mode::TexGradScale)];
-        self.save("tex_grad_scale.png", &strip)
+        let strip = [
+            (caption(Mode::TexGradScale, 0.0, DEFAULT_PRESET), &scaled[0]),
+            (caption(Mode::TexGradScale, 1.0, DEFAULT_PRESET), &scaled[1]),
+            panel("ground", Mode::TexGradScale),
+        ];
+        self.save_strip("tex_grad_scale.png", &strip)
     }
 
-    /// Writes `frames` side by side (4-pixel white gaps) as `name` in the output folder.
-    fn save(&mut self, name: &str, frames: &[&Frame]) -> Result<(), String> {
+    /// Writes `frame` as `name` in the output folder.
+    fn save(&mut self, name: &str, frame: &Frame) -> Result<(), String> {
+        self.write(name, &RgbaImage::from_frame(frame))
+    }
+
+    /// Writes `panels` side by side, each frame under its caption, as `name` in the output folder.
+    fn save_strip(&mut self, name: &str, panels: &[(String, &Frame)]) -> Result<(), String> {
+        let row = panels
+            .iter()
+            .map(|(text, frame)| Panel::new(text.clone(), RgbaImage::from_frame(frame)))
+            .collect();
+        let strip = figure::grid(&[row]).map_err(|e| e.to_string())?;
+        self.write(name, &strip)
+    }
+
+    fn write(&mut self, name: &str, image: &RgbaImage) -> Result<(), String> {
         let path = self.options.out.join(name);
-        let (width, height, pixels) = side_by_side(frames);
-        write_png(&path, width, height, &pixels).map_err(|e| format!("writing {}: {e}", path.display()))?;
+        figure::write_png(&path, image).map_err(|e| e.to_string())?;
         self.written.push(path);
         Ok(())
     }
@@ -302,34 +334,4 @@ impl Gallery<'_, '_> {
             println!("  {}", path.display());
         }
     }
-}
-
-/// Gap between images in a strip, in pixels.
-const GAP: u32 = 4;
-
-/// Lays frames of equal size out in a row with white gaps: width, height and RGBA bytes.
-fn side_by_side(frames: &[&Frame]) -> (u32, u32, Vec<u8>) {
-    let (w, h) = (frames[0].width, frames[0].height);
-    let count = frames.len() as u32;
-    let width = count * w + (count - 1) * GAP;
-    let mut pixels = vec![255u8; (width * h * 4) as usize];
-    for (i, frame) in frames.iter().enumerate() {
-        let left = i as u32 * (w + GAP);
-        for (y, row) in frame.pixels.chunks_exact(w as usize).enumerate() {
-            let start = ((y as u32 * width + left) * 4) as usize;
-            pixels[start..start + row.len() * 4].copy_from_slice(bytemuck::cast_slice(row));
-        }
-    }
-    (width, h, pixels)
-}
-
-fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
-    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
-    let mut encoder = png::Encoder::new(file, width, height);
-    encoder.set_color(png::ColorType::Rgba);
-    encoder.set_depth(png::BitDepth::Eight);
-    let mut writer = encoder.write_header()?;
-    writer.write_image_data(rgba)?;
-    writer.finish()?;
-    Ok(())
 }

@@ -1,7 +1,11 @@
 //! ray-footprint on a GPU: the agreement suite that checks every shader function of the crate
-//! against its Rust mirror with shader-proptest ([`checks`]), and a Vulkan ray-tracing renderer
-//! that uses the modules as a user's renderer would ([`rt`]), with its gallery.
+//! against its Rust mirror with shader-proptest ([`checks`]), a Vulkan ray-tracing renderer
+//! that uses the modules as a user's renderer would ([`rt`]), with its gallery, and the quality
+//! lab that measures each level-of-detail method against a supersampled ground truth
+//! ([`quality`]), with captioned figures ([`figure`]).
 #![deny(missing_docs)]
 
 pub mod checks;
+pub mod figure;
+pub mod quality;
 pub mod rt;

@@ -7,12 +7,13 @@ use glam::Vec3;
 use ray_footprint::abi::{RayCone, RayConePushConstants, WireframePushConstants, PUSH_CONSTANT_LIMIT};
 
 /// Push constants of [the ray-tracing renderer](crate::rt) (`RtPushConstants`, declared by
-/// the renderer's shaders in `src/rt/shaders/`, not by a library module). 80 bytes, 16-byte
-/// aligned: the pinhole camera, the render mode, the ray-cone push constants and the image size.
+/// the renderer's shaders in `src/rt/shaders/`, not by a library module). 96 bytes, 16-byte
+/// aligned: the pinhole camera, the render mode, the ray-cone push constants, the image size and
+/// the primary rays' offset within their pixels.
 ///
 /// The camera basis is orthonormal; pixel `(x, y)` looks along
 /// `normalize(forward + c.x * aspect * tan_half_fov_y * right - c.y * tan_half_fov_y * up)` with
-/// `c = 2 * ((x, y) + 0.5) / (width, height) - 1`.
+/// `c = 2 * ((x, y) + 0.5 + pixel_offset) / (width, height) - 1`.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct RtPushConstants {
@@ -38,6 +39,13 @@ pub struct RtPushConstants {
     pub width: u32,
     /// Image height in pixels.
     pub height: u32,
+    /// Where each primary ray crosses its pixel, from the pixel's centre, in pixels (x right,
+    /// y down); the ray differentials and re-intersected neighbour rays move with it. 0 traces
+    /// through the centres; sub-pixel offsets supersample a frame, or move the image by less
+    /// than a pixel.
+    pub pixel_offset: glam::Vec2,
+    /// Always 0.
+    pub pad: [u32; 2],
 }
 
 /// What the renderer measured at a pixel's primary hit (`RtPixelRecord`, declared by the
@@ -159,6 +167,7 @@ pub struct RtUniforms {
     pub wireframe: WireframePushConstants,
 }
 
+const _: () = assert!(std::mem::size_of::<RtPushConstants>() == 96);
 const _: () = assert!(std::mem::size_of::<RtPushConstants>() <= PUSH_CONSTANT_LIMIT);
 const _: () =
     assert!(std::mem::size_of::<RtPixelRecord>() == 272 && std::mem::size_of::<RtUniforms>() == 176);

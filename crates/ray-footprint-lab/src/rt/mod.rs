@@ -9,9 +9,10 @@
 //!
 //! - GLSL (`shaders/raygen.rgen`, `miss.rmiss`, `closest_hit.rchit`, compiled with glslang with the
 //!   library's GLSL directory on the include path): the closest-hit shader `#include`s
-//!   `ray_cone.glsl`, `ray_diff.glsl` and `wireframe.glsl`, carries the cone in an `RfHitPayload`,
-//!   reads `RfRayConePushConstants` inside the renderer's push constants and the inverse camera
-//!   matrices and `RfWireframePushConstants` from a uniform buffer ([`RtUniforms`]), measures every
+//!   `ray_cone.glsl`, `ray_diff.glsl` and `wireframe.glsl`, carries the cone in an `RfHitPayload`
+//!   and an `RfRayDiff` beside it (the renderer's payload), reads `RfRayConePushConstants` inside
+//!   the renderer's push constants and the inverse camera matrices and `RfWireframePushConstants`
+//!   from a uniform buffer ([`RtUniforms`]), measures every
 //!   ray-cone value at the hit and, on primary hits, the ray differentials, the re-intersected
 //!   barycentric offsets and the wireframe coverage, and shades in the chosen [`Mode`];
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
@@ -50,9 +51,12 @@ pub use mode::{Mode, Payload};
 pub use pipeline::{ray_query_source, SHADER_DIR};
 pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
-    ground_plane, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex, VERTEX_FLOATS, WIRE_COLOUR,
+    ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex,
+    VERTEX_FLOATS, WIRE_COLOUR,
 };
-pub use texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE};
+pub use texture::{
+    checker, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,
+};
 
 use std::fmt;
 
@@ -77,6 +81,8 @@ pub enum Error {
     },
     /// The device lacks what this way of tracing needs: the reason. Report it as not run.
     NotSupported(String),
+    /// A texture given to [`Renderer::with_texture`] is not a full square mip chain: what is wrong.
+    InvalidTexture(String),
 }
 
 impl fmt::Display for Error {
@@ -92,6 +98,7 @@ impl fmt::Display for Error {
                 write!(f, "a frame of {width} x {height} pixels has no pixels")
             }
             Error::NotSupported(reason) => write!(f, "not supported: {reason}"),
+            Error::InvalidTexture(reason) => write!(f, "invalid texture: {reason}"),
         }
     }
 }

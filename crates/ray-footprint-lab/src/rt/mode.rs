@@ -6,9 +6,11 @@ use std::fmt;
 ///
 /// Every mode traces the same rays and records the same per-pixel values
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
-/// reflection off the sphere widens its cone by the surface curvature, and whether the wireframe
-/// is drawn. The gradient modes need a primary hit: what the mirror reflects is sampled at the
-/// ray-cone LOD in them.
+/// reflection off a mirror widens its cone by the surface curvature, whether a reflected ray
+/// carries a ray differential, and whether the wireframe is drawn. The ray-differential modes
+/// carry the differential through the mirror (Igehy's reflection); the re-intersection of
+/// `BaryGradients` needs a primary hit: what the mirror reflects is sampled at the ray-cone LOD in
+/// it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u32)]
 pub enum Mode {
@@ -22,8 +24,8 @@ pub enum Mode {
     TexGradScale = 3,
     /// Ray-cone LOD into a texture whose mip levels are flat colours (RTG Fig. 20-9/20-10).
     MipLevels = 4,
-    /// `textureGrad` with anisotropic UV gradients from the eye-ray differentials (Igehy; RTG
-    /// Eq. 8-21), times `tex_grad_scale`.
+    /// `textureGrad` with anisotropic UV gradients from the ray differentials (Igehy; RTG
+    /// Eq. 8-21), times `tex_grad_scale`; reflections carry the differential.
     RayDiff = 5,
     /// `textureGrad` with anisotropic UV gradients from the neighbour pixels' rays re-intersected
     /// with the hit triangle's plane (signed barycentric offsets), times `tex_grad_scale`.
@@ -31,17 +33,21 @@ pub enum Mode {
     /// Ray-cone LOD under an anti-aliased wireframe (per-pixel barycentric deltas by
     /// re-intersection; the closed-form cone deltas in reflections).
     Wireframe = 7,
+    /// `textureLod` at the isotropic LOD of the ray-differential texel gradients (RTG Eq. 1-2:
+    /// the chapter's RayDiffs); reflections carry the differential.
+    RayDiffIsotropic = 8,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 8] = [
+    pub const ALL: [Mode; 9] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
         Mode::TexGradScale,
         Mode::MipLevels,
         Mode::RayDiff,
+        Mode::RayDiffIsotropic,
         Mode::BaryGradients,
         Mode::Wireframe,
     ];
@@ -62,6 +68,7 @@ impl Mode {
             Mode::RayDiff => "ray_diff",
             Mode::BaryGradients => "bary_gradients",
             Mode::Wireframe => "wireframe",
+            Mode::RayDiffIsotropic => "ray_diff_isotropic",
         }
     }
 
@@ -76,6 +83,7 @@ impl Mode {
             Mode::RayDiff => "textureGrad with anisotropic ray-differential gradients",
             Mode::BaryGradients => "textureGrad with gradients from re-intersected neighbour rays",
             Mode::Wireframe => "ray-cone LOD under an anti-aliased wireframe",
+            Mode::RayDiffIsotropic => "textureLod at the isotropic ray-differential LOD",
         }
     }
 

@@ -59,8 +59,10 @@ pub struct Renderer<'g> {
     tlas: vk::AccelerationStructureKHR,
     /// Vertex, index and mesh-table buffers (bindings 1 to 3).
     inputs: [Buffer; 3],
-    /// The checker texture and the mip-colour texture (binding 6).
+    /// The colour texture and the mip-colour texture (binding 6).
     textures: [vk::ImageView; 2],
+    /// Width and height of both textures, in texels.
+    texture_size: u32,
     sampler: vk::Sampler,
     set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
@@ -70,10 +72,19 @@ pub struct Renderer<'g> {
 }
 
 impl<'g> Renderer<'g> {
-    /// Uploads `scene`, builds its acceleration structures, makes the textures (full mip chains)
-    /// and the trilinear sampler, and compiles the GLSL ray-tracing pipeline and, where the device
-    /// has ray queries, the WGSL ray-query pipeline. `gpu` must come from [`open_device`].
+    /// Uploads `scene`, builds its acceleration structures, makes the textures (full mip chains:
+    /// the [`checker`] of [`CHECKER_SQUARE`]-texel squares and the mip colours) and the trilinear
+    /// sampler, and compiles the GLSL ray-tracing pipeline and, where the device has ray queries,
+    /// the WGSL ray-query pipeline. `gpu` must come from [`open_device`].
     pub fn new(gpu: &'g Gpu, scene: Scene) -> Result<Renderer<'g>, Error> {
+        Renderer::with_texture(gpu, scene, checker(TEXTURE_SIZE, CHECKER_SQUARE))
+    }
+
+    /// [`Renderer::new`] with `texture` on every textured mesh instead of the checker; the
+    /// mip-colour texture takes its size. Fails with [`Error::InvalidTexture`] unless `texture`
+    /// is square, a power of two wide, with every level down to 1 x 1.
+    pub fn with_texture(gpu: &'g Gpu, scene: Scene, texture: MipChain) -> Result<Renderer<'g>, Error> {
+        texture.validate().map_err(Error::InvalidTexture)?;
         let mut owner = Owner::new(gpu);
         let input = vk::BufferUsageFlags::STORAGE_BUFFER
             | vk::BufferUsageFlags::ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_KHR;
@@ -85,11 +96,9 @@ impl<'g> Renderer<'g> {
             4,
         )?;
         let tlas = accel::build(&mut owner, &scene, &vertices, &indices)?;
-        let mut texture = |chain: MipChain| owner.texture(chain.size, &chain.levels);
-        let textures = [
-            texture(checker(TEXTURE_SIZE, CHECKER_SQUARE))?,
-            texture(mip_colours(TEXTURE_SIZE))?,
-        ];
+        let texture_size = texture.size;
+        let mut upload = |chain: MipChain| owner.texture(chain.size, &chain.levels);
+        let textures = [upload(texture)?, upload(mip_colours(texture_size))?];
         let sampler = sampler(&mut owner, anisotropy(gpu))?;
         let (set_layout, layout) = pipeline::layouts(&mut owner)?;
         let ray_tracing = pipeline::ray_tracing(&mut owner, layout)?;
@@ -105,6 +114,7 @@ impl<'g> Renderer<'g> {
             tlas,
             inputs: [vertices, indices, meshes],
             textures,
+            texture_size,
             sampler,
             set_layout,
             layout,
@@ -127,7 +137,7 @@ impl<'g> Renderer<'g> {
         width: u32,
         height: u32,
     ) -> RtPushConstants {
-        camera.push_constants(mode.id(), tex_grad_scale, (width, height), TEXTURE_SIZE)
+        camera.push_constants(mode.id(), tex_grad_scale, (width, height), self.texture_size)
     }
 
     /// The maximum anisotropy of the texture sampler: `min(16, maxSamplerAnisotropy)` where the

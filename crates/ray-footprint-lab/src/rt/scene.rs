@@ -157,6 +157,70 @@ pub fn torus(centre: Vec3, major: f32, minor: f32, rings: u32, segments: u32) ->
     }
 }
 
+/// A mirror hyperbolic paraboloid, the saddle `y = centre.y + curvature * x * z` with x and z
+/// measured from the centre over a square of half side `half_size`: `quads` x `quads` quads (two
+/// triangles each) with exact vertex normals, proportional to `(-curvature * z, 1, -curvature * x)`.
+/// Its mean curvature is 0 at the centre and its Gaussian curvature negative everywhere (a saddle).
+pub fn hyperbolic_paraboloid(centre: Vec3, half_size: f32, curvature: f32, quads: u32) -> Mesh {
+    let mut vertices = Vec::new();
+    for row in 0..=quads {
+        let z = half_size * (2.0 * row as f32 / quads as f32 - 1.0);
+        for column in 0..=quads {
+            let x = half_size * (2.0 * column as f32 / quads as f32 - 1.0);
+            vertices.push(Vertex {
+                position: centre + Vec3::new(x, curvature * x * z, z),
+                normal: Vec3::new(-curvature * z, 1.0, -curvature * x).normalize(),
+                uv: Vec2::new(x, z) / (2.0 * half_size) + 0.5,
+            });
+        }
+    }
+    Mesh {
+        name: "hyperbolic paraboloid",
+        vertices,
+        indices: grid_indices(quads, quads, |_, _| false),
+        material: Material::Mirror,
+    }
+}
+
+/// The inside of a box from `min` to `max`: floor, ceiling and four walls, normals pointing in,
+/// the texture repeating every `repeat` world units on each face.
+pub fn room(min: Vec3, max: Vec3, repeat: f32) -> Mesh {
+    // Each face: the axis of its normal, the side (min or max), and the two axes it spans.
+    let faces = [
+        (1, 0, 0, 2),
+        (1, 1, 0, 2),
+        (0, 0, 2, 1),
+        (0, 1, 2, 1),
+        (2, 0, 0, 1),
+        (2, 1, 0, 1),
+    ];
+    let (mut vertices, mut indices) = (Vec::new(), Vec::new());
+    for (normal_axis, side, u_axis, v_axis) in faces {
+        let first = vertices.len() as u32;
+        for (a, b) in [(0, 0), (1, 0), (1, 1), (0, 1)] {
+            let mut position = min;
+            position[normal_axis] = if side == 0 {
+                min[normal_axis]
+            } else {
+                max[normal_axis]
+            };
+            position[u_axis] = if a == 0 { min[u_axis] } else { max[u_axis] };
+            position[v_axis] = if b == 0 { min[v_axis] } else { max[v_axis] };
+            let mut normal = Vec3::ZERO;
+            normal[normal_axis] = if side == 0 { 1.0 } else { -1.0 };
+            let uv = Vec2::new(position[u_axis], position[v_axis]) / repeat;
+            vertices.push(Vertex { position, normal, uv });
+        }
+        indices.extend([first, first + 1, first + 2, first, first + 2, first + 3]);
+    }
+    Mesh {
+        name: "room",
+        vertices,
+        indices,
+        material: Material::Textured,
+    }
+}
+
 /// The meshes of a scene; mesh `i` is TLAS instance `i` with instance custom index `i`.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -174,6 +238,18 @@ impl Scene {
                 ground_plane(200.0, 8.0),
                 uv_sphere(Vec3::new(1.3, 1.0, -1.5), 1.0, 32, 64),
                 torus(Vec3::new(-1.5, 1.15, -2.5), 0.8, 0.3, 128, 64),
+            ],
+        }
+    }
+
+    /// The hyperbolic-paraboloid reflector of RTG ch. 20 (Fig. 20-10 and 20-11) in a textured
+    /// room: a 4 x 4 saddle (`y = 1.2 + 0.35 x z`, 128 x 128 quads, 32,768 triangles, exact
+    /// normals) in a 12 x 6 x 12 room whose texture repeats every 3 units.
+    pub fn paraboloid() -> Scene {
+        Scene {
+            meshes: vec![
+                room(Vec3::new(-6.0, 0.0, -6.0), Vec3::new(6.0, 6.0, 6.0), 8.0),
+                hyperbolic_paraboloid(Vec3::new(0.0, 1.2, 0.0), 2.0, 0.35, 128),
             ],
         }
     }
@@ -259,6 +335,16 @@ impl Camera {
         }
     }
 
+    /// Above and in front of the hyperbolic paraboloid of [`Scene::paraboloid`], looking down at
+    /// it: the saddle fills the middle of the view and reflects the room's walls and ceiling.
+    pub fn paraboloid() -> Camera {
+        Camera {
+            eye: Vec3::new(2.9, 4.6, 2.9),
+            target: Vec3::new(0.0, 1.0, 0.0),
+            fov_y: 45f32.to_radians(),
+        }
+    }
+
     /// The orthonormal basis: forward (viewing direction), right (= forward x +y) and up.
     fn basis(&self) -> (Vec3, Vec3, Vec3) {
         let forward = (self.target - self.eye).normalize();
@@ -292,6 +378,8 @@ impl Camera {
             },
             width,
             height,
+            pixel_offset: Vec2::ZERO,
+            pad: [0; 2],
         }
     }
 

@@ -31,6 +31,34 @@ pub struct MipChain {
     pub levels: Vec<Vec<[u8; 4]>>,
 }
 
+impl MipChain {
+    /// `Ok` when the chain is square, a power of two wide, and has every level down to 1 x 1 with
+    /// `(size >> i)^2` texels at level `i`; else what is wrong.
+    pub fn validate(&self) -> Result<(), String> {
+        if !self.size.is_power_of_two() {
+            return Err(format!("size {} is not a power of two", self.size));
+        }
+        if self.levels.len() != level_count(self.size) {
+            let expected = level_count(self.size);
+            return Err(format!(
+                "{} levels, a size of {} needs {expected}",
+                self.levels.len(),
+                self.size
+            ));
+        }
+        for (i, level) in self.levels.iter().enumerate() {
+            let side = (self.size >> i) as usize;
+            if level.len() != side * side {
+                return Err(format!(
+                    "level {i} has {} texels, not {side} x {side}",
+                    level.len()
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
 /// A light and dark checkerboard with squares of `square` texels, box-filtered down to 1 x 1.
 pub fn checker(size: u32, square: u32) -> MipChain {
     let texel = |i: u32| {
@@ -41,7 +69,32 @@ pub fn checker(size: u32, square: u32) -> MipChain {
             [35, 40, 55, 255]
         }
     };
-    let mut levels = vec![(0..size * size).map(texel).collect::<Vec<_>>()];
+    mip_chain(size, (0..size * size).map(texel).collect())
+}
+
+/// A checkerboard of `coarse`-texel squares, light and dark, each filled with a finer checker of
+/// `fine`-texel squares of two shades of its colour: detail at two scales. Level
+/// `log2(2 * fine)` and above have lost the fine checker and keep the coarse one up to level
+/// `log2(coarse)`; box-filtered down to 1 x 1.
+pub fn two_scale_checker(size: u32, coarse: u32, fine: u32) -> MipChain {
+    let texel = |i: u32| {
+        let (x, y) = (i % size, i / size);
+        let light = (x / coarse + y / coarse).is_multiple_of(2);
+        let bright = (x / fine + y / fine).is_multiple_of(2);
+        match (light, bright) {
+            (true, true) => [240, 235, 220, 255],
+            (true, false) => [150, 150, 145, 255],
+            (false, true) => [95, 100, 120, 255],
+            (false, false) => [25, 30, 45, 255],
+        }
+    };
+    mip_chain(size, (0..size * size).map(texel).collect())
+}
+
+/// `level0` (`size` x `size` texels) and every level below it down to 1 x 1, each the
+/// box-filtered level above.
+fn mip_chain(size: u32, level0: Vec<[u8; 4]>) -> MipChain {
+    let mut levels = vec![level0];
     while levels.len() < level_count(size) {
         let previous = levels.last().expect("level 0 exists");
         levels.push(downsample(previous, size >> (levels.len() - 1)));

@@ -5,12 +5,15 @@
 //! - [`agreement`]: every shader function against its Rust mirror, in WGSL and GLSL;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
 //! - [`degenerate`]: the degenerate-input table on the CPU and the GPU;
-//! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror.
+//! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror;
+//! - [`quality`]: the quality lab at a tiny size (finite metrics, a ground truth that scores
+//!   itself perfectly).
 
 mod abi;
 mod agreement;
 mod degenerate;
 mod edges;
+mod quality;
 mod rt;
 
 use shader_proptest::Gpu;

@@ -35,10 +35,13 @@ const HEIGHT: u32 = 48;
 const TORUS_VIEW: (u32, u32) = (200, 150);
 /// A `tex_grad_scale` other than 1, so the gradient's scaling is exercised.
 const TEX_GRAD_SCALE: f32 = 2.0;
+/// An offset of the primary rays from the pixel centres, in pixels, for the view that checks it.
+const PIXEL_OFFSET: Vec2 = Vec2::new(0.375, -0.25);
 /// The torus' mesh index in [`Scene::gallery`].
 const TORUS: u32 = 2;
 
-fn gpu() -> Gpu {
+/// The renderer's device (ray tracing); panics with what to install when there is none.
+pub(crate) fn gpu() -> Gpu {
     open_device().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
 }
 
@@ -58,7 +61,9 @@ fn renderer_structs_have_one_layout() {
             mode,
             cone,
             width,
-            height
+            height,
+            pixel_offset,
+            pad
         }),
         rust_layout!(RtPixelRecord {
             normal,
@@ -201,26 +206,37 @@ fn colour_pipelines_render_the_recorded_colours() {
     }
 }
 
-/// The views every path traces: the ground view and the mirror close-up, and the torus close-up
-/// once per wireframe preset, each with its mode, wireframe settings and image size.
-fn views() -> Vec<(Camera, Mode, WireframeSettings, (u32, u32))> {
+/// A view: camera, mode, wireframe settings, image size and the primary rays' offset from the
+/// pixel centres.
+type View = (Camera, Mode, WireframeSettings, (u32, u32), Vec2);
+
+/// The views every path traces: the ground view, through the pixel centres and through points
+/// off them ([`PIXEL_OFFSET`]), the mirror close-up, and the torus close-up once per wireframe
+/// preset, each with its mode, wireframe settings, image size and pixel offset.
+fn views() -> Vec<View> {
     let small = (WIDTH, HEIGHT);
+    let default = WireframeSettings::default();
     let mut views = vec![
+        (Camera::ground(), Mode::ConeCurvature, default, small, Vec2::ZERO),
         (
             Camera::ground(),
             Mode::ConeCurvature,
-            WireframeSettings::default(),
+            default,
             small,
+            PIXEL_OFFSET,
         ),
         (
             Camera::reflection(),
             Mode::ConeCurvature,
-            WireframeSettings::default(),
+            default,
             small,
+            Vec2::ZERO,
         ),
     ];
     let presets = WireframeSettings::PRESETS.iter();
-    views.extend(presets.map(|&(_, settings)| (Camera::torus(), Mode::Wireframe, settings, TORUS_VIEW)));
+    views.extend(
+        presets.map(|&(_, settings)| (Camera::torus(), Mode::Wireframe, settings, TORUS_VIEW, Vec2::ZERO)),
+    );
     views
 }
 
@@ -243,15 +259,19 @@ fn agree(path: &str, trace: impl Fn(&Renderer<'_>, &RtPushConstants, &RtUniforms
     );
     let mut stats = Stats::default();
     let mut hits_per_mesh = vec![0usize; renderer.scene().meshes.len()];
-    for (camera, mode, settings, (width, height)) in views() {
+    for (camera, mode, settings, (width, height), offset) in views() {
+        let mut push = renderer.push_constants(&camera, mode, TEX_GRAD_SCALE, width, height);
+        push.pixel_offset = offset;
         let inputs = Inputs {
-            push: renderer.push_constants(&camera, mode, TEX_GRAD_SCALE, width, height),
+            push,
             uniforms: camera.uniforms((width, height), settings),
         };
         let frame = trace(&renderer, &inputs.push, &inputs.uniforms).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(frame.records.len(), (width * height) as usize);
         for (index, record) in frame.records.iter().enumerate() {
-            let pixel = Vec2::new((index as u32 % width) as f32, (index as u32 / width) as f32);
+            let centre = Vec2::new((index as u32 % width) as f32, (index as u32 / width) as f32);
+            // The matrix functions take the pixel's coordinates plus the offset.
+            let pixel = centre + offset;
             check_pixel(renderer.scene(), &inputs, pixel, record, &mut stats);
             if record.hit == 1 {
                 hits_per_mesh[record.instance as usize] += 1;

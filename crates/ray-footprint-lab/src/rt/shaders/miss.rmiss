@@ -3,8 +3,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "rt_common.glsl"
 
-layout(location = 0) rayPayloadInEXT RfHitPayload payload;
+layout(location = 0) rayPayloadInEXT RtPayload payload;
 
 void main() {
-    payload.colour = payload.weight * rt_sky(gl_WorldRayDirectionEXT);
+    payload.hit.colour = payload.hit.weight * rt_sky(gl_WorldRayDirectionEXT);
 }

@@ -12,7 +12,7 @@ const RT_VERTEX_FLOATS: u32 = 8u;
 // Farthest hit distance.
 const RT_MAX_DISTANCE: f32 = 1.0e4;
 
-// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 80 bytes).
+// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 96 bytes).
 struct RtPushConstants {
     eye: vec3<f32>,
     tan_half_fov_y: f32,
@@ -25,6 +25,8 @@ struct RtPushConstants {
     cone: RfRayConePushConstants,
     width: u32,
     height: u32,
+    pixel_offset: vec2<f32>,
+    pad: vec2<u32>,
 }
 
 // The ray-differential, re-intersection and wireframe values of a primary hit (Rust mirror:
@@ -118,9 +120,9 @@ fn rt_weights(barycentrics: vec2<f32>) -> vec3<f32> {
     return vec3<f32>(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
 }
 
-// Unit direction of the primary ray through the centre of `pixel`.
+// Unit direction of the primary ray through `pixel`, offset from its centre by pc.pixel_offset.
 fn rt_primary_direction(pixel: vec2<u32>) -> vec3<f32> {
-    let c = 2.0 * (vec2<f32>(pixel) + 0.5) / vec2<f32>(f32(pc.width), f32(pc.height)) - 1.0;
+    let c = 2.0 * (vec2<f32>(pixel) + 0.5 + pc.pixel_offset) / vec2<f32>(f32(pc.width), f32(pc.height)) - 1.0;
     return normalize(pc.forward + c.x * pc.aspect * pc.tan_half_fov_y * pc.right
         - c.y * pc.tan_half_fov_y * pc.up);
 }
@@ -150,7 +152,7 @@ fn rt_texel_lod(uv: RfDerivatives2) -> f32 {
 // rt_common.glsl).
 fn rt_measure_diff(tri: RtTriangle, barycentrics: vec2<f32>, t: f32, origin: vec3<f32>, direction: vec3<f32>,
         world_to_object: mat4x4<f32>, pixel: vec2<u32>, footprint: f32) -> RtDiffRecord {
-    let xy = vec2<f32>(pixel);
+    let xy = vec2<f32>(pixel) + pc.pixel_offset;
     let size = vec2<f32>(f32(pc.width), f32(pc.height));
     let eye = rf_eye_ray_diff_from_matrices(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
     let bary = rf_barycentric_derivatives(eye, direction, t, tri.p[0], tri.p[1], tri.p[2]);

@@ -7,7 +7,7 @@
 #include "ray_cone.glsl"
 #include "wireframe.glsl"
 
-// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 80 bytes).
+// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 96 bytes).
 struct RtPushConstants {
     vec3 eye;
     float tan_half_fov_y;
@@ -20,6 +20,8 @@ struct RtPushConstants {
     RfRayConePushConstants cone;
     uint width;
     uint height;
+    vec2 pixel_offset;
+    uvec2 pad;
 };
 
 // The ray-differential, re-intersection and wireframe values of a primary hit (Rust mirror:

@@ -19,6 +19,7 @@ const uint RT_MODE_MIP_LEVELS = 4u;
 const uint RT_MODE_RAY_DIFF = 5u;
 const uint RT_MODE_BARY_GRADIENTS = 6u;
 const uint RT_MODE_WIREFRAME = 7u;
+const uint RT_MODE_RAY_DIFF_ISOTROPIC = 8u;
 
 // Materials: the discriminants of Material in src/gpu/rt/scene.rs.
 const uint RT_MATERIAL_TEXTURED = 0u;
@@ -46,6 +47,14 @@ layout(std430, set = 0, binding = 5) writeonly buffer RtColours { uint rt_colour
 layout(set = 0, binding = 6) uniform sampler2D rt_textures[2];
 layout(std140, set = 0, binding = 7) uniform RtFrame { RtUniforms rt_frame; };
 
+// The renderer's ray payload: the library's cone payload and the ray's differential (Igehy),
+// which the ray-differential modes carry through the mirror. A primary ray's differential is zero:
+// the closest-hit shader forms it at the hit from the inverse matrices.
+struct RtPayload {
+    RfHitPayload hit;
+    RfRayDiff diff;
+};
+
 // A triangle's vertices.
 struct RtTriangle {
     vec3 p[3];
@@ -72,9 +81,10 @@ vec3 rt_weights(vec2 barycentrics) {
     return vec3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
 }
 
-// Unit direction of the primary ray through the centre of `pixel` (see RtPushConstants' Rust doc).
+// Unit direction of the primary ray through `pixel`, offset from its centre by pc.pixel_offset
+// (see RtPushConstants' Rust doc).
 vec3 rt_primary_direction(uvec2 pixel) {
-    vec2 c = 2.0 * (vec2(pixel) + 0.5) / vec2(pc.width, pc.height) - 1.0;
+    vec2 c = 2.0 * (vec2(pixel) + 0.5 + pc.pixel_offset) / vec2(pc.width, pc.height) - 1.0;
     return normalize(pc.forward + c.x * pc.aspect * pc.tan_half_fov_y * pc.right
         - c.y * pc.tan_half_fov_y * pc.up);
 }
@@ -142,7 +152,7 @@ float rt_coverage(vec3 weights, vec3 deltas) {
 // closed-form cone deltas.
 RtDiffRecord rt_measure_diff(RtTriangle tri, vec2 barycentrics, float t, vec3 origin, vec3 direction,
         mat4 world_to_object, uvec2 pixel, float footprint) {
-    vec2 xy = vec2(pixel);
+    vec2 xy = vec2(pixel) + pc.pixel_offset;
     vec2 size = vec2(pc.width, pc.height);
     RfRayDiff eye = rf_eye_ray_diff_from_matrices(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
     RfDerivatives2 bary = rf_barycentric_derivatives(eye, direction, t, tri.p[0], tri.p[1], tri.p[2]);
@@ -160,17 +170,44 @@ RtDiffRecord rt_measure_diff(RtTriangle tri, vec2 barycentrics, float t, vec3 or
         rf_cone_barycentric_deltas(footprint, tri.p[0], tri.p[1], tri.p[2]), 0u);
 }
 
+// Whether the render mode carries ray differentials through the mirror.
+bool rt_carries_diff() {
+    return pc.mode == RT_MODE_RAY_DIFF || pc.mode == RT_MODE_RAY_DIFF_ISOTROPIC;
+}
+
+// The differential of the ray the mirror reflects at a primary hit (Igehy): the eye-ray
+// differential carried to the hit (origin derivatives from the barycentric derivatives, RTG Eq. 22),
+// its direction derivatives reflected about the interpolated normal, whose own derivatives come from
+// the vertex normals.
+RfRayDiff rt_reflected_diff(RtTriangle tri, vec2 barycentrics, RtPixelRecord record) {
+    RfDerivatives2 bary = RfDerivatives2(record.diff.barycentric_dx, record.diff.barycentric_dy);
+    RfDerivatives3 position = rf_secondary_origin_derivatives(bary, tri.p[0], tri.p[1], tri.p[2]);
+    RfDerivatives3 normal = rf_normal_derivatives(tri.n[0], tri.n[1], tri.n[2], barycentrics, bary);
+    RfRayDiff at_hit = RfRayDiff(position.dx, 0.0, position.dy, 0.0, record.diff.eye_d_direction_dx, 0.0,
+        record.diff.eye_d_direction_dy, 0.0);
+    return rf_reflect_ray_diff(at_hit, record.direction, record.normal, normal);
+}
+
+// The UV derivatives of a hit at distance t along the unit `direction` on `tri`, reached by a ray
+// carrying `diff`: its barycentric derivatives (RTG Eq. 12-19) through the UVs (Eq. 21).
+RfDerivatives2 rt_uv_derivatives(RtTriangle tri, RfRayDiff diff, vec3 direction, float t) {
+    RfDerivatives2 bary = rf_barycentric_derivatives(diff, direction, t, tri.p[0], tri.p[1], tri.p[2]);
+    return rf_texture_derivatives(bary, tri.uv[0], tri.uv[1], tri.uv[2]);
+}
+
 // textureGrad with UV gradients scaled by tex_grad_scale.
 vec3 rt_sample_grad(vec2 uv, vec2 uv_dx, vec2 uv_dy) {
     RfDerivatives2 grad = rf_sample_grad_gradients(RfDerivatives2(uv_dx, uv_dy), pc.cone.tex_grad_scale);
     return textureGrad(rt_textures[0], uv, grad.dx, grad.dy).rgb;
 }
 
-// The texture colour at `uv` as the render mode samples it. The gradient modes need a primary hit;
-// secondary hits, like the cone modes and the wireframe's base, sample at the ray-cone LOD.
+// The texture colour at `uv` as the render mode samples it. The ray-differential modes read the
+// UV derivatives of the record, measured on primary and secondary hits alike; the re-intersection
+// needs a primary hit: on secondary hits it samples, like the cone modes and the wireframe's base,
+// at the ray-cone LOD.
 vec3 rt_texture_colour(RtPixelRecord record, vec2 uv, bool primary) {
-    bool gradients = pc.mode == RT_MODE_RAY_DIFF || pc.mode == RT_MODE_BARY_GRADIENTS;
-    switch (gradients && !primary ? RT_MODE_CONE : pc.mode) {
+    bool reintersection = pc.mode == RT_MODE_BARY_GRADIENTS;
+    switch (reintersection && !primary ? RT_MODE_CONE : pc.mode) {
     case RT_MODE_MIP0:
         return textureLod(rt_textures[0], uv, 0.0).rgb;
     case RT_MODE_TEX_GRAD_SCALE:
@@ -179,6 +216,8 @@ vec3 rt_texture_colour(RtPixelRecord record, vec2 uv, bool primary) {
         return textureLod(rt_textures[1], uv, record.lod).rgb;
     case RT_MODE_RAY_DIFF:
         return rt_sample_grad(uv, record.diff.uv_dx, record.diff.uv_dy);
+    case RT_MODE_RAY_DIFF_ISOTROPIC:
+        return textureLod(rt_textures[0], uv, record.diff.lod).rgb;
     case RT_MODE_BARY_GRADIENTS:
         return rt_sample_grad(uv, record.diff.offset_uv_dx, record.diff.offset_uv_dy);
     default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME

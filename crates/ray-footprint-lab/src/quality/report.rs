@@ -1,0 +1,439 @@
+//! What a run publishes: the goals, the table as Markdown, CSV and JSON, and the images (every
+//! frame, the FLIP error maps, captioned crops side by side) and plots in an output folder.
+
+use super::lab::{Convergence, LabRun, SceneResult};
+use super::{plots, LabError};
+use crate::figure::{self, Panel, RgbaImage};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// PSNR margin over mip 0 that ray differentials must reach on the paraboloid's reflector (RTG
+/// ch. 20 measured 31.0 - 25.0 = 6 dB), dB.
+pub const RAY_DIFF_MARGIN_DB: f64 = 6.0;
+/// PSNR margin over mip 0 that the cone with curvature must reach on the reflector, dB.
+pub const CURVATURE_MARGIN_DB: f64 = 3.0;
+/// Panels per row in the side-by-side crops.
+const PANELS_PER_ROW: usize = 4;
+/// Magnification of the crops (nearest neighbour).
+const CROP_ZOOM: u32 = 2;
+
+/// One goal, what was measured and whether it was met.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Goal {
+    /// The scene it is about.
+    pub scene: String,
+    /// What must hold.
+    pub statement: String,
+    /// What was measured.
+    pub measured: String,
+    /// Whether it holds.
+    pub met: bool,
+}
+
+/// The goals: on the paraboloid, ray differentials (isotropic and anisotropic) at least
+/// [`RAY_DIFF_MARGIN_DB`] and the cone with curvature at least [`CURVATURE_MARGIN_DB`] above mip 0
+/// in PSNR over the reflector; on every scene, every method beats the baseline in mean FLIP and
+/// in shimmer.
+pub fn goals(run: &LabRun) -> Vec<Goal> {
+    let mut goals = Vec::new();
+    for scene in &run.scenes {
+        if scene.scene.name == "paraboloid" {
+            let margins = [
+                ("ray_diff", RAY_DIFF_MARGIN_DB),
+                ("ray_diff_isotropic", RAY_DIFF_MARGIN_DB),
+                ("cone_curvature", CURVATURE_MARGIN_DB),
+            ];
+            goals.extend(
+                margins
+                    .into_iter()
+                    .filter_map(|(name, margin)| margin_goal(scene, name, margin)),
+            );
+        }
+        goals.extend(beats_baseline(scene));
+    }
+    goals
+}
+
+/// `name`'s masked PSNR at least `margin` dB above the baseline's, if the scene has `name`.
+fn margin_goal(scene: &SceneResult, name: &str, margin: f64) -> Option<Goal> {
+    let method = scene.method(name)?;
+    let baseline = scene.baseline();
+    let gain = method.psnr_mask - baseline.psnr_mask;
+    Some(Goal {
+        scene: scene.scene.name.to_string(),
+        statement: format!(
+            "{name} PSNR over the mask >= {} + {margin} dB",
+            baseline.method.name
+        ),
+        measured: format!(
+            "{:+.2} dB ({:.2} vs {:.2} dB)",
+            gain, method.psnr_mask, baseline.psnr_mask
+        ),
+        met: gain >= margin,
+    })
+}
+
+/// Every method but the baseline: lower mean FLIP and lower shimmer than the baseline.
+fn beats_baseline(scene: &SceneResult) -> Vec<Goal> {
+    let baseline = scene.baseline();
+    let mut goals = Vec::new();
+    for method in &scene.methods[1..] {
+        let name = &method.method.name;
+        goals.push(Goal {
+            scene: scene.scene.name.to_string(),
+            statement: format!("{name} FLIP < {}", baseline.method.name),
+            measured: format!("{:.4} vs {:.4}", method.flip, baseline.flip),
+            met: method.flip < baseline.flip,
+        });
+        goals.push(Goal {
+            scene: scene.scene.name.to_string(),
+            statement: format!("{name} shimmer < {}", baseline.method.name),
+            measured: format!("{:.3} vs {:.3} levels", method.shimmer, baseline.shimmer),
+            met: method.shimmer < baseline.shimmer,
+        });
+    }
+    goals
+}
+
+/// The goals as Markdown list items: met or MISSED, the goal and the measurement.
+pub fn goals_markdown(goals: &[Goal]) -> String {
+    goals
+        .iter()
+        .map(|g| {
+            let verdict = if g.met { "met" } else { "**MISSED**" };
+            format!("- {verdict}: {}: {} ({})\n", g.scene, g.statement, g.measured)
+        })
+        .collect()
+}
+
+/// The table in Markdown: one row per scene and method.
+pub fn table_markdown(run: &LabRun) -> String {
+    let mut table = String::from(
+        "| scene | method | PSNR dB | PSNR mask dB | SSIM | FLIP | shimmer | detail kept | ms/frame |\n\
+         | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for scene in &run.scenes {
+        for m in &scene.methods {
+            let _ = writeln!(
+                table,
+                "| {} | {} | {:.2} | {:.2} | {:.4} | {:.4} | {:.3} | {:.1}% | {:.1} |",
+                scene.scene.name,
+                m.method.name,
+                m.psnr,
+                m.psnr_mask,
+                m.ssim,
+                m.flip,
+                m.shimmer,
+                100.0 * m.detail,
+                m.ms_per_frame
+            );
+        }
+    }
+    table
+}
+
+/// How the run was made, in Markdown: device, size, N, K, and per scene its mask, the share
+/// of pixels in it, the truth's own change from frame to frame and where the truth came from.
+pub fn setup_markdown(run: &LabRun) -> String {
+    let s = &run.settings;
+    let n = s.truth.samples_per_axis;
+    let mut text = format!(
+        "Device: {}. Images {} x {}; ground truth: mip 0 (the wireframe: hard lines) with {n} x {n} \
+         stratified samples per pixel, box filter in linear light; {} frames of drift, 1/{n} pixel \
+         to the right per frame.\n\n",
+        run.device, s.size.0, s.size.1, s.truth.frames
+    );
+    for scene in &run.scenes {
+        let share = scene.mask.iter().filter(|&&m| m).count() as f64 / scene.mask.len().max(1) as f64;
+        let source = if scene.truth_cached {
+            String::from("from the cache")
+        } else {
+            format!("rendered in {:.1} s", scene.truth_time.as_secs_f64())
+        };
+        let _ = writeln!(
+            text,
+            "- {}: {}; mask: {} ({:.1}% of the pixels); ground truth {source}, its own change \
+             from frame to frame {:.3} levels.",
+            scene.scene.name,
+            scene.scene.description,
+            scene.scene.mask.describe(&scene.scene.scene),
+            100.0 * share,
+            scene.truth_change
+        );
+    }
+    text
+}
+
+/// The table as CSV, one row per scene and method, a header first.
+pub fn table_csv(run: &LabRun) -> String {
+    let mut csv =
+        String::from("scene,method,psnr_db,psnr_mask_db,ssim,flip,change,shimmer,detail_kept,ms_per_frame\n");
+    for scene in &run.scenes {
+        for m in &scene.methods {
+            let _ = writeln!(
+                csv,
+                "{},{},{:.4},{:.4},{:.6},{:.6},{:.4},{:.4},{:.6},{:.3}",
+                scene.scene.name,
+                m.method.name,
+                m.psnr,
+                m.psnr_mask,
+                m.ssim,
+                m.flip,
+                m.change,
+                m.shimmer,
+                m.detail,
+                m.ms_per_frame
+            );
+        }
+    }
+    csv
+}
+
+/// A JSON string literal of `text`.
+fn json_string(text: &str) -> String {
+    let mut out = String::from("\"");
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => {
+                let _ = write!(out, "\\u{:04x}", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// A JSON number, or `null` for a value JSON cannot hold (infinite PSNR).
+fn json_number(value: f64) -> String {
+    if value.is_finite() {
+        format!("{value}")
+    } else {
+        String::from("null")
+    }
+}
+
+/// The run as JSON: the setup, every row, the goals, and the convergence rows if given.
+pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String {
+    let s = &run.settings;
+    let mut rows = Vec::new();
+    for scene in &run.scenes {
+        for m in &scene.methods {
+            let fields = [
+                ("psnr_db", m.psnr),
+                ("psnr_mask_db", m.psnr_mask),
+                ("ssim", m.ssim),
+                ("flip", m.flip),
+                ("change", m.change),
+                ("shimmer", m.shimmer),
+                ("detail_kept", m.detail),
+                ("ms_per_frame", m.ms_per_frame),
+            ];
+            let numbers: Vec<String> = fields
+                .iter()
+                .map(|(name, value)| format!("\"{name}\": {}", json_number(*value)))
+                .collect();
+            rows.push(format!(
+                "    {{\"scene\": {}, \"method\": {}, {}}}",
+                json_string(scene.scene.name),
+                json_string(&m.method.name),
+                numbers.join(", ")
+            ));
+        }
+    }
+    let goals: Vec<String> = goals
+        .iter()
+        .map(|g| {
+            format!(
+                "    {{\"scene\": {}, \"goal\": {}, \"measured\": {}, \"met\": {}}}",
+                json_string(&g.scene),
+                json_string(&g.statement),
+                json_string(&g.measured),
+                g.met
+            )
+        })
+        .collect();
+    let convergence: Vec<String> = convergence
+        .iter()
+        .map(|c| {
+            format!(
+                "    {{\"scene\": {}, \"method\": {}, \"psnr_n_db\": {}, \"psnr_2n_db\": {}, \"psnr_mask_n_db\": {}, \"psnr_mask_2n_db\": {}}}",
+                json_string(c.scene),
+                json_string(&c.method),
+                json_number(c.psnr_n.0),
+                json_number(c.psnr_2n.0),
+                json_number(c.psnr_n.1),
+                json_number(c.psnr_2n.1)
+            )
+        })
+        .collect();
+    format!(
+        "{{\n  \"device\": {},\n  \"width\": {},\n  \"height\": {},\n  \"samples_per_axis\": {},\n  \"frames\": {},\n  \
+         \"rows\": [\n{}\n  ],\n  \"goals\": [\n{}\n  ],\n  \"convergence\": [\n{}\n  ]\n}}\n",
+        json_string(&run.device),
+        s.size.0,
+        s.size.1,
+        s.truth.samples_per_axis,
+        s.truth.frames,
+        rows.join(",\n"),
+        goals.join(",\n"),
+        convergence.join(",\n")
+    )
+}
+
+/// The convergence rows in Markdown: PSNR against N and 2N samples per axis and the change.
+pub fn convergence_markdown(rows: &[Convergence], n: u32) -> String {
+    let mut table = format!(
+        "| scene | method | PSNR vs {n}x{n} | PSNR vs {m}x{m} | change | mask vs {n}x{n} | mask vs {m}x{m} | change |\n\
+         | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+        m = 2 * n
+    );
+    for c in rows {
+        let _ = writeln!(
+            table,
+            "| {} | {} | {:.2} | {:.2} | {:+.3} | {:.2} | {:.2} | {:+.3} |",
+            c.scene,
+            c.method,
+            c.psnr_n.0,
+            c.psnr_2n.0,
+            c.psnr_2n.0 - c.psnr_n.0,
+            c.psnr_n.1,
+            c.psnr_2n.1,
+            c.psnr_2n.1 - c.psnr_n.1
+        );
+    }
+    table
+}
+
+/// The largest change of PSNR (whole image or mask) from N to 2N over all rows, dB.
+pub fn largest_convergence_change(rows: &[Convergence]) -> f64 {
+    rows.iter()
+        .flat_map(|c| [(c.psnr_2n.0 - c.psnr_n.0).abs(), (c.psnr_2n.1 - c.psnr_n.1).abs()])
+        .fold(0.0, f64::max)
+}
+
+/// Writes `text` to `path`.
+fn write_text(path: &Path, text: &str) -> Result<(), LabError> {
+    std::fs::write(path, text).map_err(|e| LabError::Io(format!("writing {}: {e}", path.display())))
+}
+
+fn create_dir(path: &Path) -> Result<(), LabError> {
+    std::fs::create_dir_all(path).map_err(|e| LabError::Io(format!("creating {}: {e}", path.display())))
+}
+
+/// The part of `image` the scene's crop covers, magnified.
+fn crop(image: &RgbaImage, fraction: [f32; 4]) -> RgbaImage {
+    let (w, h) = (image.width as f32, image.height as f32);
+    let corner = ((fraction[0] * w) as u32, (fraction[1] * h) as u32);
+    let size = (
+        ((fraction[2] * w) as u32).max(1),
+        ((fraction[3] * h) as u32).max(1),
+    );
+    image.crop(corner, size, CROP_ZOOM)
+}
+
+/// `panels` in rows of [`PANELS_PER_ROW`].
+fn rows_of(panels: Vec<Panel>) -> Vec<Vec<Panel>> {
+    panels.chunks(PANELS_PER_ROW).map(<[Panel]>::to_vec).collect()
+}
+
+/// A method's caption: its name and, for the wireframe scene, the preset drawn.
+fn caption(scene: &SceneResult, name: &str) -> String {
+    match scene.scene.measure {
+        super::Measure::Texture => name.to_string(),
+        super::Measure::Wireframe { preset, .. } => format!("{name}, {preset}"),
+    }
+}
+
+/// Writes one scene's images: every still frame and the truth (`images/`), every FLIP map
+/// (`flip/`), and the captioned crops side by side (`crops/<scene>.png`, `crops/<scene>_flip.png`).
+fn write_scene_images(
+    scene: &SceneResult,
+    n: u32,
+    out: &Path,
+    written: &mut Vec<PathBuf>,
+) -> Result<(), LabError> {
+    let name = scene.scene.name;
+    let mut save = |path: PathBuf, image: &RgbaImage| -> Result<(), LabError> {
+        figure::write_png(&path, image)?;
+        written.push(path);
+        Ok(())
+    };
+    let truth = scene.truth.to_rgba();
+    save(out.join(format!("images/{name}_truth.png")), &truth)?;
+    let mut crops = vec![Panel::new(
+        caption(scene, &format!("ground truth {n}x{n}")),
+        crop(&truth, scene.scene.crop),
+    )];
+    let mut flips = Vec::new();
+    for m in &scene.methods {
+        let method = &m.method.name;
+        let frame = m.frame.to_rgba();
+        let flip = m.flip_map.to_rgba();
+        save(out.join(format!("images/{name}_{method}.png")), &frame)?;
+        save(out.join(format!("flip/{name}_{method}.png")), &flip)?;
+        let label = caption(scene, method);
+        crops.push(Panel::new(
+            format!("{label}: {:.2} dB", m.psnr_mask),
+            crop(&frame, scene.scene.crop),
+        ));
+        flips.push(Panel::new(
+            format!("{label}: FLIP {:.3}", m.flip),
+            crop(&flip, scene.scene.crop),
+        ));
+    }
+    save(
+        out.join(format!("crops/{name}.png")),
+        &figure::grid(&rows_of(crops))?,
+    )?;
+    save(
+        out.join(format!("crops/{name}_flip.png")),
+        &figure::grid(&rows_of(flips))?,
+    )
+}
+
+/// Writes everything a run publishes into `out`: `table.md` (setup, table, goals, and the
+/// convergence table if given), `table.csv`, `table.json`, the images of every scene, and the
+/// plots. Returns the files written.
+pub fn write(
+    run: &LabRun,
+    goals: &[Goal],
+    convergence: &[Convergence],
+    out: &Path,
+) -> Result<Vec<PathBuf>, LabError> {
+    for dir in ["images", "flip", "crops"] {
+        create_dir(&out.join(dir))?;
+    }
+    let n = run.settings.truth.samples_per_axis;
+    let mut markdown = format!(
+        "# Quality lab\n\n{}\n{}\n## Goals\n\n{}",
+        setup_markdown(run),
+        table_markdown(run),
+        goals_markdown(goals)
+    );
+    if !convergence.is_empty() {
+        let _ = write!(
+            markdown,
+            "\n## Convergence of the ground truth\n\n{}\nLargest change: {:.3} dB.\n",
+            convergence_markdown(convergence, n),
+            largest_convergence_change(convergence)
+        );
+    }
+    let mut written = Vec::new();
+    let texts = [
+        ("table.md", markdown),
+        ("table.csv", table_csv(run)),
+        ("table.json", json(run, goals, convergence)),
+    ];
+    for (file, text) in texts {
+        write_text(&out.join(file), &text)?;
+        written.push(out.join(file));
+    }
+    for scene in &run.scenes {
+        write_scene_images(scene, n, out, &mut written)?;
+    }
+    written.extend(plots::write_all(run, out)?);
+    Ok(written)
+}
