@@ -530,8 +530,11 @@ fn refracted_direction(
 /// `dmu/dx = (eta - eta^2 dot(D, N) / dot(T, N)) d(dot(D, N))/dx` and
 /// `dT/dx = eta dD/dx - (mu dN/dx + dmu/dx N)`, same for y. Origin differentials are kept.
 ///
-/// Total internal reflection (`1 - eta^2 (1 - dot(D, N)^2) < 0`) is reported in the flag, and `diff`
-/// is then the reflected differential ([`reflect_ray_diff`]). `dot(T, N)` is clamped away from 0 to
+/// Total internal reflection (`k = 1 - eta^2 (1 - dot(D, N)^2) < 0`) is reported in the flag, and
+/// `diff` is then the reflected differential ([`reflect_ray_diff`]): the same derivative with
+/// `eta = 1`, `mu = 2 dot(D, N)` and `rate = 2`, since `R = D - 2 dot(D, N) N` is `T` with those.
+/// The shaders compute both sets and select one (no branch); the products with 1 and 2 are exact,
+/// so the result is `reflect_ray_diff`'s bit for bit. `dot(T, N)` is clamped away from 0 to
 /// `|dot(T, N)| >= DIFF_MIN_COS` (the critical angle, where `dmu` diverges).
 pub fn refract_ray_diff(
     diff: RayDiff,
@@ -542,24 +545,37 @@ pub fn refract_ray_diff(
 ) -> RefractedRayDiff {
     let cosine = direction.dot(normal);
     let k = 1.0 - eta * eta * (1.0 - cosine * cosine);
-    if k < 0.0 {
-        return RefractedRayDiff {
-            diff: reflect_ray_diff(diff, direction, normal, d_normal),
-            total_internal_reflection: true,
-        };
-    }
-    let root = k.sqrt();
+    let total_internal_reflection = k < 0.0;
+    let root = k.max(0.0).sqrt();
     let transmitted_cos = if cosine <= 0.0 { -root } else { root };
     let mu = eta * cosine - transmitted_cos;
     let rate = eta - eta * eta * cosine / clamp_away_from_zero(transmitted_cos, DIFF_MIN_COS);
+    let (ratio, normal_scale, normal_rate) = if total_internal_reflection {
+        (1.0, 2.0 * cosine, 2.0)
+    } else {
+        (eta, mu, rate)
+    };
+    let direction_x = refracted_direction(
+        diff.d_direction_dx,
+        direction,
+        normal,
+        d_normal.dx,
+        ratio,
+        normal_scale,
+        normal_rate,
+    );
+    let direction_y = refracted_direction(
+        diff.d_direction_dy,
+        direction,
+        normal,
+        d_normal.dy,
+        ratio,
+        normal_scale,
+        normal_rate,
+    );
     RefractedRayDiff {
-        diff: RayDiff::new(
-            diff.d_origin_dx,
-            diff.d_origin_dy,
-            refracted_direction(diff.d_direction_dx, direction, normal, d_normal.dx, eta, mu, rate),
-            refracted_direction(diff.d_direction_dy, direction, normal, d_normal.dy, eta, mu, rate),
-        ),
-        total_internal_reflection: false,
+        diff: RayDiff::new(diff.d_origin_dx, diff.d_origin_dy, direction_x, direction_y),
+        total_internal_reflection,
     }
 }
 

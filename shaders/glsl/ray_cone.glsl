@@ -147,10 +147,11 @@ float rf_triangle_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2
 }
 
 // -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
-// +RF_MIN_COS.
+// +RF_MIN_COS. mix with a bool selector is OpSelect: no branch.
 float rf_facing_cos(vec3 normal, vec3 direction) {
     float facing = -dot(normal, direction);
-    return abs(facing) < RF_MIN_COS ? (facing >= 0.0 ? RF_MIN_COS : -RF_MIN_COS) : facing;
+    float signed_minimum = mix(-RF_MIN_COS, RF_MIN_COS, facing >= 0.0);
+    return mix(facing, signed_minimum, abs(facing) < RF_MIN_COS);
 }
 
 // Reflection spread from curvature (JCGT 2021, Falcor's form): 2 k width / dn with the signed
@@ -229,10 +230,7 @@ struct RfRefractedRayCone {
 vec2 rf_incidence_sin_cos(vec3 normal, vec3 direction, float cosine) {
     vec2 sin_cos = vec2(length(direction - cosine * normal), abs(cosine));
     float sin_cos_length = length(sin_cos);
-    if (sin_cos_length < RF_MIN_MAGNITUDE) {
-        return vec2(0.0, 1.0);
-    }
-    return sin_cos / sin_cos_length;
+    return mix(sin_cos / sin_cos_length, vec2(0.0, 1.0), bvec2(sin_cos_length < RF_MIN_MAGNITUDE));
 }
 
 // (sin(angle), cos(angle)).
@@ -286,10 +284,9 @@ float rf_boundary_offset(float hit, float side, vec2 refracted, vec2 tilt, vec2 
 float rf_refracted_sine_gap(float eta, vec2 incidence, vec2 local, vec2 upper, vec2 lower) {
     float upper_sine = eta * upper.x;
     float lower_sine = eta * lower.x;
-    if (abs(upper_sine) <= 1.0 && abs(lower_sine) <= 1.0) {
-        return 2.0 * eta * incidence.y * local.x;
-    }
-    return clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+    float exact = 2.0 * eta * incidence.y * local.x;
+    float clamped = clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+    return mix(clamped, exact, all(lessThanEqual(abs(vec2(upper_sine, lower_sine)), vec2(1.0))));
 }
 
 // Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin = sine_gap (1 + cos) /
@@ -305,17 +302,15 @@ float rf_refracted_angle_between(float sine_gap, vec2 upper, vec2 lower) {
 // Refraction of a cone at the hit (RTG II ch. 10, whole angles; Falcor computeRayConeForRefraction):
 // boundary rays at i +- h land at +-(w/2) cos h / cos(i +- h), refract at normals tilted -+beta/2;
 // new spread = angle between them, new width = their distance across the refracted central ray.
-// eta sin i > 1: the reflected cone (width, spread + 2 beta) and the flag.
+// eta sin i > 1: the reflected cone (width, spread + 2 beta) and the flag. Both cones are evaluated
+// and one selected: no branch.
 RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, vec3 normal, vec3 direction, float normal_spread_angle,
     float eta) {
     float cosine = dot(normal, direction);
-    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    float facing_spread = mix(normal_spread_angle, -normal_spread_angle, cosine > 0.0);
     vec2 incidence = rf_incidence_sin_cos(normal, direction, cosine);
     float index = max(eta, 0.0);
-    float sin_transmitted = index * incidence.x;
-    if (sin_transmitted > 1.0) {
-        return RfRefractedRayCone(RfRayCone(cone.width, cone.spread_angle + 2.0 * facing_spread), true);
-    }
+    bool total_internal_reflection = index * incidence.x > 1.0;
     vec2 transmitted = rf_refracted_sin_cos(incidence, index);
     float half_spread = rf_refraction_half_spread(cone.spread_angle, incidence);
     float tilt = rf_normal_tilt(cone.width, facing_spread);
@@ -329,13 +324,16 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, vec3 normal, vec3 directi
     vec2 tilt_sin_cos = rf_angle_sin_cos(tilt);
     float upper_hit = rf_boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
     float lower_hit = rf_boundary_hit(cone.width, -1.0, incidence, half_sin_cos);
+    float refracted_width = rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
+        - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted);
+    float refracted_spread = rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt;
+    float reflected_spread = cone.spread_angle + 2.0 * facing_spread;
     return RfRefractedRayCone(
         RfRayCone(
-            rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
-                - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
-            rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt
+            mix(refracted_width, cone.width, total_internal_reflection),
+            mix(refracted_spread, reflected_spread, total_internal_reflection)
         ),
-        false
+        total_internal_reflection
     );
 }
 

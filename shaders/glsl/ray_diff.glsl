@@ -154,9 +154,11 @@ RfNeighbourDirections rf_pixel_directions(vec2 pixel, vec2 image_size, mat4 view
         rf_matrix_ray_direction(vec2(ndc.x, next.y), view_inv, proj_inv));
 }
 
-// value, or min_magnitude with the sign of value (+ for 0) when |value| < min_magnitude.
+// value, or min_magnitude with the sign of value (+ for 0) when |value| < min_magnitude. mix with a
+// bool selector is OpSelect: no branch.
 float rf_clamp_away_from_zero(float value, float min_magnitude) {
-    return abs(value) < min_magnitude ? (value >= 0.0 ? min_magnitude : -min_magnitude) : value;
+    float signed_minimum = mix(-min_magnitude, min_magnitude, value >= 0.0);
+    return mix(value, signed_minimum, abs(value) < min_magnitude);
 }
 
 // Igehy's transfer for one axis: q = dO + t dD, dt = -dot(q, N) / cosine, dP = q + dt D.
@@ -278,24 +280,28 @@ vec3 rf_refracted_direction(vec3 d_direction, vec3 direction, vec3 normal, vec3 
 
 // Refracted differential with relative index eta (Igehy): mu = eta dot(D, N) - dot(T, N),
 // rate = eta - eta^2 dot(D, N) / dot(T, N) (dot(T, N) clamped away from 0 to RF_DIFF_MIN_COS).
-// Total internal reflection: the reflected differential and the flag set.
+// Total internal reflection (k = 1 - eta^2 (1 - dot(D, N)^2) < 0): the reflected differential, the
+// same derivative with eta = 1, mu = 2 dot(D, N), rate = 2 (selected, no branch), and the flag set.
 RfRefractedRayDiff rf_refract_ray_diff(RfRayDiff diff, vec3 direction, vec3 normal, RfDerivatives3 d_normal,
     float eta) {
     float cosine = dot(direction, normal);
     float k = 1.0 - eta * eta * (1.0 - cosine * cosine);
-    if (k < 0.0) {
-        return RfRefractedRayDiff(rf_reflect_ray_diff(diff, direction, normal, d_normal), true);
-    }
-    float root = sqrt(k);
-    float transmitted_cos = cosine <= 0.0 ? -root : root;
+    bool total_internal_reflection = k < 0.0;
+    float root = sqrt(max(k, 0.0));
+    float transmitted_cos = mix(root, -root, cosine <= 0.0);
     float mu = eta * cosine - transmitted_cos;
     float rate = eta - eta * eta * cosine / rf_clamp_away_from_zero(transmitted_cos, RF_DIFF_MIN_COS);
-    RfRayDiff refracted = RfRayDiff(
+    float ratio = mix(eta, 1.0, total_internal_reflection);
+    float normal_scale = mix(mu, 2.0 * cosine, total_internal_reflection);
+    float normal_rate = mix(rate, 2.0, total_internal_reflection);
+    RfRayDiff leaving = RfRayDiff(
         diff.d_origin_dx, 0.0,
         diff.d_origin_dy, 0.0,
-        rf_refracted_direction(diff.d_direction_dx, direction, normal, d_normal.dx, eta, mu, rate), 0.0,
-        rf_refracted_direction(diff.d_direction_dy, direction, normal, d_normal.dy, eta, mu, rate), 0.0);
-    return RfRefractedRayDiff(refracted, false);
+        rf_refracted_direction(diff.d_direction_dx, direction, normal, d_normal.dx, ratio, normal_scale, normal_rate),
+        0.0,
+        rf_refracted_direction(diff.d_direction_dy, direction, normal, d_normal.dy, ratio, normal_scale, normal_rate),
+        0.0);
+    return RfRefractedRayDiff(leaving, total_internal_reflection);
 }
 
 // G-buffer neighbour choice (RTG Sec. 20.3.3): the backward neighbour when the forward distance step
@@ -459,12 +465,8 @@ vec3 rf_orthonormal_tangent(vec3 n) {
 RfDerivatives3 rf_anisotropic_cone_axes(float width, vec3 normal, vec3 direction) {
     vec3 across = cross(normal, direction);
     float length2 = dot(across, across);
-    vec3 minor;
-    if (length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE) {
-        minor = cross(normal, rf_orthonormal_tangent(normal));
-    } else {
-        minor = across / sqrt(length2);
-    }
+    vec3 fixed_minor = cross(normal, rf_orthonormal_tangent(normal));
+    vec3 minor = mix(across / sqrt(length2), fixed_minor, bvec3(length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE));
     float size = abs(width);
     return RfDerivatives3(cross(minor, normal) * (size / max(abs(dot(normal, direction)), RF_DIFF_MIN_COS)),
         minor * size);

@@ -24,7 +24,8 @@ struct RfBarycentricOffsets {
 
 // value, or min_magnitude with the sign of value (+ for 0) when |value| < min_magnitude.
 double rf_clamp_away_from_zero_f64(double value, double min_magnitude) {
-    return abs(value) < min_magnitude ? (value >= double(0.0) ? min_magnitude : -min_magnitude) : value;
+    double signed_minimum = mix(-min_magnitude, min_magnitude, value >= double(0.0));
+    return mix(value, signed_minimum, abs(value) < min_magnitude);
 }
 
 // Barycentrics (w, u, v) of the ray's hit on the unbounded triangle plane, in double (RTG Eq. 13,

@@ -236,10 +236,7 @@ struct RfRefractedRayCone {
 fn rf_incidence_sin_cos(normal: vec3<f32>, direction: vec3<f32>, cosine: f32) -> vec2<f32> {
     let sin_cos = vec2<f32>(length(direction - cosine * normal), abs(cosine));
     let sin_cos_length = length(sin_cos);
-    if sin_cos_length < RF_MIN_MAGNITUDE {
-        return vec2<f32>(0.0, 1.0);
-    }
-    return sin_cos / sin_cos_length;
+    return select(sin_cos / sin_cos_length, vec2<f32>(0.0, 1.0), sin_cos_length < RF_MIN_MAGNITUDE);
 }
 
 // (sin(angle), cos(angle)).
@@ -297,10 +294,9 @@ fn rf_refracted_sine_gap(
 ) -> f32 {
     let upper_sine = eta * upper.x;
     let lower_sine = eta * lower.x;
-    if abs(upper_sine) <= 1.0 && abs(lower_sine) <= 1.0 {
-        return 2.0 * eta * incidence.y * local.x;
-    }
-    return clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+    let exact = 2.0 * eta * incidence.y * local.x;
+    let clamped = clamp(upper_sine, -1.0, 1.0) - clamp(lower_sine, -1.0, 1.0);
+    return select(clamped, exact, all(abs(vec2<f32>(upper_sine, lower_sine)) <= vec2<f32>(1.0)));
 }
 
 // Angle from the lower to the upper refracted boundary: atan2(sin, cos), sin = sine_gap (1 + cos) /
@@ -316,7 +312,8 @@ fn rf_refracted_angle_between(sine_gap: f32, upper: vec2<f32>, lower: vec2<f32>)
 // Refraction of a cone at the hit (RTG II ch. 10, whole angles; Falcor computeRayConeForRefraction):
 // boundary rays at i +- h land at +-(w/2) cos h / cos(i +- h), refract at normals tilted -+beta/2;
 // new spread = angle between them, new width = their distance across the refracted central ray.
-// eta sin i > 1: the reflected cone (width, spread + 2 beta) and the flag.
+// eta sin i > 1: the reflected cone (width, spread + 2 beta) and the flag. Both cones are evaluated
+// and one selected: no branch.
 fn rf_refract_ray_cone(
     cone: RfRayCone, normal: vec3<f32>, direction: vec3<f32>, normal_spread_angle: f32, eta: f32,
 ) -> RfRefractedRayCone {
@@ -324,10 +321,7 @@ fn rf_refract_ray_cone(
     let facing_spread = select(normal_spread_angle, -normal_spread_angle, cosine > 0.0);
     let incidence = rf_incidence_sin_cos(normal, direction, cosine);
     let index = max(eta, 0.0);
-    let sin_transmitted = index * incidence.x;
-    if sin_transmitted > 1.0 {
-        return RfRefractedRayCone(RfRayCone(cone.width, cone.spread_angle + 2.0 * facing_spread), true);
-    }
+    let total_internal_reflection = index * incidence.x > 1.0;
     let transmitted = rf_refracted_sin_cos(incidence, index);
     let half_spread = rf_refraction_half_spread(cone.spread_angle, incidence);
     let tilt = rf_normal_tilt(cone.width, facing_spread);
@@ -341,13 +335,16 @@ fn rf_refract_ray_cone(
     let tilt_sin_cos = rf_angle_sin_cos(tilt);
     let upper_hit = rf_boundary_hit(cone.width, 1.0, incidence, half_sin_cos);
     let lower_hit = rf_boundary_hit(cone.width, -1.0, incidence, half_sin_cos);
+    let refracted_width = rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
+        - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted);
+    let refracted_spread = rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt;
+    let reflected_spread = cone.spread_angle + 2.0 * facing_spread;
     return RfRefractedRayCone(
         RfRayCone(
-            rf_boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
-                - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
-            rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt,
+            select(refracted_width, cone.width, total_internal_reflection),
+            select(refracted_spread, reflected_spread, total_internal_reflection),
         ),
-        false,
+        total_internal_reflection,
     );
 }
 

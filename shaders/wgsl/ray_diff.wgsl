@@ -305,26 +305,30 @@ fn rf_refracted_direction(
 
 // Refracted differential with relative index eta (Igehy): mu = eta dot(D, N) - dot(T, N),
 // rate = eta - eta^2 dot(D, N) / dot(T, N) (dot(T, N) clamped away from 0 to RF_DIFF_MIN_COS).
-// Total internal reflection: the reflected differential and the flag set.
+// Total internal reflection (k = 1 - eta^2 (1 - dot(D, N)^2) < 0): the reflected differential, the
+// same derivative with eta = 1, mu = 2 dot(D, N), rate = 2 (selected, no branch), and the flag set.
 fn rf_refract_ray_diff(
     diff: RfRayDiff, direction: vec3<f32>, normal: vec3<f32>, d_normal: RfDerivatives3, eta: f32,
 ) -> RfRefractedRayDiff {
     let cosine = dot(direction, normal);
     let k = 1.0 - eta * eta * (1.0 - cosine * cosine);
-    if k < 0.0 {
-        return RfRefractedRayDiff(rf_reflect_ray_diff(diff, direction, normal, d_normal), true);
-    }
-    let root = sqrt(k);
+    let total_internal_reflection = k < 0.0;
+    let root = sqrt(max(k, 0.0));
     let transmitted_cos = select(root, -root, cosine <= 0.0);
     let mu = eta * cosine - transmitted_cos;
     let rate = eta - eta * eta * cosine / rf_clamp_away_from_zero(transmitted_cos, RF_DIFF_MIN_COS);
-    let refracted = RfRayDiff(
+    let ratio = select(eta, 1.0, total_internal_reflection);
+    let normal_scale = select(mu, 2.0 * cosine, total_internal_reflection);
+    let normal_rate = select(rate, 2.0, total_internal_reflection);
+    let leaving = RfRayDiff(
         diff.d_origin_dx, 0.0,
         diff.d_origin_dy, 0.0,
-        rf_refracted_direction(diff.d_direction_dx, direction, normal, d_normal.dx, eta, mu, rate), 0.0,
-        rf_refracted_direction(diff.d_direction_dy, direction, normal, d_normal.dy, eta, mu, rate), 0.0,
+        rf_refracted_direction(diff.d_direction_dx, direction, normal, d_normal.dx, ratio, normal_scale, normal_rate),
+        0.0,
+        rf_refracted_direction(diff.d_direction_dy, direction, normal, d_normal.dy, ratio, normal_scale, normal_rate),
+        0.0,
     );
-    return RfRefractedRayDiff(refracted, false);
+    return RfRefractedRayDiff(leaving, total_internal_reflection);
 }
 
 // G-buffer neighbour choice (RTG Sec. 20.3.3): the backward neighbour when the forward distance step
@@ -334,7 +338,7 @@ fn rf_gbuffer_use_backward(
 ) -> bool {
     let forward_step = abs(forward.distance - center.distance);
     let backward_step = abs(backward.distance - center.distance);
-    return forward_step > depth_epsilon && backward_step < forward_step;
+    return (forward_step > depth_epsilon) & (backward_step < forward_step);
 }
 
 // Hit position step (RTG Eq. 23): t(end) e(end) - t(start) e(start).
@@ -506,12 +510,8 @@ fn rf_orthonormal_tangent(n: vec3<f32>) -> vec3<f32> {
 fn rf_anisotropic_cone_axes(width: f32, normal: vec3<f32>, direction: vec3<f32>) -> RfDerivatives3 {
     let across = cross(normal, direction);
     let length2 = dot(across, across);
-    var minor: vec3<f32>;
-    if length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE {
-        minor = cross(normal, rf_orthonormal_tangent(normal));
-    } else {
-        minor = across / sqrt(length2);
-    }
+    let fixed_minor = cross(normal, rf_orthonormal_tangent(normal));
+    let minor = select(across / sqrt(length2), fixed_minor, length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE);
     let size = abs(width);
     return RfDerivatives3(
         cross(minor, normal) * (size / max(abs(dot(normal, direction)), RF_DIFF_MIN_COS)),

@@ -9,18 +9,29 @@
 //! spirv-opt's merge-return pass wraps in a one-case switch.
 //!
 //! Prints a Markdown table (the README's), with a `*` where the WGSL and GLSL instruction counts
-//! differ by more than a quarter.
+//! differ by more than a quarter. Below it, when `rf_process_wireframe` is measured, the same counts
+//! for a yardstick in the same kernel: `unguarded_process_wireframe` (`benches/unguarded/`), the
+//! wireframe tutorial's coverage formula without the crate's guards, so that the table says what
+//! the defined behaviour on degenerate input costs.
 //!
 //! `cargo bench -p ray-footprint-lab --bench function_costs [-- --function NAME] [--module NAME]`
 //!
 //! `--function` takes the shader name (`rf_process_wireframe`) or the mirror's
 //! (`process_wireframe`); `--module` a module's file stem (`wireframe`).
 
-use ray_footprint::shaders::Module;
+use glam::Vec3;
+use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR};
+use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks::all_checks;
 use shader_proptest::spirv::{self, Statistics, TRANSCENDENTAL};
-use shader_proptest::{Check, Language};
+use shader_proptest::{kernel_source, Args, Check, Language, Shader, Value};
 use std::process::{Command, ExitCode};
+
+/// The unguarded yardstick of `rf_process_wireframe`, per language, appended to the module.
+const UNGUARDED_WIREFRAME: [(Language, &str); 2] = [
+    (Language::Wgsl, include_str!("unguarded/process_wireframe.wgsl")),
+    (Language::Glsl, include_str!("unguarded/process_wireframe.glsl")),
+];
 
 /// Largest relative difference between the WGSL and GLSL instruction counts left unmarked.
 const MARK_ABOVE: f64 = 0.25;
@@ -65,11 +76,37 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Filter, String> 
 /// The counts of `check`'s kernel for `module` in `language`, after `spirv-opt -O`.
 fn measure(module: Module, check: &dyn Check, language: Language) -> Result<Statistics, String> {
     let shader = module.shader(language);
-    let words = shader
-        .compile_kernel(&check.kernel(&shader))
-        .map_err(|e| format!("{} ({language}): {e}", check.function()))?;
-    let optimized = spirv::optimize(&words).map_err(|e| format!("{} ({language}): {e}", check.function()))?;
-    Statistics::of(&optimized).map_err(|e| format!("{} ({language}): {e}", check.function()))
+    count(&shader, &check.kernel(&shader)).map_err(|e| format!("{} ({language}): {e}", check.function()))
+}
+
+/// The counts of `kernel`, compiled against `shader` and optimised by `spirv-opt -O`.
+fn count(shader: &Shader, kernel: &str) -> Result<Statistics, String> {
+    let words = shader.compile_kernel(kernel).map_err(|e| e.to_string())?;
+    let optimized = spirv::optimize(&words).map_err(|e| e.to_string())?;
+    Statistics::of(&optimized).map_err(|e| e.to_string())
+}
+
+/// The counts of the unguarded yardstick's kernel in `language`, after `spirv-opt -O`: the wireframe
+/// module with the yardstick appended, called with `rf_process_wireframe`'s arguments.
+fn measure_unguarded(language: Language) -> Result<Statistics, String> {
+    let (_, yardstick) = UNGUARDED_WIREFRAME
+        .iter()
+        .find(|(l, _)| *l == language)
+        .expect("a yardstick per language");
+    let module = Module::Wireframe.shader(language);
+    let shader = match language {
+        Language::Wgsl => Shader::wgsl(format!("{}\n{yardstick}", module.source())),
+        Language::Glsl => {
+            Shader::glsl(format!("{}\n{yardstick}", module.source())).include_dir(GLSL_INCLUDE_DIR)
+        }
+    };
+    let kernel = kernel_source(
+        &shader,
+        "unguarded_process_wireframe",
+        <(WireframeSettings, Vec3, Vec3)>::TYPES,
+        f32::TYPE,
+    );
+    count(&shader, &kernel).map_err(|e| format!("unguarded_process_wireframe ({language}): {e}"))
 }
 
 /// The first line `program --version` prints (on either stream), or why it did not run.
@@ -115,6 +152,27 @@ fn row(module: Module, function: &str, [wgsl, glsl]: [Statistics; 2]) -> String 
     )
 }
 
+fn print_header() {
+    println!("| module | function | WGSL instructions | GLSL instructions | WGSL vs GLSL | WGSL branches | GLSL branches | WGSL extended | GLSL extended | WGSL transcendental | GLSL transcendental |");
+    println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+}
+
+/// Prints the row of `function`, or its errors; whether it was measured in both languages.
+fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>; 2]) -> bool {
+    match counts {
+        [Ok(wgsl), Ok(glsl)] => {
+            println!("{}", row(module, function, [wgsl, glsl]));
+            true
+        }
+        [wgsl, glsl] => {
+            for error in [wgsl.err(), glsl.err()].into_iter().flatten() {
+                eprintln!("error: {error}");
+            }
+            false
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let filter = match parse_args(std::env::args().skip(1)) {
         Ok(filter) => filter,
@@ -142,20 +200,23 @@ fn main() -> ExitCode {
         "branches: conditional branches + switches, the kernel's own 1+1 (its bounds check) included; \
          * marks a WGSL/GLSL instruction difference above 25%\n"
     );
-    println!("| module | function | WGSL instructions | GLSL instructions | WGSL vs GLSL | WGSL branches | GLSL branches | WGSL extended | GLSL extended | WGSL transcendental | GLSL transcendental |");
-    println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    print_header();
     let mut failed = 0;
     for (module, check) in &checks {
         let counts = Language::ALL.map(|language| measure(*module, check.as_ref(), language));
-        match counts {
-            [Ok(wgsl), Ok(glsl)] => println!("{}", row(*module, check.function(), [wgsl, glsl])),
-            [wgsl, glsl] => {
-                for error in [wgsl.err(), glsl.err()].into_iter().flatten() {
-                    eprintln!("error: {error}");
-                }
-                failed += 1;
-            }
-        }
+        failed += usize::from(!print_row(*module, check.function(), counts));
+    }
+    if filter.accepts(Module::Wireframe, "rf_process_wireframe") {
+        println!(
+            "\nYardstick in the same kernel: the tutorial's formula without guards (benches/unguarded/)\n"
+        );
+        print_header();
+        let counts = Language::ALL.map(measure_unguarded);
+        failed += usize::from(!print_row(
+            Module::Wireframe,
+            "unguarded_process_wireframe",
+            counts,
+        ));
     }
     if failed == 0 {
         ExitCode::SUCCESS
