@@ -8,13 +8,14 @@
 //! `maxLod = VK_LOD_CLAMP_NONE` (anisotropic where the device allows), and two pipelines:
 //!
 //! - GLSL (`shaders/raygen.rgen`, `miss.rmiss`, `closest_hit.rchit`, compiled with glslang with the
-//!   library's GLSL directory on the include path): the closest-hit shader `#include`s
-//!   `ray_cone.glsl`, `ray_diff.glsl` and `wireframe.glsl`, carries the cone in an `RfHitPayload`
-//!   and an `RfRayDiff` beside it (the renderer's payload), reads `RfRayConePushConstants` inside
-//!   the renderer's push constants and the inverse camera matrices and `RfWireframePushConstants`
-//!   from a uniform buffer ([`RtUniforms`]), measures every
-//!   ray-cone value at the hit and, on primary hits, the ray differentials, the re-intersected
-//!   barycentric offsets and the wireframe coverage, and shades in the chosen [`Mode`];
+//!   library's GLSL directory on the include path): the shaders `#include` `ray_cone.glsl`,
+//!   `ray_diff.glsl` and `wireframe.glsl`, carry the cone in an `RfHitPayload` and an `RfRayDiff`
+//!   beside it (the renderer's payload), read `RfRayConePushConstants` inside the renderer's push
+//!   constants and the inverse camera matrices and `RfWireframePushConstants` from a uniform buffer
+//!   ([`RtUniforms`]); on a primary hit the closest-hit shader measures every ray-cone value, the
+//!   ray differentials, the re-intersected barycentric offsets and the wireframe coverage, and it
+//!   shades in the chosen [`Mode`] with the functions of `rt_common.glsl` that the colour-only
+//!   pipelines ([`ColourPipeline`]) share;
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
 //!   with a ray query over the same acceleration structures and measuring the same values with
 //!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.

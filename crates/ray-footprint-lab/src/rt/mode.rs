@@ -101,13 +101,15 @@ impl fmt::Display for Mode {
 
 impl Mode {
     /// What the payload of the mode's colour-only shaders carries beyond the colour and the bounce
-    /// depth: the ray cone (every mode but mip 0: the level of detail, or in the gradient modes
-    /// that of what the mirror reflects) and the eye ray's direction differentials (ray
-    /// differentials).
+    /// depth: the ray cone in the modes that read it (every mode but mip 0 and the ray-differential
+    /// modes: the level of detail, or in the gradient modes that of what the mirror reflects), and
+    /// the ray differential in the ray-differential modes, which carry it through the mirror and
+    /// never read the cone.
     pub fn payload(self) -> Payload {
+        let differential = matches!(self, Mode::RayDiff | Mode::RayDiffIsotropic);
         Payload {
-            cone: self != Mode::Mip0,
-            differentials: self == Mode::RayDiff,
+            cone: self != Mode::Mip0 && !differential,
+            differential,
         }
     }
 
@@ -118,18 +120,20 @@ impl Mode {
         if payload.cone {
             defines.push(("RT_PAYLOAD_CONE", String::new()));
         }
-        if payload.differentials {
+        if payload.differential {
             defines.push(("RT_PAYLOAD_DIFF", String::new()));
         }
         defines
     }
 }
 
-/// What a mode's colour-only payload carries beyond the colour and the bounce depth.
+/// What a mode's colour-only payload carries beyond the colour and the bounce depth (16 bytes):
+/// mip 0's payload is 16 bytes, a cone mode's 24, a ray-differential mode's 64.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Payload {
     /// The ray cone (8 bytes).
     pub cone: bool,
-    /// The eye ray's direction differentials (24 bytes).
-    pub differentials: bool,
+    /// The ray differential: origin and direction changes per pixel step, without the pads of
+    /// `RfRayDiff` (48 bytes).
+    pub differential: bool,
 }

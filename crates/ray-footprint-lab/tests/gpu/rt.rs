@@ -163,24 +163,28 @@ fn wgsl_ray_query_agrees_with_the_mirror() {
 
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
 /// nothing, renders exactly the pixels of the recording pipeline in that mode: the ground view,
-/// the mirror close-up and the torus close-up.
+/// through the pixel centres and through points off them ([`PIXEL_OFFSET`]), the mirror close-up
+/// and the torus close-up.
 #[test]
 fn colour_pipelines_render_the_recorded_colours() {
     let gpu = gpu();
     let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
     let views = [
-        ("ground", Camera::ground(), (WIDTH, HEIGHT)),
-        ("reflection", Camera::reflection(), (WIDTH, HEIGHT)),
-        ("torus", Camera::torus(), (WIDTH, HEIGHT)),
+        ("ground", Camera::ground(), Vec2::ZERO),
+        ("ground off centre", Camera::ground(), PIXEL_OFFSET),
+        ("reflection", Camera::reflection(), Vec2::ZERO),
+        ("torus", Camera::torus(), Vec2::ZERO),
     ];
+    let (width, height) = (WIDTH, HEIGHT);
     println!("device: {}", gpu.name());
     for mode in Mode::ALL {
         let colour = renderer
             .colour_pipeline(mode)
             .unwrap_or_else(|e| panic!("{mode}: {e}"));
-        for (view, camera, (width, height)) in &views {
-            let push = renderer.push_constants(camera, mode, TEX_GRAD_SCALE, *width, *height);
-            let uniforms = camera.uniforms((*width, *height), WireframeSettings::default());
+        for (view, camera, offset) in &views {
+            let mut push = renderer.push_constants(camera, mode, TEX_GRAD_SCALE, width, height);
+            push.pixel_offset = *offset;
+            let uniforms = camera.uniforms((width, height), WireframeSettings::default());
             let recorded = renderer
                 .render(&push, &uniforms)
                 .unwrap_or_else(|e| panic!("{e}"));
@@ -192,7 +196,7 @@ fn colour_pipelines_render_the_recorded_colours() {
                 .filter(|(a, b)| a != b)
                 .count();
             println!(
-                "{mode:<15} {view:<10} payload {:>2} bytes: {differing} of {} pixels differ",
+                "{mode:<18} {view:<17} payload {:>2} bytes: {differing} of {} pixels differ",
                 colour.payload_bytes(),
                 rendered.pixels.len()
             );

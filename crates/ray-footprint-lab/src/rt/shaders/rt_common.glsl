@@ -1,7 +1,11 @@
-// ray-footprint ray-tracing renderer: declarations shared by the ray-generation, miss and
-// closest-hit shaders (src/gpu/rt/). Not a library module: it includes the library modules
-// ray_cone.glsl, ray_diff.glsl and wireframe.glsl exactly as a user's renderer would. The WGSL
-// ray-query twin is ray_query.wgsl.
+// ray-footprint ray-tracing renderer: declarations and functions shared by the shaders of both
+// pipelines (src/rt/): the recording shaders (raygen.rgen, miss.rmiss, closest_hit.rchit), and the
+// colour-only shaders (colour_*.r*), compiled once per mode. The shading is written once, here
+// (rt_surface_colour, rt_bounce), for a mode passed in: the recording shaders pass the push
+// constants' mode, the colour-only shaders the mode they were compiled for, so both render the same
+// pixels. Not a library module: it includes the library modules ray_cone.glsl, ray_diff.glsl and
+// wireframe.glsl exactly as a user's renderer would. The WGSL ray-query twin of the measurements is
+// ray_query.wgsl.
 
 #ifndef RT_COMMON_GLSL
 #define RT_COMMON_GLSL
@@ -10,7 +14,7 @@
 #include "rt_abi.glsl"
 #include "ray_diff.glsl"
 
-// Render modes: the discriminants of Mode in src/gpu/rt/mode.rs.
+// Render modes: the discriminants of Mode in src/rt/mode.rs.
 const uint RT_MODE_MIP0 = 0u;
 const uint RT_MODE_CONE = 1u;
 const uint RT_MODE_CONE_CURVATURE = 2u;
@@ -21,7 +25,7 @@ const uint RT_MODE_BARY_GRADIENTS = 6u;
 const uint RT_MODE_WIREFRAME = 7u;
 const uint RT_MODE_RAY_DIFF_ISOTROPIC = 8u;
 
-// Materials: the discriminants of Material in src/gpu/rt/scene.rs.
+// Materials: the discriminants of Material in src/rt/scene.rs.
 const uint RT_MATERIAL_TEXTURED = 0u;
 const uint RT_MATERIAL_MIRROR = 1u;
 
@@ -47,9 +51,9 @@ layout(std430, set = 0, binding = 5) writeonly buffer RtColours { uint rt_colour
 layout(set = 0, binding = 6) uniform sampler2D rt_textures[2];
 layout(std140, set = 0, binding = 7) uniform RtFrame { RtUniforms rt_frame; };
 
-// The renderer's ray payload: the library's cone payload and the ray's differential (Igehy),
-// which the ray-differential modes carry through the mirror. A primary ray's differential is zero:
-// the closest-hit shader forms it at the hit from the inverse matrices.
+// The recording shaders' ray payload: the library's cone payload and the ray's differential
+// (Igehy), which the ray-differential modes carry through the mirror. A primary ray carries the
+// eye-ray differential (rt_eye_diff).
 struct RtPayload {
     RfHitPayload hit;
     RfRayDiff diff;
@@ -99,38 +103,104 @@ uint rt_display(vec3 colour) {
     return packUnorm4x8(vec4(pow(clamp(colour, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0));
 }
 
-// A record with only the closed-form cone deltas and the coverage they give: what a secondary hit
-// (seen in the mirror), which has no pixel neighbours to re-intersect, can measure.
-RtDiffRecord rt_diff_record(vec3 cone_deltas, float coverage) {
-    return RtDiffRecord(vec3(0.0), 0.0, vec3(0.0), 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0),
-        vec3(0.0), coverage, vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u, vec2(0.0), vec2(0.0), vec3(0.0),
-        0u, cone_deltas, 0u);
-}
+// The hit a closest-hit shader was called for, as the shared functions take it.
+struct RtHit {
+    // The hit mesh (instance custom index) and its material (RT_MATERIAL_*).
+    uint mesh;
+    uint material;
+    // The hit triangle: its index in the mesh and its vertices.
+    uint primitive;
+    RtTriangle tri;
+    // Hit barycentrics (u, v) of vertices 1 and 2, and the weights (1 - u - v, u, v).
+    vec2 barycentrics;
+    vec3 weights;
+    // Unit shading normal interpolated from the stored vertex normals (not turned to the ray).
+    vec3 normal;
+    // The ray: origin, unit direction, hit distance.
+    vec3 origin;
+    vec3 direction;
+    float t;
+    // The hit instance's world-to-object matrix.
+    mat4 world_to_object;
+    // The pixel the ray belongs to, and its bounce depth (0: the primary ray).
+    uvec2 pixel;
+    uint depth;
+};
 
-// The record of a ray that hit nothing.
-RtPixelRecord rt_miss_record(vec3 direction, RfRayCone cone) {
-    return RtPixelRecord(vec3(0.0), 0.0, direction, 0u, vec2(0.0), 0u, 0u, cone, 0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, 0.0, 0.0, RfRayCone(0.0, 0.0), rt_diff_record(vec3(0.0), 0.0));
-}
-
-// Every ray-cone value of a hit at distance t along the unit `direction` on `tri`, reached by
-// `cone`: footprint and texel density (uv footprint = their product), base LOD and LOD (RTG Eq. 34),
-// the textureGrad gradient, the triangle's curvature and the spread it gives a reflection (JCGT
-// 2021), and the reflected cone (RTG Eq. 35).
-RtPixelRecord rt_measure(RtTriangle tri, vec2 barycentrics, float t, vec3 direction, RfRayCone cone) {
+// The hit of the ray from `origin` along the unit `direction` at distance t on triangle `primitive`
+// of `mesh`, at `barycentrics`, for `pixel`'s ray at bounce `depth`.
+RtHit rt_hit(uint mesh, uint primitive, vec2 barycentrics, vec3 origin, vec3 direction, float t,
+        mat4 world_to_object, uvec2 pixel, uint depth) {
+    RtTriangle tri = rt_triangle(mesh, primitive);
     vec3 w = rt_weights(barycentrics);
     vec3 normal = normalize(w.x * tri.n[0] + w.y * tri.n[1] + w.z * tri.n[2]);
-    float width = rf_width_at(cone, t);
-    float footprint = rf_world_footprint(cone, t, normal, direction);
-    float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    return RtHit(mesh, rt_meshes[3u * mesh + 2u], primitive, tri, barycentrics, w, normal, origin, direction, t,
+        world_to_object, pixel, depth);
+}
+
+// The texture coordinates of the hit.
+vec2 rt_uv(RtHit hit) {
+    return hit.weights.x * hit.tri.uv[0] + hit.weights.y * hit.tri.uv[1] + hit.weights.z * hit.tri.uv[2];
+}
+
+// The primary ray's cone: the pixel spread angle (RTG Eq. 30) narrowed off axis by the ray's
+// cosine to the view axis.
+RfRayCone rt_primary_cone(vec3 direction) {
+    return rf_pinhole_ray_cone_for_ray(pc.cone.pixel_spread_angle, direction, pc.forward);
+}
+
+// The eye-ray differential of the primary ray through `pixel` (offset by pc.pixel_offset), from the
+// inverse matrices; its origin differentials are 0.
+RfRayDiff rt_eye_diff(uvec2 pixel) {
+    return rf_eye_ray_diff_from_matrices(vec2(pixel) + pc.pixel_offset, vec2(pc.width, pc.height),
+        rt_frame.view_inv, rt_frame.proj_inv);
+}
+
+// The directions of the rays through the right and the lower neighbours of `pixel` (offset alike).
+RfNeighbourDirections rt_neighbours(uvec2 pixel) {
+    return rf_pixel_directions(vec2(pixel) + pc.pixel_offset, vec2(pc.width, pc.height), rt_frame.view_inv,
+        rt_frame.proj_inv);
+}
+
+// The ray-cone texture LOD of the hit reached by `cone` (RTG Eq. 34).
+float rt_cone_lod(RtHit hit, RfRayCone cone) {
+    RtTriangle tri = hit.tri;
     float base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
-    float lod = rf_texture_lod(base_lod, width, vec2(pc.texture_size), normal, direction);
-    float gradient = rf_texture_gradient(footprint * density, pc.cone.tex_grad_scale);
-    float curvature = rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
-    float spread = rf_curvature_spread_angle(curvature, width, normal, direction);
-    return RtPixelRecord(normal, t, direction, 0u, barycentrics, 0u, 1u, cone, width, footprint,
-        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread),
-        rt_diff_record(vec3(0.0), 0.0));
+    return rf_texture_lod(base_lod, rf_width_at(cone, hit.t), vec2(pc.texture_size), hit.normal, hit.direction);
+}
+
+// The ray-cone footprint of the hit reached by `cone`, in world units.
+float rt_footprint(RtHit hit, RfRayCone cone) {
+    return rf_world_footprint(cone, hit.t, hit.normal, hit.direction);
+}
+
+// The isotropic textureGrad gradient of the hit reached by `cone`: its footprint in UV units times
+// tex_grad_scale.
+float rt_cone_gradient(RtHit hit, RfRayCone cone) {
+    RtTriangle tri = hit.tri;
+    float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    return rf_texture_gradient(rt_footprint(hit, cone) * density, pc.cone.tex_grad_scale);
+}
+
+// The hit triangle's curvature from its vertex normals (JCGT 2021).
+float rt_curvature(RtHit hit) {
+    RtTriangle tri = hit.tri;
+    return rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+}
+
+// The spread angle a reflection off the hit reached by `cone` gets from the curvature (JCGT 2021).
+float rt_curvature_spread(RtHit hit, RfRayCone cone) {
+    return rf_curvature_spread_angle(rt_curvature(hit), rf_width_at(cone, hit.t), hit.normal, hit.direction);
+}
+
+// The barycentric derivatives (RTG Eq. 12-19) of the hit reached by a ray carrying `diff`.
+RfDerivatives2 rt_barycentric_derivatives(RtHit hit, RfRayDiff diff) {
+    return rf_barycentric_derivatives(diff, hit.direction, hit.t, hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
+}
+
+// UV derivatives (RTG Eq. 21) from the hit's barycentric derivatives.
+RfDerivatives2 rt_uv_derivatives(RtHit hit, RfDerivatives2 barycentric) {
+    return rf_texture_derivatives(barycentric, hit.tri.uv[0], hit.tri.uv[1], hit.tri.uv[2]);
 }
 
 // The isotropic LOD (RTG Eq. 1-2) of UV gradients scaled to texels (the size is a power of two).
@@ -138,91 +208,173 @@ float rt_texel_lod(RfDerivatives2 uv) {
     return rf_lod_isotropic(RfDerivatives2(uv.dx * pc.texture_size, uv.dy * pc.texture_size));
 }
 
+// The neighbour pixels' rays (`next`) re-intersected with the hit triangle's plane: signed
+// barycentric offsets (w, u, v).
+RfDerivatives3 rt_offsets(RtHit hit, RfNeighbourDirections next) {
+    RtTriangle tri = hit.tri;
+    return rf_barycentric_offsets(hit.world_to_object, hit.origin, tri.p[0], tri.p[1], tri.p[2], next.right,
+        next.below, hit.weights);
+}
+
+// The UV gradients of the re-intersection offsets.
+RfDerivatives2 rt_offset_uv(RtHit hit, RfDerivatives3 offsets) {
+    return rf_uv_gradients_from_offsets(offsets, hit.tri.uv[0], hit.tri.uv[1], hit.tri.uv[2]);
+}
+
+// The per-pixel barycentric deltas of the neighbour pixels' rays (`next`) re-intersected.
+vec3 rt_deltas(RtHit hit, RfNeighbourDirections next) {
+    RtTriangle tri = hit.tri;
+    return rf_barycentric_deltas(hit.world_to_object, hit.origin, tri.p[0], tri.p[1], tri.p[2], next.right,
+        next.below, hit.weights);
+}
+
+// The closed-form barycentric deltas of the footprint of `cone` at the hit.
+vec3 rt_cone_deltas(RtHit hit, RfRayCone cone) {
+    return rf_cone_barycentric_deltas(rt_footprint(hit, cone), hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
+}
+
 // The wireframe coverage of the frame's settings at barycentrics (w, u, v) with these deltas.
 float rt_coverage(vec3 weights, vec3 deltas) {
     return rf_process_wireframe(rf_unpack_wireframe_settings(rt_frame.wireframe.settings), weights, deltas);
 }
 
-// The ray-differential and wireframe values of a primary hit of the ray through `pixel`, from
-// `origin` along the unit `direction` to distance t, on `tri` (object space, mapped from world
-// space by world_to_object), whose ray-cone footprint is `footprint`: the eye-ray differential from
-// the inverse matrices, transferred to the hit as barycentric and UV derivatives (RTG Eq. 12-21);
-// the neighbour pixels' rays re-intersected with the triangle's plane (signed barycentric offsets,
-// their UV gradients and deltas); the wireframe coverage from the re-intersection deltas; and the
-// closed-form cone deltas.
-RtDiffRecord rt_measure_diff(RtTriangle tri, vec2 barycentrics, float t, vec3 origin, vec3 direction,
-        mat4 world_to_object, uvec2 pixel, float footprint) {
-    vec2 xy = vec2(pixel) + pc.pixel_offset;
-    vec2 size = vec2(pc.width, pc.height);
-    RfRayDiff eye = rf_eye_ray_diff_from_matrices(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
-    RfDerivatives2 bary = rf_barycentric_derivatives(eye, direction, t, tri.p[0], tri.p[1], tri.p[2]);
-    RfDerivatives2 uv = rf_texture_derivatives(bary, tri.uv[0], tri.uv[1], tri.uv[2]);
-    RfNeighbourDirections next = rf_pixel_directions(xy, size, rt_frame.view_inv, rt_frame.proj_inv);
-    vec3 w = rt_weights(barycentrics);
-    RfDerivatives3 offsets = rf_barycentric_offsets(world_to_object, origin, tri.p[0], tri.p[1], tri.p[2],
-        next.right, next.below, w);
-    RfDerivatives2 offset_uv = rf_uv_gradients_from_offsets(offsets, tri.uv[0], tri.uv[1], tri.uv[2]);
-    vec3 deltas = rf_barycentric_deltas(world_to_object, origin, tri.p[0], tri.p[1], tri.p[2],
-        next.right, next.below, w);
-    return RtDiffRecord(eye.d_direction_dx, rt_texel_lod(uv), eye.d_direction_dy, rt_texel_lod(offset_uv),
-        bary.dx, bary.dy, uv.dx, uv.dy, next.right, rt_coverage(w, deltas), next.below, 0u, offsets.dx, 0u,
-        offsets.dy, 0u, offset_uv.dx, offset_uv.dy, deltas, 0u,
-        rf_cone_barycentric_deltas(footprint, tri.p[0], tri.p[1], tri.p[2]), 0u);
+// The wireframe coverage of the hit: by re-intersection on a primary hit, from the closed-form cone
+// deltas on a secondary hit (seen in the mirror), which has no pixel neighbours to re-intersect.
+float rt_wireframe_coverage(RtHit hit, RfRayCone cone) {
+    vec3 deltas = hit.depth == 0u ? rt_deltas(hit, rt_neighbours(hit.pixel)) : rt_cone_deltas(hit, cone);
+    return rt_coverage(hit.weights, deltas);
 }
 
 // Whether the render mode carries ray differentials through the mirror.
-bool rt_carries_diff() {
-    return pc.mode == RT_MODE_RAY_DIFF || pc.mode == RT_MODE_RAY_DIFF_ISOTROPIC;
+bool rt_carries_diff(uint mode) {
+    return mode == RT_MODE_RAY_DIFF || mode == RT_MODE_RAY_DIFF_ISOTROPIC;
 }
 
-// The differential of the ray the mirror reflects at a primary hit (Igehy): the eye-ray
-// differential carried to the hit (origin derivatives from the barycentric derivatives, RTG Eq. 22),
-// its direction derivatives reflected about the interpolated normal, whose own derivatives come from
-// the vertex normals.
-RfRayDiff rt_reflected_diff(RtTriangle tri, vec2 barycentrics, RtPixelRecord record) {
-    RfDerivatives2 bary = RfDerivatives2(record.diff.barycentric_dx, record.diff.barycentric_dy);
+// The differential of the ray the mirror reflects at the hit (Igehy): the incoming differential
+// `diff` carried to the hit (origin derivatives from the barycentric derivatives, RTG Eq. 22), its
+// direction derivatives reflected about the interpolated normal, whose own derivatives come from the
+// vertex normals.
+RfRayDiff rt_reflected_diff(RtHit hit, RfRayDiff diff) {
+    RtTriangle tri = hit.tri;
+    RfDerivatives2 bary = rt_barycentric_derivatives(hit, diff);
     RfDerivatives3 position = rf_secondary_origin_derivatives(bary, tri.p[0], tri.p[1], tri.p[2]);
-    RfDerivatives3 normal = rf_normal_derivatives(tri.n[0], tri.n[1], tri.n[2], barycentrics, bary);
-    RfRayDiff at_hit = RfRayDiff(position.dx, 0.0, position.dy, 0.0, record.diff.eye_d_direction_dx, 0.0,
-        record.diff.eye_d_direction_dy, 0.0);
-    return rf_reflect_ray_diff(at_hit, record.direction, record.normal, normal);
-}
-
-// The UV derivatives of a hit at distance t along the unit `direction` on `tri`, reached by a ray
-// carrying `diff`: its barycentric derivatives (RTG Eq. 12-19) through the UVs (Eq. 21).
-RfDerivatives2 rt_uv_derivatives(RtTriangle tri, RfRayDiff diff, vec3 direction, float t) {
-    RfDerivatives2 bary = rf_barycentric_derivatives(diff, direction, t, tri.p[0], tri.p[1], tri.p[2]);
-    return rf_texture_derivatives(bary, tri.uv[0], tri.uv[1], tri.uv[2]);
+    RfDerivatives3 normal = rf_normal_derivatives(tri.n[0], tri.n[1], tri.n[2], hit.barycentrics, bary);
+    RfRayDiff at_hit = RfRayDiff(position.dx, 0.0, position.dy, 0.0, diff.d_direction_dx, 0.0, diff.d_direction_dy,
+        0.0);
+    return rf_reflect_ray_diff(at_hit, hit.direction, hit.normal, normal);
 }
 
 // textureGrad with UV gradients scaled by tex_grad_scale.
-vec3 rt_sample_grad(vec2 uv, vec2 uv_dx, vec2 uv_dy) {
-    RfDerivatives2 grad = rf_sample_grad_gradients(RfDerivatives2(uv_dx, uv_dy), pc.cone.tex_grad_scale);
+vec3 rt_sample_grad(vec2 uv, RfDerivatives2 uv_gradients) {
+    RfDerivatives2 grad = rf_sample_grad_gradients(uv_gradients, pc.cone.tex_grad_scale);
     return textureGrad(rt_textures[0], uv, grad.dx, grad.dy).rgb;
 }
 
-// The texture colour at `uv` as the render mode samples it. The ray-differential modes read the
-// UV derivatives of the record, measured on primary and secondary hits alike; the re-intersection
-// needs a primary hit: on secondary hits it samples, like the cone modes and the wireframe's base,
-// at the ray-cone LOD.
-vec3 rt_texture_colour(RtPixelRecord record, vec2 uv, bool primary) {
-    bool reintersection = pc.mode == RT_MODE_BARY_GRADIENTS;
-    switch (reintersection && !primary ? RT_MODE_CONE : pc.mode) {
+// The texture colour of the hit as `mode` samples it, reached by a ray carrying `cone` and `diff`
+// (each read only by the modes that use it). The ray-differential modes sample with the UV
+// derivatives of the carried differential, on primary and secondary hits alike; the
+// re-intersection needs a primary hit: on secondary hits it samples, like the cone modes and the
+// wireframe's base, at the ray-cone LOD.
+vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    vec2 uv = rt_uv(hit);
+    bool reintersection = mode == RT_MODE_BARY_GRADIENTS;
+    switch (reintersection && hit.depth != 0u ? RT_MODE_CONE : mode) {
     case RT_MODE_MIP0:
         return textureLod(rt_textures[0], uv, 0.0).rgb;
-    case RT_MODE_TEX_GRAD_SCALE:
-        return textureGrad(rt_textures[0], uv, vec2(record.gradient, 0.0), vec2(0.0, record.gradient)).rgb;
-    case RT_MODE_MIP_LEVELS:
-        return textureLod(rt_textures[1], uv, record.lod).rgb;
-    case RT_MODE_RAY_DIFF:
-        return rt_sample_grad(uv, record.diff.uv_dx, record.diff.uv_dy);
-    case RT_MODE_RAY_DIFF_ISOTROPIC:
-        return textureLod(rt_textures[0], uv, record.diff.lod).rgb;
-    case RT_MODE_BARY_GRADIENTS:
-        return rt_sample_grad(uv, record.diff.offset_uv_dx, record.diff.offset_uv_dy);
-    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME
-        return textureLod(rt_textures[0], uv, record.lod).rgb;
+    case RT_MODE_TEX_GRAD_SCALE: {
+        float gradient = rt_cone_gradient(hit, cone);
+        return textureGrad(rt_textures[0], uv, vec2(gradient, 0.0), vec2(0.0, gradient)).rgb;
     }
+    case RT_MODE_MIP_LEVELS:
+        return textureLod(rt_textures[1], uv, rt_cone_lod(hit, cone)).rgb;
+    case RT_MODE_RAY_DIFF:
+        return rt_sample_grad(uv, rt_uv_derivatives(hit, rt_barycentric_derivatives(hit, diff)));
+    case RT_MODE_RAY_DIFF_ISOTROPIC:
+        return textureLod(rt_textures[0], uv, rt_texel_lod(rt_uv_derivatives(hit, rt_barycentric_derivatives(hit,
+            diff)))).rgb;
+    case RT_MODE_BARY_GRADIENTS:
+        return rt_sample_grad(uv, rt_offset_uv(hit, rt_offsets(hit, rt_neighbours(hit.pixel))));
+    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME
+        return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone)).rgb;
+    }
+}
+
+// The colour of a surface the ray ends on, lit, under the wireframe in RT_MODE_WIREFRAME.
+vec3 rt_surface_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    vec3 colour = rt_light(hit.normal) * rt_texture_colour(mode, hit, cone, diff);
+    if (mode == RT_MODE_WIREFRAME) {
+        colour = mix(colour, rt_frame.wireframe.colour.rgb, rt_wireframe_coverage(hit, cone));
+    }
+    return colour;
+}
+
+// Whether the ray goes on from the hit: a mirror reflects primary rays (what it reflects is shaded as
+// a textured surface).
+bool rt_passes_on(RtHit hit) {
+    return hit.material == RT_MATERIAL_MIRROR && hit.depth == 0u;
+}
+
+// The ray a hit passes on: where it starts and where it goes, the share of the light it brings
+// back, its cone and its differential.
+struct RtBounce {
+    vec3 origin;
+    vec3 direction;
+    float weight;
+    RfRayCone cone;
+    RfRayDiff diff;
+};
+
+// The mirror's reflection of the ray carrying `cone` and `diff` in `mode`: its cone leaves the hit
+// by RTG Eq. 35, widened by the curvature spread angle only in RT_MODE_CONE_CURVATURE (otherwise as
+// off a planar mirror); in the ray-differential modes it carries the reflected differential (Igehy).
+RtBounce rt_bounce(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    float spread = mode == RT_MODE_CONE_CURVATURE ? rt_curvature_spread(hit, cone) : 0.0;
+    vec3 origin = hit.origin + hit.t * hit.direction + RT_SURFACE_OFFSET * hit.normal;
+    return RtBounce(origin, reflect(hit.direction, hit.normal), RT_MIRROR_REFLECTANCE, rf_propagate(cone, hit.t,
+        spread), rt_carries_diff(mode) ? rt_reflected_diff(hit, diff) : diff);
+}
+
+// The ray-differential, re-intersection and wireframe values of a primary hit reached by the eye
+// ray carrying `eye` (rt_eye_diff), whose ray-cone footprint is `footprint`: the eye-ray differential
+// transferred to the hit as barycentric and UV derivatives (RTG Eq. 12-21) and their LOD; the
+// neighbour pixels' rays re-intersected with the triangle's plane (signed barycentric offsets, their
+// UV gradients and LOD, and deltas); the wireframe coverage from the re-intersection deltas; and the
+// closed-form cone deltas.
+RtDiffRecord rt_measure_diff(RtHit hit, RfRayDiff eye, float footprint) {
+    RfDerivatives2 bary = rt_barycentric_derivatives(hit, eye);
+    RfDerivatives2 uv = rt_uv_derivatives(hit, bary);
+    RfNeighbourDirections next = rt_neighbours(hit.pixel);
+    RfDerivatives3 offsets = rt_offsets(hit, next);
+    RfDerivatives2 offset_uv = rt_offset_uv(hit, offsets);
+    vec3 deltas = rt_deltas(hit, next);
+    vec3 cone_deltas = rf_cone_barycentric_deltas(footprint, hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
+    return RtDiffRecord(eye.d_direction_dx, rt_texel_lod(uv), eye.d_direction_dy, rt_texel_lod(offset_uv),
+        bary.dx, bary.dy, uv.dx, uv.dy, next.right, rt_coverage(hit.weights, deltas), next.below, 0u, offsets.dx, 0u,
+        offsets.dy, 0u, offset_uv.dx, offset_uv.dy, deltas, 0u, cone_deltas, 0u);
+}
+
+// What a primary hit reached by the eye ray carrying `cone` and `eye` measured: every ray-cone value
+// (footprint and texel density, base LOD and LOD, RTG Eq. 34; the textureGrad gradient; the
+// triangle's curvature and the spread it gives a reflection, JCGT 2021; the reflected cone, RTG
+// Eq. 35) and the ray-differential, re-intersection and wireframe values (rt_measure_diff).
+RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
+    RtTriangle tri = hit.tri;
+    float width = rf_width_at(cone, hit.t);
+    float footprint = rt_footprint(hit, cone);
+    float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    float base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    float spread = rt_curvature_spread(hit, cone);
+    return RtPixelRecord(hit.normal, hit.t, hit.direction, hit.mesh, hit.barycentrics, hit.primitive, 1u, cone,
+        width, footprint, density, base_lod, rt_cone_lod(hit, cone), rt_cone_gradient(hit, cone), rt_curvature(hit),
+        spread, rf_propagate(cone, hit.t, spread), rt_measure_diff(hit, eye, footprint));
+}
+
+// The record of a ray that hit nothing.
+RtPixelRecord rt_miss_record(vec3 direction, RfRayCone cone) {
+    RtDiffRecord none = RtDiffRecord(vec3(0.0), 0.0, vec3(0.0), 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0),
+        vec3(0.0), 0.0, vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u, vec2(0.0), vec2(0.0), vec3(0.0), 0u, vec3(0.0), 0u);
+    return RtPixelRecord(vec3(0.0), 0.0, direction, 0u, vec2(0.0), 0u, 0u, cone, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, RfRayCone(0.0, 0.0), none);
 }
 
 // Sky colour for a ray leaving the scene in `direction`.
