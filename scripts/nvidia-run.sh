@@ -7,9 +7,11 @@
 #        scripts/nvidia-run.sh pack
 #
 #    builds the release binaries and puts into .nvidia/ (ignored by git, about 30 MiB):
-#      bin/      verify, gallery, gpu-tests (tests/gpu), function_costs, mode_costs,
-#                verification_speed, stripped
-#      debs/     libvulkan1, vulkan-validationlayers, glslang-tools, spirv-tools (amd64)
+#      bin/      verify, gallery, quality, gpu-tests (tests/gpu), mode_costs, verification_speed,
+#                stripped
+#      debs/     the Vulkan loader and the GL/X libraries the NVIDIA driver's ICD loads
+#                (libvulkan1, libglvnd0, libegl1, libgl1, libglx0, libgles2, libx11-6 and what it
+#                needs), vulkan-validationlayers, glslang-tools, spirv-tools (amd64)
 #      build-root  the directory the binaries were built in (they read shaders from there)
 #
 # 2. There, from a copy of the repository at the same commit with .nvidia/ beside the sources
@@ -17,8 +19,8 @@
 #
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
 #
-#    unpacks the Vulkan loader into / where the system has none, and the validation layer,
-#    glslangValidator and spirv-opt under /opt/gl (nothing else under /); links the build
+#    unpacks the Vulkan loader and its GL/X libraries into / where the system has no loader, and
+#    the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under /); links the build
 #    directory to the repository copy if the paths differ; then runs, with the validation layer on
 #    (any message fails the run) on the device SHADER_PROPTEST_DEVICE names (lavapipe without it):
 #      verify (every check, 100,000 cases per function and language)   -> verify.log
@@ -26,14 +28,19 @@
 #        apart: "not run" with the reason where the device has no ray queries -> gpu-tests.log
 #      the gallery at its default size                                   -> gallery.log, ground_modes.png
 #      bench mode_costs (1920 x 1080 off lavapipe)                       -> mode_costs.log
-#      bench function_costs                                              -> function_costs.md
+#      the quality lab at its default settings                           -> quality.log
 #      bench verification_speed                                          -> verification_speed.log
 #    and writes summary.txt (also printed last): eight files in OUT_DIR.
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 PACK="$ROOT/.nvidia"
-DEBS=(libvulkan1 vulkan-validationlayers glslang-tools spirv-tools)
+# Installed into / where the system has no Vulkan loader (the driver's ICD loads them from there).
+LOADER_DEBS=(libvulkan1 libglvnd0 libegl1 libgl1 libglx0 libgles2 libx11-6 libxcb1 libxau6 libxdmcp6
+    libbsd0 libmd0 libffi8 libwayland-client0)
+# Installed under /opt/gl.
+TOOL_DEBS=(vulkan-validationlayers glslang-tools spirv-tools)
+DEBS=("${LOADER_DEBS[@]}" "${TOOL_DEBS[@]}")
 OPT=/opt/gl
 
 say() { printf 'nvidia-run: %s\n' "$*"; }
@@ -60,7 +67,7 @@ pack() {
     rm -rf "$PACK"
     mkdir -p "$PACK/bin" "$PACK/debs"
     local target name
-    for target in example:verify example:gallery test:gpu bench:function_costs bench:mode_costs \
+    for target in example:verify example:gallery example:quality test:gpu bench:mode_costs \
         bench:verification_speed; do
         name=${target#*:}
         [ "$name" = gpu ] && name=gpu-tests
@@ -84,14 +91,14 @@ pack() {
 # The Vulkan loader (into / where the system has none), the layer and the tools (under /opt/gl).
 install_packages() {
     [ -d "$PACK/debs" ] || return 0
-    local deb
-    for deb in "$PACK"/debs/*.deb; do
-        case "$(basename "$deb")" in
-            libvulkan1_*)
-                ldconfig -p | grep -q 'libvulkan.so.1 ' || dpkg -x "$deb" /
-                ;;
-            *) mkdir -p "$OPT" && dpkg -x "$deb" "$OPT" ;;
-        esac
+    local has_loader=false name
+    ldconfig -p | grep -q 'libvulkan.so.1 ' && has_loader=true
+    for name in "${LOADER_DEBS[@]}"; do
+        $has_loader || dpkg -x "$PACK"/debs/"${name}"_*.deb /
+    done
+    mkdir -p "$OPT"
+    for name in "${TOOL_DEBS[@]}"; do
+        dpkg -x "$PACK"/debs/"${name}"_*.deb "$OPT"
     done
     ldconfig
 }
@@ -145,10 +152,10 @@ run() {
     step "wgsl ray-query test" "$out/wgsl.tmp" "$bin/gpu-tests" "$wgsl_test" --exact --nocapture
     step gallery "$out/gallery.log" "$bin/gallery" --out "$gallery_dir"
     cp "$gallery_dir/ground_modes.png" "$out/" 2>/dev/null
-    rm -rf "$gallery_dir"
     step "mode costs" "$out/mode_costs.log" "$bin/mode_costs"
-    step "function costs" "$out/function_costs.md" "$bin/function_costs"
+    step quality "$out/quality.log" "$bin/quality" --out "$gallery_dir/quality"
     step "verification speed" "$out/verification_speed.log" "$bin/verification_speed"
+    rm -rf "$gallery_dir"
     { printf '\n--- %s ---\n' "$wgsl_test"; cat "$out/wgsl.tmp"; } >>"$out/gpu-tests.log"
     rm -f "$out/wgsl.tmp"
     summary "$out" | tee "$out/summary.txt"
@@ -174,7 +181,7 @@ summary() {
     echo "mode costs:"
     sed -n '/^| mode/,$p' "$out/mode_costs.log"
     grep -m1 '^not run' "$out/mode_costs.log"
-    echo "function costs: $(grep -c '| `rf_' "$out/function_costs.md") functions (function_costs.md)"
+    echo "quality lab: $(grep -c '' "$out/quality.log") lines (quality.log)"
     echo "verification speed:"
     sed -n '/^| threads/,$p' "$out/verification_speed.log"
     grep -h 'VUID\|Validation\|validation layer' "$out"/*.log | head -n 5
