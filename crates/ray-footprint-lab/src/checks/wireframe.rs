@@ -363,7 +363,10 @@ pub fn stipple() -> FunctionCheck<impl Args + Edge, impl Value> {
 }
 
 /// One component of `rf_edge_ramp`'s arguments `(x, start, width)`: widths down to zero and
-/// beyond `MIN_LINE_RAMP`, `x` on the ramp, at its start, or anywhere around it.
+/// beyond `MIN_LINE_RAMP`, `x` on the ramp, at its start, or anywhere around it. Components on a
+/// ramp steeper than the precision of `x - start` (either coverage is right) are left to the
+/// edge-case suite, as in the line checks: three independent components would otherwise triple the
+/// share of cases whose tolerance says nothing.
 fn edge_ramp_component() -> impl Strategy<Value = (f32, f32, f32)> {
     let width = prop_oneof![
         4 => log_uniform(-6.0..0.0),
@@ -371,13 +374,17 @@ fn edge_ramp_component() -> impl Strategy<Value = (f32, f32, f32)> {
         1 => prop::sample::select(vec![1.0e-31f32, MIN_LINE_RAMP, 2.0e-30, TINY, HUGE]),
         1 => magnitude(),
     ];
-    (-0.5f32..1.5, magnitude(), width, 0.0f32..1.0).prop_flat_map(|(x, start, width, k)| {
-        prop_oneof![
-            Just((x, start, width)),
-            Just((start + (2.0 * k - 0.5) * width, start, width)),
-            Just((start, start, width)),
-        ]
-    })
+    (-0.5f32..1.5, magnitude(), width, 0.0f32..1.0)
+        .prop_flat_map(|(x, start, width, k)| {
+            prop_oneof![
+                Just((x, start, width)),
+                Just((start + (2.0 * k - 0.5) * width, start, width)),
+                Just((start, start, width)),
+            ]
+        })
+        .prop_filter(AT_AN_EDGE, |&(x, start, width)| {
+            edge_ramp_error(x, start, width, 0.0) < AMBIGUOUS_COVERAGE
+        })
 }
 
 /// `rf_edge_ramp`: three independent components.
