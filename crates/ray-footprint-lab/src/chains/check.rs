@@ -54,8 +54,8 @@ pub fn check_on_the_cpu(
     Ok(stats.into_inner())
 }
 
-/// Runs `cases` chains from `chains` (the same ones as [`check_on_the_cpu`]) through the chain
-/// shader in `language` on `gpu`, in batches of 8192, and checks every sample the device returns
+/// Runs `cases` chains from `chains` (a fixed seed, as [`check_on_the_cpu`]) through the chain
+/// shader in `language` on `gpu`, one dispatch per batch, and checks every sample the device returns
 /// against its rounding bound. `Err`: the harness could not run, or the first chain with a sample
 /// beyond its bound, with its samples.
 pub fn check_on_the_device(

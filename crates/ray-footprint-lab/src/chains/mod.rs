@@ -268,6 +268,12 @@ impl Chain {
     }
 }
 
+/// In-plane chains a test follows, on the CPU and in each shader language.
+pub const IN_PLANE_CHAINS: u32 = 80_000;
+
+/// Head-on chains with a saddle a test follows, on the CPU and in each shader language.
+pub const HEAD_ON_CHAINS: u32 = 20_000;
+
 /// Largest angle of incidence in the in-plane chains (`cos >= 0.5`).
 const MAX_INCIDENCE: f64 = std::f64::consts::FRAC_PI_3;
 
