@@ -203,7 +203,8 @@ fn b_pixel_ndc(pixel: Vec2, image_size: Vec2) -> V2 {
     }))
 }
 
-type Camera = (Vec2, Vec2, f32, Vec3, Vec3, Vec3);
+/// The arguments of the pinhole camera functions: pixel, image size, fov_y, right, up, view.
+pub(crate) type Camera = (Vec2, Vec2, f32, Vec3, Vec3, Vec3);
 
 fn b_eye_ray_direction(&(pixel, size, fov, right, up, view): &Camera) -> V3 {
     let c = b_pixel_ndc(pixel, size);
@@ -216,19 +217,23 @@ fn b_normalized_derivative(v: V3, dv: V3) -> V3 {
     (dv - v * (v.dot(dv) / length2)) / length2.sqrt()
 }
 
-fn b_eye_ray_diff(camera: &Camera) -> Vec<I> {
+/// The direction differentials of `eye_ray_diff` (its origin differentials are exactly 0).
+pub(crate) fn b_eye_ray_direction_derivatives(camera: &Camera) -> (V3, V3) {
     let &(_, image_size, fov, right, up, _) = camera;
     let d = b_eye_ray_direction(camera);
     let size = image_size.max(Vec2::ONE);
     let extent = b_eye_ray_extent(image_size, fov);
     let dd_dx = v3(right) * (I::c(2.0) * extent.0[0] / s(size.x));
     let dd_dy = v3(up) * -(I::c(2.0) * extent.0[1] / s(size.y));
-    b_ray_diff(
-        zero3(),
-        zero3(),
+    (
         b_normalized_derivative(d, dd_dx),
         b_normalized_derivative(d, dd_dy),
     )
+}
+
+fn b_eye_ray_diff(camera: &Camera) -> Vec<I> {
+    let (dd_dx, dd_dy) = b_eye_ray_direction_derivatives(camera);
+    b_ray_diff(zero3(), zero3(), dd_dx, dd_dy)
 }
 
 fn b_safe_normalize(v: V3) -> V3 {
@@ -276,17 +281,37 @@ fn b_pixel_directions(&(pixel, size, view_inv, proj_inv): &Matrices) -> Vec<I> {
     b_derivatives3(right, below)
 }
 
-fn b_transferred_origin(d_origin: Vec3, d_direction: Vec3, direction: Vec3, t: f32, normal: Vec3) -> V3 {
+/// One origin differential transferred to the plane at `t` with normal `normal`; the differential
+/// comes as intervals (from earlier operations), the ray and the plane are exact.
+pub(crate) fn b_transferred_origin(
+    d_origin: V3,
+    d_direction: V3,
+    direction: Vec3,
+    t: f32,
+    normal: Vec3,
+) -> V3 {
     let cosine = v3(direction).dot(v3(normal));
-    let q = v3(d_origin) + v3(d_direction) * s(t);
+    let q = d_origin + d_direction * s(t);
     let dt = (-q.dot(v3(normal))).div_away(cosine, f64::from(DIFF_MIN_COS));
     q + v3(direction) * dt
 }
 
 fn b_transfer(&(diff, direction, t, normal): &(RayDiff, Vec3, f32, Vec3)) -> Vec<I> {
     b_ray_diff(
-        b_transferred_origin(diff.d_origin_dx, diff.d_direction_dx, direction, t, normal),
-        b_transferred_origin(diff.d_origin_dy, diff.d_direction_dy, direction, t, normal),
+        b_transferred_origin(
+            v3(diff.d_origin_dx),
+            v3(diff.d_direction_dx),
+            direction,
+            t,
+            normal,
+        ),
+        b_transferred_origin(
+            v3(diff.d_origin_dy),
+            v3(diff.d_direction_dy),
+            direction,
+            t,
+            normal,
+        ),
         v3(diff.d_direction_dx),
         v3(diff.d_direction_dy),
     )
@@ -357,8 +382,10 @@ fn b_normal_derivatives(&(n0, n1, n2, uv, b): &NormalArgs) -> Vec<I> {
     )
 }
 
-fn b_reflected_direction(d_direction: Vec3, direction: Vec3, normal: Vec3, d_normal: Vec3) -> V3 {
-    let (dd, d, n, dn) = (v3(d_direction), v3(direction), v3(normal), v3(d_normal));
+/// One direction differential reflected at a hit; the differentials come as intervals, the ray
+/// and the normal are exact.
+pub(crate) fn b_reflected_direction(dd: V3, direction: Vec3, normal: Vec3, dn: V3) -> V3 {
+    let (d, n) = (v3(direction), v3(normal));
     let cosine = d.dot(n);
     dd - (dn * cosine + n * (dd.dot(n) + d.dot(dn))) * I::c(2.0)
 }
@@ -369,8 +396,8 @@ fn b_reflect_ray_diff(&(diff, direction, normal, dn): &ReflectArgs) -> Vec<I> {
     b_ray_diff(
         v3(diff.d_origin_dx),
         v3(diff.d_origin_dy),
-        b_reflected_direction(diff.d_direction_dx, direction, normal, dn.dx),
-        b_reflected_direction(diff.d_direction_dy, direction, normal, dn.dy),
+        b_reflected_direction(v3(diff.d_direction_dx), direction, normal, v3(dn.dx)),
+        b_reflected_direction(v3(diff.d_direction_dy), direction, normal, v3(dn.dy)),
     )
 }
 

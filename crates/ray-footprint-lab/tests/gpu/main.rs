@@ -3,6 +3,8 @@
 //! fails a test.
 //!
 //! - [`agreement`]: every shader function against its Rust mirror, in WGSL and GLSL;
+//! - [`chains`]: reflection chains followed by a ray cone and a ray differential in a shader of
+//!   the lab's own, against its Rust mirror and against each other, in WGSL and GLSL;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
 //! - [`degenerate`]: the degenerate-input table on the CPU and the GPU;
 //! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror;
@@ -11,6 +13,7 @@
 
 mod abi;
 mod agreement;
+mod chains;
 mod degenerate;
 mod edges;
 mod quality;
