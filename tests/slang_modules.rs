@@ -1,6 +1,7 @@
 //! Every Slang module compiles with the Slang compiler (`slangc`, installed by `scripts/setup.sh`):
 //! as a whole module, and every function in SPIR-V that `spirv-val` accepts, reached both through
-//! `import` and through `#include`. A missing compiler fails these tests; they never skip.
+//! `import` and through `#include`; and the Slang closest-hit shader of the ray-tracing renderer. A
+//! missing compiler fails these tests; they never skip.
 
 #[path = "common/slangc.rs"]
 mod slangc;
@@ -138,4 +139,21 @@ fn every_function_compiles_to_valid_spirv_through_import_and_include() {
 fn a_missing_compiler_names_the_setup_script() {
     let error = slangc::run("ray-footprint-no-such-slangc", &["-v"]).expect_err("no such program");
     assert!(error.contains("scripts/setup.sh"), "{error}");
+}
+
+/// The Slang closest-hit shader of the ray-tracing renderer, which imports the modules, compiles to
+/// SPIR-V 1.5 that spirv-val accepts for Vulkan 1.2.
+#[test]
+fn the_slang_closest_hit_shader_compiles_for_vulkan_1_2() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/src/gpu/rt/shaders/closest_hit.slang"
+    );
+    let source = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let spirv = slangc::compile(&source, "closesthit", "spirv_1_5").unwrap_or_else(|log| panic!("{log}"));
+    slangc::validate(&spirv, "vulkan1.2").unwrap_or_else(|log| panic!("{log}"));
+    println!(
+        "closest_hit.slang: {} SPIR-V words, spirv-val accepts them",
+        spirv.len()
+    );
 }
