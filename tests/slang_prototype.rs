@@ -175,7 +175,7 @@ fn texture_lod_in_slang_agrees_with_the_mirror_on_the_device() {
     let (mut max_error, mut max_ratio) = (0.0f32, 0.0f32);
     for (args, &word) in cases.iter().zip(&output) {
         let shader = f32::from_bits(word);
-        let mirror = (check.mirror)(args.clone());
+        let mirror = (check.mirror)(*args);
         let error = if shader == mirror {
             0.0
         } else {
