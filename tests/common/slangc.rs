@@ -116,7 +116,7 @@ pub fn validate(words: &[u32], target_env: &str) -> Result<(), String> {
     result.map(|_| ())
 }
 
-/// A temporary path as `&str` (the temporary directory's name is valid UTF-8 on the CI machines).
+/// A path as the `&str` slangc and spirv-val take on their command line.
 pub fn path_str(path: &Path) -> &str {
-    path.to_str().expect("temporary paths are UTF-8")
+    path.to_str().expect("the temporary directory and the crate's paths are UTF-8")
 }
