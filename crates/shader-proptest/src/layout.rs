@@ -2,9 +2,10 @@
 //!
 //! The Rust side is described by [`rust_layout!`](crate::rust_layout) (offsets and sizes from
 //! `offset_of!` and `size_of`). The shader side comes from naga's layout of a WGSL source
-//! ([`wgsl_layout`]) or from the `Offset` and `ArrayStride` decorations glslang emits for a GLSL
-//! struct in a std430 or scalar block ([`glsl_layout`]). [`compare`] returns a field-by-field
-//! [`LayoutTable`], or an error that names the struct and the field.
+//! ([`wgsl_layout`]) or from the `Offset` and `ArrayStride` decorations in SPIR-V: glslang's for a
+//! GLSL struct in a std430 or scalar block ([`glsl_layout`]), or any compiler's ([`spirv_layout`]).
+//! [`compare`] returns a field-by-field [`LayoutTable`], or an error that names the struct and the
+//! field.
 //!
 //! ```no_run
 //! use shader_proptest::{layout, rust_layout};
@@ -334,6 +335,14 @@ pub fn glsl_layout(
             },
         )?;
     spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
+}
+
+/// The layout of the struct named `name` in SPIR-V `words` from any compiler, where the struct is the
+/// element of a runtime array (a storage buffer): field offsets from the `Offset` decorations, the
+/// size from the array's `ArrayStride`. Slang names a struct in SPIR-V after the layout it has there
+/// (`RfRayCone_natural` under scalar layout, `RfRayCone_std430` under its default buffer rules).
+pub fn spirv_layout(words: &[u32], name: &str) -> Result<StructLayout, LayoutError> {
+    spirv::struct_layout(words, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
 }
 
 /// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.
