@@ -1,7 +1,10 @@
 //! Where the functions under test come from: a language, the source text in front of the generated
 //! kernel, and what compiling and running it needs.
 
-use crate::compile::{base_capabilities, compile_glsl, compile_wgsl, CompileError, Language, Stage, Target};
+use crate::compile::{
+    base_capabilities, compile_glsl, compile_slang, compile_wgsl, CompileError, Language, Stage, Target,
+};
+use crate::layout::{glsl_layout, slang_layout, wgsl_layout, GlslPacking, LayoutError, StructLayout};
 use std::path::{Path, PathBuf};
 
 /// An optional device feature a shader or a program may need.
@@ -34,15 +37,17 @@ impl Feature {
 }
 
 /// The functions under test: a language and the source text placed in front of each generated
-/// kernel (a WGSL module, or GLSL such as `#include "colour.glsl"`), with the GLSL include
-/// directories, the naga capabilities WGSL may use, and the device features the code needs.
+/// kernel (a WGSL module, GLSL such as `#include "colour.glsl"`, or Slang such as `import colour;`),
+/// with the GLSL include directories or Slang search paths, the naga capabilities WGSL may use, and
+/// the device features the code needs.
 ///
 /// ```
 /// use shader_proptest::Shader;
 ///
 /// let wgsl = Shader::wgsl("fn luminance(c: vec3<f32>) -> f32 { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }");
 /// let glsl = Shader::glsl("#include \"colour.glsl\"").include_dir("shaders/glsl");
-/// # let _ = (wgsl, glsl);
+/// let slang = Shader::slang("import colour;").include_dir("shaders/slang");
+/// # let _ = (wgsl, glsl, slang);
 /// ```
 #[derive(Clone, Debug)]
 pub struct Shader {
@@ -64,6 +69,12 @@ impl Shader {
         Shader::new(Language::Glsl, source.into())
     }
 
+    /// Slang source declaring the functions, or bringing them in (`import colour;`,
+    /// `#include "colour.slang"`); no entry point. Functions of an imported module must be `public`.
+    pub fn slang(source: impl Into<String>) -> Shader {
+        Shader::new(Language::Slang, source.into())
+    }
+
     fn new(language: Language, source: String) -> Shader {
         Shader {
             language,
@@ -74,7 +85,8 @@ impl Shader {
         }
     }
 
-    /// Adds a directory to the GLSL include path.
+    /// Adds a directory to the GLSL include path, or to the Slang search path (`import` and
+    /// `#include`).
     pub fn include_dir(mut self, dir: impl AsRef<Path>) -> Shader {
         self.include_dirs.push(dir.as_ref().to_path_buf());
         self
@@ -105,7 +117,7 @@ impl Shader {
         &self.source
     }
 
-    /// The GLSL include directories.
+    /// The GLSL include directories or Slang search paths.
     pub fn include_dirs(&self) -> Vec<&Path> {
         self.include_dirs.iter().map(PathBuf::as_path).collect()
     }
@@ -126,6 +138,18 @@ impl Shader {
                 Target::Vulkan1_1,
             ),
             Language::Glsl => compile_glsl(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
+            Language::Slang => compile_slang(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
+        }
+    }
+
+    /// The layout of the struct `name` this source declares, as a storage buffer holds it: naga's
+    /// WGSL layout, or the element of a `std430` buffer compiled by glslang or slangc.
+    pub fn struct_layout(&self, name: &str) -> Result<StructLayout, LayoutError> {
+        let dirs = self.include_dirs();
+        match self.language {
+            Language::Wgsl => wgsl_layout(&self.source, name),
+            Language::Glsl => glsl_layout(&self.source, name, GlslPacking::Std430, &dirs),
+            Language::Slang => slang_layout(&self.source, name, GlslPacking::Std430, &dirs),
         }
     }
 }
