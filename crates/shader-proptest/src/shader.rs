@@ -5,7 +5,9 @@ use crate::compile::{
     base_capabilities, compile_glsl, compile_slang, compile_wgsl, CompileError, Language, Stage, Target,
 };
 use crate::layout::{glsl_layout, slang_layout, wgsl_layout, GlslPacking, LayoutError, StructLayout};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// An optional device feature a shader or a program may need.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -128,8 +130,29 @@ impl Shader {
     }
 
     /// Compiles a whole compute shader written against this one (its source in front, as
-    /// [`crate::kernel_source`] writes) to SPIR-V for Vulkan 1.1.
+    /// [`crate::kernel_source`] writes) to SPIR-V for Vulkan 1.1. A kernel this process compiled
+    /// before, with the same language, capabilities and include directories, is not compiled again:
+    /// running slangc costs about a second, and an echo or a shrinking run compiles the same
+    /// kernel many times.
     pub fn compile_kernel(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
+        static COMPILED: OnceLock<Mutex<HashMap<String, Vec<u32>>>> = OnceLock::new();
+        let key = format!(
+            "{:?} {:?} {:?}\n{kernel}",
+            self.language, self.capabilities, self.include_dirs
+        );
+        let compiled = COMPILED.get_or_init(Mutex::default);
+        if let Some(spirv) = compiled.lock().unwrap_or_else(PoisonError::into_inner).get(&key) {
+            return Ok(spirv.clone());
+        }
+        let spirv = self.compile_uncached(kernel)?;
+        compiled
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .insert(key, spirv.clone());
+        Ok(spirv)
+    }
+
+    fn compile_uncached(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
         match self.language {
             Language::Wgsl => compile_wgsl(
                 kernel,
