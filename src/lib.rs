@@ -25,8 +25,8 @@ mod values;
 pub mod wireframe;
 
 /// Struct layout verification (feature `validate`), from the `shader-proptest` crate: compare a
-/// Rust struct's layout with a shader struct's (naga's WGSL layout, glslang's std140, std430 and
-/// scalar). [`abi::verify_shared_layouts`] uses it for every shared struct of this crate.
+/// Rust struct's layout with a shader struct's (naga's WGSL layout, glslang's and slangc's std140,
+/// std430 and scalar). [`abi::verify_shared_layouts`] uses it for every shared struct of this crate.
 #[cfg(feature = "validate")]
 pub mod layout {
     pub use shader_proptest::layout::*;

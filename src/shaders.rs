@@ -113,9 +113,10 @@ impl Module {
     }
 
     /// The module as a `shader_proptest::Shader` in `language` (feature `shader-proptest`): the
-    /// WGSL module text with its naga capabilities, or `#include "<stem>.glsl"` with
-    /// [`GLSL_INCLUDE_DIR`] on the include path; the `_f64` modules require `shaderFloat64`.
-    /// Check your own functions that use the module by appending them to its source.
+    /// WGSL module text with its naga capabilities, `#include "<stem>.glsl"` with
+    /// [`GLSL_INCLUDE_DIR`] on the include path, or `import <stem>;` with [`SLANG_INCLUDE_DIR`] on
+    /// the search path; the `_f64` modules require `shaderFloat64`. Check your own functions that
+    /// use the module by appending them to its source.
     #[cfg(feature = "shader-proptest")]
     pub fn shader(self, language: shader_proptest::Language) -> shader_proptest::Shader {
         use shader_proptest::{Feature, Language, Shader};
@@ -123,6 +124,9 @@ impl Module {
             Language::Wgsl => Shader::wgsl(self.wgsl()).capabilities(self.naga_capabilities()),
             Language::Glsl => {
                 Shader::glsl(format!("#include \"{}.glsl\"", self.stem())).include_dir(GLSL_INCLUDE_DIR)
+            }
+            Language::Slang => {
+                Shader::slang(format!("import {};", self.stem())).include_dir(SLANG_INCLUDE_DIR)
             }
         };
         if self.needs_f64() {
