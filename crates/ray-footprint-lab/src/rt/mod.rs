@@ -1,6 +1,6 @@
-//! Ray tracing with the modules: acceleration structures, a GLSL ray-tracing pipeline and, where
-//! the device has ray queries, a WGSL ray-query compute shader, on a shader-proptest device with
-//! the validation layer on.
+//! Ray tracing with the modules: acceleration structures, a ray-tracing pipeline (GLSL, with a GLSL
+//! or a Slang closest-hit shader) and, where the device has ray queries, a WGSL ray-query compute
+//! shader, on a shader-proptest device with the validation layer on.
 //!
 //! A [`Renderer`] uploads a [`Scene`] built in code (a large textured ground plane, a mirror sphere,
 //! a dense torus), builds one bottom-level acceleration structure per mesh and a top-level one,
@@ -14,12 +14,17 @@
 //!   matrices and `RfWireframePushConstants` from a uniform buffer ([`RtUniforms`]), measures every
 //!   ray-cone value at the hit and, on primary hits, the ray differentials, the re-intersected
 //!   barycentric offsets and the wireframe coverage, and shades in the chosen [`Mode`];
+//! - Slang (`shaders/closest_hit.slang`, compiled with slangc with the library's Slang directory
+//!   on the search path): the same closest-hit stage, `import`-ing `ray_cone`, `ray_diff` and
+//!   `wireframe`, with the same bindings, push constants and payload, in a second ray-tracing
+//!   pipeline with the GLSL ray generation and miss ([`Renderer::render_with`] and
+//!   [`ClosestHit::Slang`]);
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
 //!   with a ray query over the same acceleration structures and measuring the same values with
 //!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.
 //!
-//! Both record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so the
-//! Rust mirror can recompute every value from the same hit data.
+//! All three record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so
+//! the Rust mirror can recompute every value from the same hit data.
 //!
 //! ```no_run
 //! use ray_footprint::wireframe::WireframeSettings;
@@ -47,7 +52,7 @@ mod scene;
 mod texture;
 
 pub use mode::Mode;
-pub use pipeline::{ray_query_source, SHADER_DIR};
+pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
 pub use renderer::{open_device, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex, VERTEX_FLOATS, WIRE_COLOUR,

@@ -1,11 +1,12 @@
-//! Shaders and pipelines: the GLSL ray-tracing pipeline with its shader binding table, and the
-//! WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
+//! Shaders and pipelines: the ray-tracing pipelines with their shader binding tables (GLSL ray
+//! generation and miss, a GLSL or a Slang closest hit), and the WGSL ray-query compute pipeline,
+//! over one descriptor-set and pipeline layout.
 
 use super::abi::RtPushConstants;
 use ash::vk;
-use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR};
+use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use shader_proptest::compile::{
-    base_capabilities, compile_glsl as glslang, compile_wgsl as naga, Stage, Target,
+    base_capabilities, compile_glsl as glslang, compile_slang as slangc, compile_wgsl as naga, Stage, Target,
 };
 use shader_proptest::{vulkan, Buffer, Error, Feature, Object, Owner};
 use std::path::Path;
@@ -104,6 +105,37 @@ pub(super) fn push(
     }
 }
 
+/// The closest-hit shader of a ray-tracing pipeline; ray generation and miss are GLSL in both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ClosestHit {
+    /// `closest_hit.rchit`, compiled by glslang, `#include`-ing the GLSL modules.
+    Glsl,
+    /// `closest_hit.slang`, compiled by slangc, `import`-ing the Slang modules.
+    Slang,
+}
+
+impl ClosestHit {
+    /// Both closest-hit shaders.
+    pub const ALL: [ClosestHit; 2] = [ClosestHit::Glsl, ClosestHit::Slang];
+
+    /// `"GLSL"` or `"Slang"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ClosestHit::Glsl => "GLSL",
+            ClosestHit::Slang => "Slang",
+        }
+    }
+
+    /// The closest-hit stage's SPIR-V for Vulkan 1.2.
+    fn compile(self) -> Result<Vec<u32>, Error> {
+        let path = Path::new(SHADER_DIR);
+        match self {
+            ClosestHit::Glsl => compile_glsl(&path.join("closest_hit.rchit"), Stage::ClosestHit),
+            ClosestHit::Slang => compile_slang(&path.join("closest_hit.slang"), Stage::ClosestHit),
+        }
+    }
+}
+
 /// A ray-tracing pipeline and its shader binding table regions (ray generation, miss, hit,
 /// callable).
 pub(super) struct RayTracing {
@@ -112,40 +144,39 @@ pub(super) struct RayTracing {
     pub loader: ash::khr::ray_tracing_pipeline::Device,
 }
 
-/// The ray-generation, miss and closest-hit shaders of [`SHADER_DIR`] in one pipeline (groups:
-/// 0 ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the mirror's reflection).
-pub(super) fn ray_tracing(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<RayTracing, Error> {
+/// The ray-generation and miss shaders of [`SHADER_DIR`] and the `closest_hit` shader in one
+/// pipeline (groups: 0 ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the
+/// mirror's reflection).
+pub(super) fn ray_tracing(
+    owner: &mut Owner<'_>,
+    layout: vk::PipelineLayout,
+    closest_hit: ClosestHit,
+) -> Result<RayTracing, Error> {
     let properties = ray_tracing_properties(owner);
     if properties.max_ray_recursion_depth < 2 {
         return Err(Error::Setup(String::from(
             "the device's maxRayRecursionDepth is below 2 (the renderer traces reflections)",
         )));
     }
-    let files = [
-        (
-            "raygen.rgen",
-            Stage::RayGeneration,
-            vk::ShaderStageFlags::RAYGEN_KHR,
-        ),
-        ("miss.rmiss", Stage::Miss, vk::ShaderStageFlags::MISS_KHR),
-        (
-            "closest_hit.rchit",
-            Stage::ClosestHit,
-            vk::ShaderStageFlags::CLOSEST_HIT_KHR,
-        ),
+    let dir = Path::new(SHADER_DIR);
+    let spirv = [
+        compile_glsl(&dir.join("raygen.rgen"), Stage::RayGeneration)?,
+        compile_glsl(&dir.join("miss.rmiss"), Stage::Miss)?,
+        closest_hit.compile()?,
     ];
-    let spirv = files
-        .iter()
-        .map(|&(file, stage, _)| compile_glsl(&Path::new(SHADER_DIR).join(file), stage))
-        .collect::<Result<Vec<_>, _>>()?;
+    let stages = [
+        vk::ShaderStageFlags::RAYGEN_KHR,
+        vk::ShaderStageFlags::MISS_KHR,
+        vk::ShaderStageFlags::CLOSEST_HIT_KHR,
+    ];
     let modules = spirv
         .iter()
         .map(|words| shader_module(owner, words))
         .collect::<Result<Vec<_>, _>>()?;
-    let stage_infos: Vec<_> = files
+    let stage_infos: Vec<_> = stages
         .iter()
         .zip(&modules)
-        .map(|(&(_, _, stage), &module)| {
+        .map(|(&stage, &module)| {
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(stage)
                 .module(module)
@@ -278,7 +309,7 @@ pub(super) fn ray_query(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Re
 }
 
 fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, Error> {
-    // SAFETY: valid SPIR-V words from glslang or naga.
+    // SAFETY: valid SPIR-V words from glslang, slangc or naga.
     unsafe {
         owner
             .device()
@@ -294,6 +325,16 @@ fn compile_glsl(path: &Path, stage: Stage) -> Result<Vec<u32>, Error> {
         std::fs::read_to_string(path).map_err(|e| Error::Compile(format!("{}: {e}", path.display())))?;
     let includes = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
     glslang(&source, stage, Target::Vulkan1_2, &includes)
+        .map_err(|error| Error::Compile(format!("{}:\n{error}", path.display())))
+}
+
+/// Compiles a Slang ray-tracing stage with slangc for Vulkan 1.2 (SPIR-V 1.5), with the library's
+/// Slang directory and [`SHADER_DIR`] on the search path.
+fn compile_slang(path: &Path, stage: Stage) -> Result<Vec<u32>, Error> {
+    let source =
+        std::fs::read_to_string(path).map_err(|e| Error::Compile(format!("{}: {e}", path.display())))?;
+    let search_dirs = [Path::new(SLANG_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    slangc(&source, stage, Target::Vulkan1_2, &search_dirs)
         .map_err(|error| Error::Compile(format!("{}:\n{error}", path.display())))
 }
 

@@ -1,10 +1,11 @@
 //! The renderer: the scene's buffers, acceleration structures and textures on the device, and the
-//! two ways of tracing it (the GLSL ray-tracing pipeline and the WGSL ray-query compute shader).
+//! ways of tracing it (the ray-tracing pipeline with the GLSL or the Slang closest-hit shader, and
+//! the WGSL ray-query compute shader).
 
 use super::abi::{RtPixelRecord, RtPushConstants, RtUniforms};
 use super::accel;
 use super::mode::Mode;
-use super::pipeline::{self, RayTracing, BINDINGS};
+use super::pipeline::{self, ClosestHit, RayTracing, BINDINGS};
 use super::scene::{Camera, Scene};
 use super::texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, TEXTURE_SIZE};
 use super::Error;
@@ -24,7 +25,8 @@ pub fn open_device() -> Result<Gpu, shader_proptest::Error> {
     Gpu::open(DEVICE_REQUEST)
 }
 
-/// One traced image: colours (GLSL path only) and what each pixel's primary hit measured.
+/// One traced image: colours (ray-tracing pipeline only) and what each pixel's primary hit
+/// measured.
 #[derive(Clone, Debug)]
 pub struct Frame {
     /// Width in pixels.
@@ -42,8 +44,8 @@ pub struct Frame {
 /// Which shaders trace a frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Path {
-    /// GLSL ray generation, miss and closest hit in a ray-tracing pipeline.
-    RayTracing,
+    /// GLSL ray generation and miss and this closest hit in a ray-tracing pipeline.
+    RayTracing(ClosestHit),
     /// The WGSL ray-query compute shader.
     RayQuery,
 }
@@ -61,14 +63,17 @@ pub struct Renderer<'g> {
     set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
     ray_tracing: RayTracing,
+    /// The same pipeline with the Slang closest-hit shader.
+    slang_ray_tracing: RayTracing,
     /// The WGSL ray-query pipeline, where the device has ray queries.
     ray_query: Option<vk::Pipeline>,
 }
 
 impl<'g> Renderer<'g> {
     /// Uploads `scene`, builds its acceleration structures, makes the textures (full mip chains)
-    /// and the trilinear sampler, and compiles the GLSL ray-tracing pipeline and, where the device
-    /// has ray queries, the WGSL ray-query pipeline. `gpu` must come from [`open_device`].
+    /// and the trilinear sampler, and compiles the ray-tracing pipeline once with each closest-hit
+    /// shader and, where the device has ray queries, the WGSL ray-query pipeline. `gpu` must come
+    /// from [`open_device`].
     pub fn new(gpu: &'g Gpu, scene: Scene) -> Result<Renderer<'g>, Error> {
         let mut owner = Owner::new(gpu);
         let input = vk::BufferUsageFlags::STORAGE_BUFFER
@@ -88,7 +93,8 @@ impl<'g> Renderer<'g> {
         ];
         let sampler = sampler(&mut owner, anisotropy(gpu))?;
         let (set_layout, layout) = pipeline::layouts(&mut owner)?;
-        let ray_tracing = pipeline::ray_tracing(&mut owner, layout)?;
+        let ray_tracing = pipeline::ray_tracing(&mut owner, layout, ClosestHit::Glsl)?;
+        let slang_ray_tracing = pipeline::ray_tracing(&mut owner, layout, ClosestHit::Slang)?;
         let ray_query = if gpu.has(Feature::RayQuery) {
             Some(pipeline::ray_query(&mut owner, layout)?)
         } else {
@@ -105,6 +111,7 @@ impl<'g> Renderer<'g> {
             set_layout,
             layout,
             ray_tracing,
+            slang_ray_tracing,
             ray_query,
         })
     }
@@ -132,10 +139,20 @@ impl<'g> Renderer<'g> {
         anisotropy(self.owner.gpu)
     }
 
-    /// Traces a frame with the GLSL ray-tracing pipeline: colours and records. Fails with
-    /// [`Error::FrameTooLarge`] above [`Renderer::max_pixels`].
+    /// Traces a frame with the ray-tracing pipeline and the GLSL closest-hit shader: colours and
+    /// records. Fails with [`Error::FrameTooLarge`] above [`Renderer::max_pixels`].
     pub fn render(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, Error> {
-        self.trace(push, uniforms, Path::RayTracing)
+        self.render_with(ClosestHit::Glsl, push, uniforms)
+    }
+
+    /// Traces a frame as [`Renderer::render`] does, with the closest-hit shader `closest_hit`.
+    pub fn render_with(
+        &self,
+        closest_hit: ClosestHit,
+        push: &RtPushConstants,
+        uniforms: &RtUniforms,
+    ) -> Result<Frame, Error> {
+        self.trace(push, uniforms, Path::RayTracing(closest_hit))
     }
 
     /// Traces the primary rays of a frame with the WGSL ray-query compute shader: records only
@@ -143,6 +160,14 @@ impl<'g> Renderer<'g> {
     /// [`Error::NotSupported`] on a device without ray queries.
     pub fn trace_wgsl(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, Error> {
         self.trace(push, uniforms, Path::RayQuery)
+    }
+
+    /// The ray-tracing pipeline with the closest-hit shader `closest_hit`.
+    fn ray_tracing(&self, closest_hit: ClosestHit) -> &RayTracing {
+        match closest_hit {
+            ClosestHit::Glsl => &self.ray_tracing,
+            ClosestHit::Slang => &self.slang_ray_tracing,
+        }
     }
 
     /// The most pixels a frame may have: the device's `maxStorageBufferRange` over the size of a
@@ -154,7 +179,7 @@ impl<'g> Renderer<'g> {
 
     fn trace(&self, push: &RtPushConstants, uniforms: &RtUniforms, path: Path) -> Result<Frame, Error> {
         let pipeline = match path {
-            Path::RayTracing => self.ray_tracing.pipeline,
+            Path::RayTracing(closest_hit) => self.ray_tracing(closest_hit).pipeline,
             Path::RayQuery => self.ray_query.ok_or_else(|| {
                 let reason = self
                     .owner
@@ -282,7 +307,7 @@ impl<'g> Renderer<'g> {
         (path, pipeline): (Path, vk::Pipeline),
     ) {
         let bind_point = match path {
-            Path::RayTracing => vk::PipelineBindPoint::RAY_TRACING_KHR,
+            Path::RayTracing(_) => vk::PipelineBindPoint::RAY_TRACING_KHR,
             Path::RayQuery => vk::PipelineBindPoint::COMPUTE,
         };
         // SAFETY: recording into a command buffer in the recording state; every handle is alive.
@@ -291,9 +316,10 @@ impl<'g> Renderer<'g> {
             device.cmd_bind_descriptor_sets(command_buffer, bind_point, self.layout, 0, &[set], &[]);
             pipeline::push(&self.owner, command_buffer, self.layout, push);
             match path {
-                Path::RayTracing => {
-                    let [raygen, miss, hit, callable] = &self.ray_tracing.regions;
-                    self.ray_tracing.loader.cmd_trace_rays(
+                Path::RayTracing(closest_hit) => {
+                    let ray_tracing = self.ray_tracing(closest_hit);
+                    let [raygen, miss, hit, callable] = &ray_tracing.regions;
+                    ray_tracing.loader.cmd_trace_rays(
                         command_buffer,
                         raygen,
                         miss,

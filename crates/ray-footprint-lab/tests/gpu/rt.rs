@@ -1,6 +1,6 @@
 //! Ray tracing with real acceleration structures.
 //!
-//! The GLSL closest-hit shader and the WGSL ray-query shader record, per pixel, the primary hit
+//! The GLSL and the Slang closest-hit shaders and the WGSL ray-query shader record, per pixel, the primary hit
 //! (distance, normal, barycentrics, instance, triangle), every ray-cone value they computed
 //! there, and the ray-differential, re-intersection and wireframe values. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
@@ -15,13 +15,14 @@ use ray_footprint::layout::{self, GlslPacking, StructLayout};
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
 use ray_footprint::rust_layout;
-use ray_footprint::shaders::GLSL_INCLUDE_DIR;
+use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks as suite;
 use ray_footprint_lab::checks::ray_cone::{area_corners, curvature_spread_angle_error, edge_curvature_error};
 use ray_footprint_lab::rt::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
 use ray_footprint_lab::rt::{
-    open_device, ray_query_source, Camera, Error, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR,
+    open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Mode, Renderer, Scene, Vertex,
+    SHADER_DIR,
 };
 use shader_proptest::tolerance::{dot_error, log2_error, ulps};
 use shader_proptest::{FunctionCheck, Gpu, Value};
@@ -42,8 +43,8 @@ fn gpu() -> Gpu {
     open_device().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
 }
 
-/// The renderer's shared structs have one layout in Rust, WGSL (naga), GLSL std430 and GLSL
-/// scalar (glslang), field by field; the uniform block's struct also under std140.
+/// The renderer's shared structs have one layout in Rust, WGSL (naga), std430 and scalar in GLSL
+/// (glslang) and in Slang (slangc), field by field; the uniform block's struct also under std140.
 #[test]
 fn renderer_structs_have_one_layout() {
     let rust = [
@@ -119,21 +120,27 @@ fn renderer_structs_have_one_layout() {
     );
 }
 
-/// Compares `rust` with its WGSL declaration in the ray-query source and its GLSL declaration in
-/// `rt_abi.glsl` under each of `packings`, and prints the table.
+/// Compares `rust` with its WGSL declaration in the ray-query source, its GLSL declaration in
+/// `rt_abi.glsl` and its Slang declaration in `rt_abi.slang` under each of `packings`, and prints
+/// the table.
 fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
     let include_dirs = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    let search_dirs = [Path::new(SLANG_INCLUDE_DIR), Path::new(SHADER_DIR)];
     let wgsl = layout::wgsl_layout(&ray_query_source(), &rust.name).unwrap_or_else(|e| panic!("{e}"));
-    let glsl: Vec<_> = packings
-        .iter()
-        .map(|&packing| {
-            let layout = layout::glsl_layout("#include \"rt_abi.glsl\"", &rust.name, packing, &include_dirs)
-                .unwrap_or_else(|e| panic!("{e}"));
-            (packing.qualifier(), layout)
-        })
+    let glsl = packings.iter().map(|&packing| {
+        let layout = layout::glsl_layout("#include \"rt_abi.glsl\"", &rust.name, packing, &include_dirs);
+        (packing.qualifier().to_string(), layout)
+    });
+    let slang = packings.iter().map(|&packing| {
+        let layout = layout::slang_layout("import rt_abi;", &rust.name, packing, &search_dirs);
+        (format!("Slang {}", packing.qualifier()), layout)
+    });
+    let shaders: Vec<_> = glsl
+        .chain(slang)
+        .map(|(label, layout)| (label, layout.unwrap_or_else(|e| panic!("{e}"))))
         .collect();
     let mut columns = vec![("WGSL", &wgsl)];
-    columns.extend(glsl.iter().map(|(name, layout)| (*name, layout)));
+    columns.extend(shaders.iter().map(|(label, layout)| (label.as_str(), layout)));
     for (_, shader) in &columns {
         layout::compare(rust, shader).unwrap_or_else(|e| panic!("{e}"));
     }
@@ -145,6 +152,14 @@ fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
 fn glsl_closest_hit_agrees_with_the_mirror() {
     agree("GLSL closest hit", |renderer, push, uniforms| {
         renderer.render(push, uniforms)
+    });
+}
+
+/// The Slang closest-hit shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn slang_closest_hit_agrees_with_the_mirror() {
+    agree("Slang closest hit", |renderer, push, uniforms| {
+        renderer.render_with(ClosestHit::Slang, push, uniforms)
     });
 }
 
