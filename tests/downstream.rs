@@ -56,6 +56,14 @@ fn glsl_build_script_compiles_a_closest_hit_shader() {
     run_downstream("glsl-build-script", "accepted by spirv-val");
 }
 
+/// A Vulkan user writing Slang: a compute shader `import`s the Slang ray-cone module through the
+/// directory the crate exports to dependents' build scripts, compiled by slangc, run on lavapipe
+/// with the validation layer on and checked against the mirror.
+#[test]
+fn slang_build_script_compiles_a_compute_shader() {
+    run_downstream("slang-build-script", "cases agree with the mirror");
+}
+
 /// A CPU path tracer: the Rust mirror alone, default features, no Vulkan.
 #[test]
 fn cpu_path_tracer_uses_the_mirror_alone() {
