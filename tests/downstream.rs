@@ -70,9 +70,9 @@ fn cpu_path_tracer_uses_the_mirror_alone() {
     run_downstream("cpu-path-tracer", "ground rows");
 }
 
-/// A user of the harness: their own WGSL and GLSL functions checked against their own Rust
+/// A user of the harness: their own WGSL, GLSL and Slang functions checked against their own Rust
 /// functions with shader-proptest, as an outside crate's tests, on lavapipe.
 #[test]
 fn shader_proptest_checks_a_users_functions() {
-    cargo_downstream("test", "shader-proptest-user", "test result: ok. 2 passed");
+    cargo_downstream("test", "shader-proptest-user", "test result: ok. 3 passed");
 }
