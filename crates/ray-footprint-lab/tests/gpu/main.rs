@@ -2,7 +2,7 @@
 //! `SHADER_PROPTEST_DEVICE` names another) with the validation layer on: any validation message
 //! fails a test.
 //!
-//! - [`agreement`]: every shader function against its Rust mirror, in WGSL and GLSL;
+//! - [`agreement`]: every shader function against its Rust mirror, in WGSL, GLSL and Slang;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
 //! - [`degenerate`]: the degenerate-input table on the CPU and the GPU;
 //! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror;
