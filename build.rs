@@ -1,6 +1,6 @@
-//! Build script: exports the GLSL include directory to dependents and, with the `validate` feature,
-//! parses and validates every shader module with naga so that a broken module fails `cargo build`
-//! with naga's message pointing at the file and line.
+//! Build script: exports the GLSL and Slang include directories to dependents and, with the
+//! `validate` feature, parses and validates every WGSL and GLSL module with naga so that a broken
+//! module fails `cargo build` with naga's message pointing at the file and line.
 
 use std::path::PathBuf;
 
@@ -10,6 +10,11 @@ fn main() {
     println!("cargo:rerun-if-changed=shaders");
     // Seen by dependents' build scripts as DEP_RAY_FOOTPRINT_GLSL_INCLUDE.
     println!("cargo:glsl_include={}", glsl_dir.display());
+    // Seen by dependents' build scripts as DEP_RAY_FOOTPRINT_SLANG_INCLUDE.
+    println!(
+        "cargo:slang_include={}",
+        root.join("shaders").join("slang").display()
+    );
     #[cfg(feature = "validate")]
     {
         validate::all();

@@ -6,12 +6,14 @@
 #
 #        scripts/nvidia-run.sh pack
 #
-#    builds the release binaries and puts into .nvidia/ (ignored by git, about 30 MiB):
+#    builds the release binaries and puts into .nvidia/ (ignored by git, about 65 MiB):
 #      bin/      verify, gallery, quality, gpu-tests (tests/gpu), mode_costs, verification_speed,
 #                stripped
 #      debs/     the Vulkan loader and the GL/X libraries the NVIDIA driver's ICD loads
 #                (libvulkan1, libglvnd0, libegl1, libgl1, libglx0, libgles2, libx11-6 and what it
 #                needs), vulkan-validationlayers, glslang-tools, spirv-tools (amd64)
+#      slang/    slangc and its libraries, copied from the slangc on the PATH (scripts/setup.sh
+#                installs it), for the Slang checks and the Slang closest hit
 #      build-root  the directory the binaries were built in (they read shaders from there)
 #
 # 2. There, from a copy of the repository at the same commit with .nvidia/ beside the sources
@@ -20,7 +22,8 @@
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
 #
 #    unpacks the Vulkan loader and its GL/X libraries into / where the system has no loader, and
-#    the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under /); links the build
+#    the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under /), puts
+#    .nvidia/slang on the PATH; links the build
 #    directory to the repository copy if the paths differ; then runs, with the validation layer on
 #    (any message fails the run) on the device SHADER_PROPTEST_DEVICE names (lavapipe without it):
 #      verify (every check, 100,000 cases per function and language)   -> verify.log
@@ -83,6 +86,10 @@ pack() {
     local options=(-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 "-oDir::State::Lists=$lists")
     apt-get "${options[@]}" update -qq
     (cd "$PACK/debs" && apt-get "${options[@]}" download "${DEBS[@]}")
+    local slangc
+    slangc=$(readlink -f "$(command -v slangc)") || { say "no slangc on the PATH: run scripts/setup.sh"; exit 1; }
+    say "copying $(dirname "$slangc")"
+    cp -r "$(dirname "$slangc")" "$PACK/slang"
     pwd >"$PACK/build-root"
     du -sh "$PACK"
     say "carry .nvidia/ with the repository; there run: SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR"
@@ -108,6 +115,9 @@ setup_environment() {
         export PATH="$OPT/usr/bin:$PATH"
         export LD_LIBRARY_PATH="$OPT/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
         export VK_LAYER_PATH="$OPT/usr/share/vulkan/explicit_layer.d"
+    fi
+    if [ -x "$PACK/slang/slangc" ]; then
+        export PATH="$PACK/slang:$PATH"
     fi
     local nvidia_icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
     if [ -n "${SHADER_PROPTEST_DEVICE:-}" ] && [ -f "$nvidia_icd" ] && ! ls /usr/share/vulkan/icd.d/nvidia* \

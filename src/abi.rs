@@ -127,27 +127,46 @@ pub fn shared_layouts() -> Vec<(crate::shaders::Module, crate::layout::StructLay
     ]
 }
 
-/// Reads every shared struct's layout from the WGSL module (naga) and from the GLSL module in a
-/// std430 and a scalar block (glslang), compares each with the Rust mirror, and renders one table
-/// per struct (Rust / WGSL / std430 / scalar). Fails on the first difference, naming the struct
-/// and field. Needs `glslangValidator`.
+/// Reads every shared struct's layout from the WGSL module (naga), from the GLSL module in a
+/// std430 and a scalar block (glslang) and from the Slang module in a std430 and a scalar
+/// structured buffer (slangc), compares each with the Rust mirror, and renders one table per
+/// struct (Rust / WGSL / std430 / scalar / Slang std430 / Slang scalar). Fails on the first
+/// difference, naming the struct and field. Needs `glslangValidator` and `slangc`.
 #[cfg(feature = "validate")]
 pub fn verify_shared_layouts() -> Result<String, crate::layout::LayoutError> {
-    use crate::layout::{compare, glsl_layout, render_columns, wgsl_layout, GlslPacking};
-    let include_dir = std::path::Path::new(crate::shaders::GLSL_INCLUDE_DIR);
+    use crate::layout::{compare, glsl_layout, render_columns, slang_layout, wgsl_layout, GlslPacking};
+    use crate::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
+    let glsl_dir = std::path::Path::new(GLSL_INCLUDE_DIR);
+    let slang_dir = std::path::Path::new(SLANG_INCLUDE_DIR);
     let mut tables = Vec::new();
     for (module, rust) in shared_layouts() {
         let include = format!("#include \"{}.glsl\"", module.stem());
-        let wgsl = wgsl_layout(module.wgsl(), &rust.name)?;
-        let std430 = glsl_layout(&include, &rust.name, GlslPacking::Std430, &[include_dir])?;
-        let scalar = glsl_layout(&include, &rust.name, GlslPacking::Scalar, &[include_dir])?;
-        for shader in [&wgsl, &std430, &scalar] {
+        let import = format!("import {};", module.stem());
+        let name = &rust.name;
+        let columns = [
+            ("WGSL", wgsl_layout(module.wgsl(), name)?),
+            (
+                "std430",
+                glsl_layout(&include, name, GlslPacking::Std430, &[glsl_dir])?,
+            ),
+            (
+                "scalar",
+                glsl_layout(&include, name, GlslPacking::Scalar, &[glsl_dir])?,
+            ),
+            (
+                "Slang std430",
+                slang_layout(&import, name, GlslPacking::Std430, &[slang_dir])?,
+            ),
+            (
+                "Slang scalar",
+                slang_layout(&import, name, GlslPacking::Scalar, &[slang_dir])?,
+            ),
+        ];
+        for (_, shader) in &columns {
             compare(&rust, shader)?;
         }
-        tables.push(render_columns(
-            &rust,
-            &[("WGSL", &wgsl), ("std430", &std430), ("scalar", &scalar)],
-        ));
+        let columns: Vec<_> = columns.iter().map(|(label, layout)| (*label, layout)).collect();
+        tables.push(render_columns(&rust, &columns));
     }
     Ok(tables.join("\n"))
 }

@@ -1,14 +1,14 @@
 //! Pixel-footprint math for GPU ray tracers and raymarchers: ray cones, ray differentials and
-//! anti-aliased barycentric wireframe, as WGSL and GLSL modules to include in your shaders, with a
-//! Rust mirror of every function and of every struct that crosses the CPU/GPU boundary.
+//! anti-aliased barycentric wireframe, as WGSL, GLSL and Slang modules to include in your shaders,
+//! with a Rust mirror of every function and of every struct that crosses the CPU/GPU boundary.
 //!
-//! The WGSL, the GLSL and the Rust give the same answers: the workspace's `ray-footprint-lab`
+//! The WGSL, the GLSL, the Slang and the Rust give the same answers: the workspace's `ray-footprint-lab`
 //! runs every shader function on a Vulkan device (Mesa's lavapipe in CI) through the
 //! `shader-proptest` harness and compares the results with the mirror, function by function.
 #![deny(missing_docs)]
 
 pub mod abi;
-/// Degenerate inputs: the documented output of every function, in all three implementations.
+/// Degenerate inputs: the documented output of every function, in every implementation.
 ///
 #[doc = include_str!("degenerate.md")]
 pub mod degenerate {}
@@ -25,8 +25,8 @@ mod values;
 pub mod wireframe;
 
 /// Struct layout verification (feature `validate`), from the `shader-proptest` crate: compare a
-/// Rust struct's layout with a shader struct's (naga's WGSL layout, glslang's std140, std430 and
-/// scalar). [`abi::verify_shared_layouts`] uses it for every shared struct of this crate.
+/// Rust struct's layout with a shader struct's (naga's WGSL layout, glslang's and slangc's std140,
+/// std430 and scalar). [`abi::verify_shared_layouts`] uses it for every shared struct of this crate.
 #[cfg(feature = "validate")]
 pub mod layout {
     pub use shader_proptest::layout::*;

@@ -1,6 +1,6 @@
 //! The shader modules as source text, and the ways to include them in your shaders.
 //!
-//! Each concept is one WGSL module and one GLSL module with the same stem. The modules declare only
+//! Each concept is one WGSL module, one GLSL module and one Slang module with the same stem. The modules declare only
 //! functions, structs and constants, all prefixed `rf_` / `Rf` / `RF_`, and none depends on another,
 //! so any set of them can be combined with each other and with your code.
 //!
@@ -10,6 +10,9 @@
 //!   environment variable `DEP_RAY_FOOTPRINT_GLSL_INCLUDE`.
 //! - GLSL with shaderc: [`resolve_glsl_include`] as the include callback.
 //! - naga_oil (Bevy): `ray_footprint::naga_oil::add_composable_modules` (feature `naga_oil`).
+//! - Slang: `import ray_cone;` or `#include "ray_cone.slang"` with [`SLANG_INCLUDE_DIR`] on the
+//!   search path (`slangc -I...`); a dependent's build script finds the same directory in the
+//!   environment variable `DEP_RAY_FOOTPRINT_SLANG_INCLUDE`.
 //!
 //! ```
 //! use ray_footprint::shaders::{wgsl_prelude, Module};
@@ -22,14 +25,19 @@
 /// Directory holding the GLSL modules, for `glslangValidator -I` or a shaderc include callback.
 pub const GLSL_INCLUDE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/glsl");
 
+/// Directory holding the Slang modules, for `slangc -I` or a Slang session's search paths.
+pub const SLANG_INCLUDE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/slang");
+
 /// Declares the modules: variant, stem, and the constants holding their sources.
 macro_rules! modules {
-    ($($(#[$doc:meta])* $variant:ident, $stem:literal, $wgsl:ident, $glsl:ident;)+) => {
+    ($($(#[$doc:meta])* $variant:ident, $stem:literal, $wgsl:ident, $glsl:ident, $slang:ident;)+) => {
         $(
             #[doc = concat!("WGSL source of `shaders/wgsl/", $stem, ".wgsl`.")]
             pub const $wgsl: &str = include_str!(concat!("../shaders/wgsl/", $stem, ".wgsl"));
             #[doc = concat!("GLSL source of `shaders/glsl/", $stem, ".glsl`.")]
             pub const $glsl: &str = include_str!(concat!("../shaders/glsl/", $stem, ".glsl"));
+            #[doc = concat!("Slang source of `shaders/slang/", $stem, ".slang`.")]
+            pub const $slang: &str = include_str!(concat!("../shaders/slang/", $stem, ".slang"));
         )+
 
         /// A shader module of this crate.
@@ -42,7 +50,7 @@ macro_rules! modules {
             /// Every module.
             pub const ALL: &'static [Module] = &[$(Module::$variant),+];
 
-            /// The file stem shared by the WGSL file, the GLSL file and the Rust module.
+            /// The file stem shared by the WGSL, GLSL and Slang files and the Rust module.
             pub fn stem(self) -> &'static str {
                 match self {
                     $(Module::$variant => $stem,)+
@@ -62,19 +70,26 @@ macro_rules! modules {
                     $(Module::$variant => $glsl,)+
                 }
             }
+
+            /// The Slang source.
+            pub fn slang(self) -> &'static str {
+                match self {
+                    $(Module::$variant => $slang,)+
+                }
+            }
         }
     };
 }
 
 modules! {
     /// Ray cones: [`crate::ray_cone`].
-    RayCone, "ray_cone", RAY_CONE_WGSL, RAY_CONE_GLSL;
+    RayCone, "ray_cone", RAY_CONE_WGSL, RAY_CONE_GLSL, RAY_CONE_SLANG;
     /// Ray differentials: [`crate::ray_diff`].
-    RayDiff, "ray_diff", RAY_DIFF_WGSL, RAY_DIFF_GLSL;
+    RayDiff, "ray_diff", RAY_DIFF_WGSL, RAY_DIFF_GLSL, RAY_DIFF_SLANG;
     /// Ray differentials in double precision (needs shader f64): [`crate::ray_diff_f64`].
-    RayDiffF64, "ray_diff_f64", RAY_DIFF_F64_WGSL, RAY_DIFF_F64_GLSL;
+    RayDiffF64, "ray_diff_f64", RAY_DIFF_F64_WGSL, RAY_DIFF_F64_GLSL, RAY_DIFF_F64_SLANG;
     /// Anti-aliased barycentric wireframe: [`crate::wireframe`].
-    Wireframe, "wireframe", WIREFRAME_WGSL, WIREFRAME_GLSL;
+    Wireframe, "wireframe", WIREFRAME_WGSL, WIREFRAME_GLSL, WIREFRAME_SLANG;
 }
 
 impl Module {
@@ -98,9 +113,10 @@ impl Module {
     }
 
     /// The module as a `shader_proptest::Shader` in `language` (feature `shader-proptest`): the
-    /// WGSL module text with its naga capabilities, or `#include "<stem>.glsl"` with
-    /// [`GLSL_INCLUDE_DIR`] on the include path; the `_f64` modules require `shaderFloat64`.
-    /// Check your own functions that use the module by appending them to its source.
+    /// WGSL module text with its naga capabilities, `#include "<stem>.glsl"` with
+    /// [`GLSL_INCLUDE_DIR`] on the include path, or `import <stem>;` with [`SLANG_INCLUDE_DIR`] on
+    /// the search path; the `_f64` modules require `shaderFloat64`. Check your own functions that
+    /// use the module by appending them to its source.
     #[cfg(feature = "shader-proptest")]
     pub fn shader(self, language: shader_proptest::Language) -> shader_proptest::Shader {
         use shader_proptest::{Feature, Language, Shader};
@@ -108,6 +124,9 @@ impl Module {
             Language::Wgsl => Shader::wgsl(self.wgsl()).capabilities(self.naga_capabilities()),
             Language::Glsl => {
                 Shader::glsl(format!("#include \"{}.glsl\"", self.stem())).include_dir(GLSL_INCLUDE_DIR)
+            }
+            Language::Slang => {
+                Shader::slang(format!("import {};", self.stem())).include_dir(SLANG_INCLUDE_DIR)
             }
         };
         if self.needs_f64() {

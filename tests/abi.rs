@@ -1,10 +1,12 @@
-//! ABI: every shared struct has one layout in Rust, WGSL, GLSL std430 and GLSL scalar, and every
+//! ABI: every shared struct has one layout in Rust, WGSL, GLSL std430 and scalar, and Slang std430
+//! and scalar, and every
 //! push-constant block fits the minimum every device accepts. (The values are echoed through the
 //! GPU bit for bit by `crates/ray-footprint-lab/tests/gpu/abi.rs`.)
 
 use ray_footprint::abi::{self, PUSH_CONSTANT_LIMIT};
 
-/// Rust, WGSL, std430 and scalar agree for every shared struct; prints the table.
+/// Rust, WGSL, GLSL std430 and scalar, Slang std430 and scalar agree for every shared struct;
+/// prints the table.
 #[test]
 fn every_shared_struct_has_one_layout() {
     let tables = abi::verify_shared_layouts().unwrap_or_else(|error| panic!("{error}"));

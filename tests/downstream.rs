@@ -56,15 +56,23 @@ fn glsl_build_script_compiles_a_closest_hit_shader() {
     run_downstream("glsl-build-script", "accepted by spirv-val");
 }
 
+/// A Vulkan user writing Slang: a compute shader `import`s the Slang ray-cone module through the
+/// directory the crate exports to dependents' build scripts, compiled by slangc, run on lavapipe
+/// with the validation layer on and checked against the mirror.
+#[test]
+fn slang_build_script_compiles_a_compute_shader() {
+    run_downstream("slang-build-script", "cases agree with the mirror");
+}
+
 /// A CPU path tracer: the Rust mirror alone, default features, no Vulkan.
 #[test]
 fn cpu_path_tracer_uses_the_mirror_alone() {
     run_downstream("cpu-path-tracer", "ground rows");
 }
 
-/// A user of the harness: their own WGSL and GLSL functions checked against their own Rust
+/// A user of the harness: their own WGSL, GLSL and Slang functions checked against their own Rust
 /// functions with shader-proptest, as an outside crate's tests, on lavapipe.
 #[test]
 fn shader_proptest_checks_a_users_functions() {
-    cargo_downstream("test", "shader-proptest-user", "test result: ok. 2 passed");
+    cargo_downstream("test", "shader-proptest-user", "test result: ok. 3 passed");
 }

@@ -1,5 +1,6 @@
-//! Each concept is one WGSL file, one GLSL file and one Rust module with the same functions and
-//! constants in the same order: the shader names are the Rust names prefixed `rf_` / `RF_`.
+//! Each concept is one WGSL file, one GLSL file, one Slang file and one Rust module with the same
+//! functions and constants in the same order: the shader names are the Rust names prefixed `rf_` /
+//! `RF_`. The three shader files also declare the same structs in the same order.
 
 use ray_footprint::shaders::Module;
 
@@ -19,6 +20,8 @@ fn shader_names(source: &str, language: &str) -> Vec<String> {
             ("glsl", ["const", _, name, ..]) => name,
             ("glsl", [_, name, ..]) if name.starts_with("rf_") && line.trim_end().ends_with('{') => name,
             ("glsl", [_, name, ..]) if name.starts_with("rf_") && line.ends_with(',') => name,
+            ("slang", ["public", "static", "const", _, name, ..]) => name,
+            ("slang", ["public", _, name, ..]) if name.starts_with("rf_") => name,
             _ => continue,
         };
         names.push(
@@ -28,6 +31,20 @@ fn shader_names(source: &str, language: &str) -> Vec<String> {
         );
     }
     names
+}
+
+/// Structs declared at the top level of a shader module, in order.
+fn struct_names(source: &str) -> Vec<&str> {
+    source
+        .lines()
+        .filter_map(|line| {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            match words.as_slice() {
+                ["struct", name, ..] | ["public", "struct", name, ..] => Some(*name),
+                _ => None,
+            }
+        })
+        .collect()
 }
 
 /// Functions (public or not) and public constants of a Rust module, in order.
@@ -58,14 +75,57 @@ fn every_module_declares_the_same_names_in_the_same_order() {
         let rust = rust_names(&rust_source(module));
         let wgsl = shader_names(module.wgsl(), "wgsl");
         let glsl = shader_names(module.glsl(), "glsl");
+        let slang = shader_names(module.slang(), "slang");
         assert_eq!(wgsl, rust, "{}: WGSL and Rust differ", module.stem());
         assert_eq!(glsl, rust, "{}: GLSL and Rust differ", module.stem());
+        assert_eq!(slang, rust, "{}: Slang and Rust differ", module.stem());
         println!(
             "{}: {} names agree: {}",
             module.stem(),
             rust.len(),
             rust.join(" ")
         );
+    }
+}
+
+#[test]
+fn every_shader_module_declares_the_same_structs_in_the_same_order() {
+    for &module in Module::ALL {
+        let wgsl = struct_names(module.wgsl());
+        assert_eq!(
+            struct_names(module.glsl()),
+            wgsl,
+            "{}: GLSL and WGSL differ",
+            module.stem()
+        );
+        assert_eq!(
+            struct_names(module.slang()),
+            wgsl,
+            "{}: Slang and WGSL differ",
+            module.stem()
+        );
+        println!(
+            "{}: {} structs agree: {}",
+            module.stem(),
+            wgsl.len(),
+            wgsl.join(" ")
+        );
+    }
+}
+
+#[test]
+fn slang_modules_have_an_include_guard_and_no_entry_point_or_module_declaration() {
+    for &module in Module::ALL {
+        let guard = format!("#ifndef RAY_FOOTPRINT_{}_SLANG", module.stem().to_uppercase());
+        let source = module.slang();
+        assert!(source.contains(&guard), "{}: missing `{guard}`", module.stem());
+        for forbidden in ["[shader(", "[numthreads(", "\nmodule ", "\nimplementing "] {
+            assert!(
+                !source.contains(forbidden),
+                "{}: a Slang module must not contain {forbidden:?} (it must work under #include)",
+                module.stem()
+            );
+        }
     }
 }
 

@@ -1,6 +1,6 @@
 //! What each shader function costs: for every public function of every module (the agreement
-//! suite's checks, in module order) and both languages, the function compiled alone in the
-//! suite's kernel for it (WGSL by naga, GLSL by glslang), optimised by `spirv-opt -O`, and
+//! suite's checks, in module order) and every language, the function compiled alone in the
+//! suite's kernel for it (WGSL by naga, GLSL by glslang, Slang by slangc), optimised by `spirv-opt -O`, and
 //! counted with `shader_proptest::spirv`: instructions inside functions (the kernel's own loads
 //! and stores included: every function pays them, per argument and result word), conditional
 //! branches and switches, extended-instruction calls and, among them, transcendental calls
@@ -8,8 +8,8 @@
 //! conditional branch and one switch of its own: its bounds check, an early return that
 //! spirv-opt's merge-return pass wraps in a one-case switch.
 //!
-//! Prints a Markdown table (the README's), with a `*` where the WGSL and GLSL instruction counts
-//! differ by more than a quarter. Below it, when `rf_process_wireframe` is measured, the same counts
+//! Prints a Markdown table (the README's), with a `*` where the WGSL or the Slang instruction count
+//! differs from GLSL's by more than a quarter. Below it, when `rf_process_wireframe` is measured, the same counts
 //! for a yardstick in the same kernel: `unguarded_process_wireframe` (`benches/unguarded/`), the
 //! wireframe tutorial's coverage formula without the crate's guards, so that the table says what
 //! the defined behaviour on degenerate input costs.
@@ -20,7 +20,7 @@
 //! (`process_wireframe`); `--module` a module's file stem (`wireframe`).
 
 use glam::Vec3;
-use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR};
+use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks::all_checks;
 use shader_proptest::spirv::{self, Statistics, TRANSCENDENTAL};
@@ -28,12 +28,14 @@ use shader_proptest::{kernel_source, Args, Check, Language, Shader, Value};
 use std::process::{Command, ExitCode};
 
 /// The unguarded yardstick of `rf_process_wireframe`, per language, appended to the module.
-const UNGUARDED_WIREFRAME: [(Language, &str); 2] = [
+const UNGUARDED_WIREFRAME: [(Language, &str); 3] = [
     (Language::Wgsl, include_str!("unguarded/process_wireframe.wgsl")),
     (Language::Glsl, include_str!("unguarded/process_wireframe.glsl")),
+    (Language::Slang, include_str!("unguarded/process_wireframe.slang")),
 ];
 
-/// Largest relative difference between the WGSL and GLSL instruction counts left unmarked.
+/// Largest relative difference between the WGSL (or Slang) and GLSL instruction counts left
+/// unmarked.
 const MARK_ABOVE: f64 = 0.25;
 
 /// Which functions to measure.
@@ -99,6 +101,9 @@ fn measure_unguarded(language: Language) -> Result<Statistics, String> {
         Language::Glsl => {
             Shader::glsl(format!("{}\n{yardstick}", module.source())).include_dir(GLSL_INCLUDE_DIR)
         }
+        Language::Slang => {
+            Shader::slang(format!("{}\n{yardstick}", module.source())).include_dir(SLANG_INCLUDE_DIR)
+        }
     };
     let kernel = kernel_source(
         &shader,
@@ -109,9 +114,9 @@ fn measure_unguarded(language: Language) -> Result<Statistics, String> {
     count(&shader, &kernel).map_err(|e| format!("unguarded_process_wireframe ({language}): {e}"))
 }
 
-/// The first line `program --version` prints (on either stream), or why it did not run.
-fn version(program: &str) -> String {
-    match Command::new(program).arg("--version").output() {
+/// The first line `program flag` prints (on either stream), or why it did not run.
+fn version(program: &str, flag: &str) -> String {
+    match Command::new(program).arg(flag).output() {
         Ok(output) => [output.stdout, output.stderr]
             .iter()
             .flat_map(|bytes| {
@@ -126,46 +131,56 @@ fn version(program: &str) -> String {
     }
 }
 
-/// `(WGSL - GLSL) / GLSL` in per cent, marked `*` where the larger count exceeds the smaller by
+/// `(other - GLSL) / GLSL` in per cent, marked `*` where the larger count exceeds the smaller by
 /// more than [`MARK_ABOVE`].
-fn difference(wgsl: usize, glsl: usize) -> String {
-    let ratio = wgsl as f64 / glsl.max(1) as f64;
-    let larger_over_smaller = wgsl.max(glsl) as f64 / wgsl.min(glsl).max(1) as f64;
+fn difference(other: usize, glsl: usize) -> String {
+    let ratio = other as f64 / glsl.max(1) as f64;
+    let larger_over_smaller = other.max(glsl) as f64 / other.min(glsl).max(1) as f64;
     let marked = larger_over_smaller > 1.0 + MARK_ABOVE;
     format!("{:+.0}%{}", 100.0 * (ratio - 1.0), if marked { " *" } else { "" })
 }
 
-fn row(module: Module, function: &str, [wgsl, glsl]: [Statistics; 2]) -> String {
-    let branches = |s: &Statistics| format!("{}+{}", s.conditional_branches, s.switches);
+/// One table row: per count, the languages in the order of [`Language::ALL`].
+fn row(module: Module, function: &str, counts: &[Statistics; 3]) -> String {
+    let [wgsl, glsl, slang] = counts;
+    let cells = |count: fn(&Statistics) -> String| counts.iter().map(count).collect::<Vec<_>>().join(" | ");
     format!(
-        "| {} | `{function}` | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+        "| {} | `{function}` | {} | {} | {} | {} | {} | {} |",
         module.stem(),
-        wgsl.instructions,
-        glsl.instructions,
+        cells(|s| s.instructions.to_string()),
         difference(wgsl.instructions, glsl.instructions),
-        branches(&wgsl),
-        branches(&glsl),
-        wgsl.extended_calls,
-        glsl.extended_calls,
-        wgsl.transcendental_calls,
-        glsl.transcendental_calls,
+        difference(slang.instructions, glsl.instructions),
+        cells(|s| format!("{}+{}", s.conditional_branches, s.switches)),
+        cells(|s| s.extended_calls.to_string()),
+        cells(|s| s.transcendental_calls.to_string()),
     )
 }
 
 fn print_header() {
-    println!("| module | function | WGSL instructions | GLSL instructions | WGSL vs GLSL | WGSL branches | GLSL branches | WGSL extended | GLSL extended | WGSL transcendental | GLSL transcendental |");
-    println!("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    let per_language = |count: &str| {
+        Language::ALL
+            .map(|language| format!("{} {count}", language.name()))
+            .join(" | ")
+    };
+    println!(
+        "| module | function | {} | WGSL vs GLSL | Slang vs GLSL | {} | {} | {} |",
+        per_language("instructions"),
+        per_language("branches"),
+        per_language("extended"),
+        per_language("transcendental")
+    );
+    println!("| --- | --- |{}", " ---: |".repeat(14));
 }
 
-/// Prints the row of `function`, or its errors; whether it was measured in both languages.
-fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>; 2]) -> bool {
+/// Prints the row of `function`, or its errors; whether it was measured in every language.
+fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>; 3]) -> bool {
     match counts {
-        [Ok(wgsl), Ok(glsl)] => {
-            println!("{}", row(module, function, [wgsl, glsl]));
+        [Ok(wgsl), Ok(glsl), Ok(slang)] => {
+            println!("{}", row(module, function, &[wgsl, glsl, slang]));
             true
         }
-        [wgsl, glsl] => {
-            for error in [wgsl.err(), glsl.err()].into_iter().flatten() {
+        counts => {
+            for error in counts.into_iter().filter_map(Result::err) {
                 eprintln!("error: {error}");
             }
             false
@@ -190,15 +205,16 @@ fn main() -> ExitCode {
         return ExitCode::from(2);
     }
     println!(
-        "SPIR-V per function for Vulkan 1.1 after spirv-opt -O; WGSL by naga, GLSL by {}; {}",
-        version("glslangValidator"),
-        version("spirv-opt")
+        "SPIR-V per function for Vulkan 1.1 after spirv-opt -O; WGSL by naga, GLSL by {}, Slang by slangc {}; {}",
+        version("glslangValidator", "--version"),
+        version("slangc", "-v"),
+        version("spirv-opt", "--version")
     );
     let names: Vec<_> = TRANSCENDENTAL.iter().map(|(_, name)| *name).collect();
     println!("transcendental: GLSL.std.450 {}", names.join(", "));
     println!(
         "branches: conditional branches + switches, the kernel's own 1+1 (its bounds check) included; \
-         * marks a WGSL/GLSL instruction difference above 25%\n"
+         * marks a WGSL/GLSL or Slang/GLSL instruction difference above 25%\n"
     );
     print_header();
     let mut failed = 0;

@@ -1,4 +1,4 @@
-//! How fast the whole agreement suite verifies: every check of every module in both languages,
+//! How fast the whole agreement suite verifies: every check of every module in every language,
 //! through the public API as `verify` runs them, at a fixed number of cases per check and
 //! language, with 1, 2, 4, ... up to all processors generating cases (`RunConfig::threads`).
 //! Prints, per thread count, the checks run and not run, the cases, the wall time (compiling

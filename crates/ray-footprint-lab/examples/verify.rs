@@ -1,6 +1,7 @@
 //! The main job: prints the layout of every struct shared between Rust and the shaders (Rust,
-//! WGSL, GLSL std430, GLSL scalar), then runs the whole agreement suite on the local Vulkan device
-//! (lavapipe unless `SHADER_PROPTEST_DEVICE` names another), one line per function and language.
+//! WGSL, GLSL std430 and scalar, Slang std430 and scalar), then runs the whole agreement suite on
+//! the local Vulkan device (lavapipe unless `SHADER_PROPTEST_DEVICE` names another), one line per
+//! function and language (WGSL, GLSL, Slang).
 //!
 //! A check fails when a case disagrees, or when more than [`MAX_VACUOUS`] of its cases have a
 //! vacuous tolerance (one that no plausible output could exceed). A check the device cannot run

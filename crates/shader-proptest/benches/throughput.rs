@@ -25,6 +25,12 @@ const GLSL: &str = "float lod(float width, vec2 size, vec3 normal, vec3 directio
         - log2(max(abs(dot(normal, direction)), 1e-4));
 }";
 
+const SLANG: &str = "float lod(float width, float2 size, float3 normal, float3 direction) {
+    float2 texels = max(size, float2(1.0));
+    return log2(max(abs(width), 1e-20)) + 0.5 * (log2(texels.x) + log2(texels.y))
+        - log2(max(abs(dot(normal, direction)), 1e-4));
+}";
+
 /// The Rust mirror of `lod`.
 fn lod(width: f32, size: Vec2, normal: Vec3, direction: Vec3) -> f32 {
     let texels = size.max(Vec2::ONE);
@@ -77,10 +83,15 @@ fn main() {
     let mut threads = vec![1];
     threads.extend((2..=processors).filter(|t| t.is_power_of_two() || *t == processors));
     println!("language  batch    threads     cases    seconds   verified evaluations/s");
-    for (language, source) in [(Language::Wgsl, WGSL), (Language::Glsl, GLSL)] {
+    for (language, source) in [
+        (Language::Wgsl, WGSL),
+        (Language::Glsl, GLSL),
+        (Language::Slang, SLANG),
+    ] {
         let shader = match language {
             Language::Wgsl => Shader::wgsl(source),
             Language::Glsl => Shader::glsl(source),
+            Language::Slang => Shader::slang(source),
         };
         for batch in [16_384, 65_536] {
             for &threads in &threads {

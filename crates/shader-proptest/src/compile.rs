@@ -1,6 +1,7 @@
 //! The shader compilers: WGSL through naga, GLSL through glslang (`glslangValidator`, the compiler
-//! Vulkan's GLSL users use), each to SPIR-V words. One function per language; kernels, layout
-//! probes and any other shader a user builds with this crate go through them.
+//! Vulkan's GLSL users use), Slang through `slangc` (the Slang compiler), each to SPIR-V words. One
+//! function per language; kernels, layout probes and any other shader a user builds with this crate
+//! go through them.
 
 use std::fmt;
 use std::path::Path;
@@ -14,17 +15,20 @@ pub enum Language {
     Wgsl,
     /// GLSL 460, compiled by glslang.
     Glsl,
+    /// Slang, compiled by slangc.
+    Slang,
 }
 
 impl Language {
     /// Every language.
-    pub const ALL: [Language; 2] = [Language::Wgsl, Language::Glsl];
+    pub const ALL: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Slang];
 
-    /// `"WGSL"` or `"GLSL"`.
+    /// `"WGSL"`, `"GLSL"` or `"Slang"`.
     pub fn name(self) -> &'static str {
         match self {
             Language::Wgsl => "WGSL",
             Language::Glsl => "GLSL",
+            Language::Slang => "Slang",
         }
     }
 }
@@ -58,9 +62,18 @@ impl Target {
             Target::Vulkan1_2 => (1, 5),
         }
     }
+
+    /// slangc's `-profile` for the SPIR-V version.
+    fn slang_profile(self) -> &'static str {
+        match self {
+            Target::Vulkan1_1 => "spirv_1_3",
+            Target::Vulkan1_2 => "spirv_1_5",
+        }
+    }
 }
 
-/// A GLSL shader stage, named by the file extension glslang reads it from.
+/// A shader stage: for GLSL named by the file extension glslang reads it from, for Slang by
+/// slangc's `-stage`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
     /// `comp`.
@@ -83,12 +96,23 @@ impl Stage {
             Stage::ClosestHit => "rchit",
         }
     }
+
+    /// slangc's name of the stage.
+    pub fn slang_name(self) -> &'static str {
+        match self {
+            Stage::Compute => "compute",
+            Stage::RayGeneration => "raygeneration",
+            Stage::Miss => "miss",
+            Stage::ClosestHit => "closesthit",
+        }
+    }
 }
 
 /// Why a shader produced no SPIR-V.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum CompileError {
-    /// The compiler could not be run (glslangValidator missing, a temporary file not writable).
+    /// The compiler could not be run (glslangValidator or slangc missing, a temporary file not
+    /// writable).
     NotRun(String),
     /// The source does not compile: the compiler's message, which names `source_path` and a line.
     Failed {
@@ -164,25 +188,107 @@ pub fn compile_glsl(
     target: Target,
     include_dirs: &[&Path],
 ) -> Result<Vec<u32>, CompileError> {
-    static COUNTER: AtomicUsize = AtomicUsize::new(0);
-    let stem = std::env::temp_dir().join(format!(
-        "shader-proptest-{}-{}",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
-    let (input, output) = (stem.with_extension(stage.extension()), stem.with_extension("spv"));
-    std::fs::write(&input, source)
-        .map_err(|e| CompileError::NotRun(format!("writing {}: {e}", input.display())))?;
     let mut command = Command::new("glslangValidator");
     command.args(["--target-env", target.glslang_env()]);
     for dir in include_dirs {
         command.arg(format!("-I{}", dir.display()));
     }
-    let result = command.arg("-o").arg(&output).arg(&input).output();
+    run_compiler(command, source, stage.extension(), |command, input, output| {
+        command.arg("-o").arg(output).arg(input);
+    })
+}
+
+/// Compiles Slang (a whole shader with the entry point `main`) as `stage` for `target` with slangc,
+/// with `search_dirs` on the search path of `import` and `#include`. Every warning is an error.
+/// Needs `slangc` on the `PATH`.
+///
+/// Two things are particular to the slangc of the `slangtorch` wheel that `scripts/setup.sh`
+/// installs on Debian 12, and harmless with any other:
+///
+/// - `-O0`: that slangc ships without Slang's SPIR-V optimizer library (`spirv-opt`) and refuses
+///   to optimize; at `-O0` it writes its SPIR-V directly. The driver optimizes the code anyway.
+/// - The source language in the `OpSource` debug instruction is rewritten from Slang (11) to
+///   Unknown (0): SPIR-V headers older than Slang's enumerant, such as those of Debian 12's
+///   SPIRV-Tools 2023.1 and Vulkan validation layer 1.3.239, reject the whole module for it.
+///   Nothing else in the module is changed.
+///
+/// No layout option is passed: a buffer without a layout in its type gets Slang's default for
+/// Vulkan (`std430` for structured buffers and push constants, `std140` for constant buffers),
+/// and `StructuredBuffer<T, ScalarDataLayout>` (or `Std430DataLayout`) chooses one per buffer.
+pub fn compile_slang(
+    source: &str,
+    stage: Stage,
+    target: Target,
+    search_dirs: &[&Path],
+) -> Result<Vec<u32>, CompileError> {
+    let mut command = Command::new("slangc");
+    command.args([
+        "-target",
+        "spirv",
+        "-profile",
+        target.slang_profile(),
+        "-entry",
+        "main",
+    ]);
+    command.args(["-stage", stage.slang_name(), "-O0", "-warnings-as-errors", "all"]);
+    for dir in search_dirs {
+        command.arg("-I").arg(dir);
+    }
+    let mut words = run_compiler(command, source, "slang", |command, input, output| {
+        command.arg(input).arg("-o").arg(output);
+    })?;
+    source_language_unknown(&mut words);
+    Ok(words)
+}
+
+/// `OpSource` and the value of its source-language operand that Slang writes.
+const OP_SOURCE: u32 = 3;
+const SOURCE_LANGUAGE_SLANG: u32 = 11;
+const SOURCE_LANGUAGE_UNKNOWN: u32 = 0;
+
+/// Sets the source language of every `OpSource` that names Slang to Unknown (see [`compile_slang`]).
+fn source_language_unknown(words: &mut [u32]) {
+    let mut at = 5; // after the header
+    while at < words.len() {
+        let count = (words[at] >> 16) as usize;
+        if words[at] & 0xffff == OP_SOURCE && words.get(at + 1) == Some(&SOURCE_LANGUAGE_SLANG) {
+            words[at + 1] = SOURCE_LANGUAGE_UNKNOWN;
+        }
+        at += count.max(1);
+    }
+}
+
+/// Runs a command-line compiler on `source`, written to a file with `extension` in a fresh
+/// temporary directory; `arguments` adds the input and output paths to `command`. Returns the
+/// output's SPIR-V words, or the compiler's log naming the input file.
+fn run_compiler(
+    mut command: Command,
+    source: &str,
+    extension: &str,
+    arguments: impl FnOnce(&mut Command, &Path, &Path),
+) -> Result<Vec<u32>, CompileError> {
+    static COUNTER: AtomicUsize = AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "shader-proptest-{}-{}",
+        std::process::id(),
+        COUNTER.fetch_add(1, Ordering::Relaxed)
+    ));
+    std::fs::create_dir_all(&dir)
+        .map_err(|e| CompileError::NotRun(format!("creating {}: {e}", dir.display())))?;
+    let (input, output) = (dir.join(format!("shader.{extension}")), dir.join("shader.spv"));
+    let written = std::fs::write(&input, source);
+    let program = command.get_program().to_string_lossy().into_owned();
+    let result = written
+        .map_err(|e| CompileError::NotRun(format!("writing {}: {e}", input.display())))
+        .and_then(|()| {
+            arguments(&mut command, &input, &output);
+            command
+                .output()
+                .map_err(|e| CompileError::NotRun(format!("cannot run {program}: {e}")))
+        });
     let bytes = std::fs::read(&output);
-    let _ = std::fs::remove_file(&input);
-    let _ = std::fs::remove_file(&output);
-    let result = result.map_err(|e| CompileError::NotRun(format!("cannot run glslangValidator: {e}")))?;
+    let _ = std::fs::remove_dir_all(&dir);
+    let result = result?;
     if !result.status.success() {
         return Err(CompileError::Failed {
             log: format!(
@@ -193,7 +299,7 @@ pub fn compile_glsl(
             source_path: input.display().to_string(),
         });
     }
-    let bytes = bytes.map_err(|e| CompileError::NotRun(format!("reading glslang's output: {e}")))?;
+    let bytes = bytes.map_err(|e| CompileError::NotRun(format!("reading {program}'s output: {e}")))?;
     Ok(bytes
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))

@@ -3,7 +3,13 @@
 //! The kernel reads each case's arguments from a word array (binding 0), calls the function, and
 //! writes the result's words to a second array (binding 1). The [`Shader`]'s source comes first:
 //! WGSL kernels are the module text followed by the wrapper; GLSL kernels put the source (for
-//! example an `#include`) after `#version 460`, exactly as users do.
+//! example an `#include`) after `#version 460`, exactly as users do; Slang kernels start with the
+//! source (for example an `import`) and declare the buffers as structured buffers.
+//!
+//! Matrices cross as their columns, one after the other (glam's order). GLSL and WGSL constructors
+//! take a matrix column by column and `m[c]` is column c; Slang's take it row by row and `m[r]` is
+//! row r, so Slang kernels build a matrix from its elements in row order and store
+//! `transpose(m)[c]`.
 
 use crate::compile::Language;
 use crate::layout::GlslPacking;
@@ -79,13 +85,41 @@ void main() {{
             source = shader.source(),
             result_type = syntax.type_name(result),
         ),
+        Language::Slang => format!(
+            "{source}
+
+[[vk::binding(0, 0)]] StructuredBuffer<uint> kernel_inputs;
+[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
+
+float kernel_f32(uint word) {{
+    return asfloat(kernel_inputs[word]);
+}}
+
+[shader(\"compute\")]
+[numthreads({WORKGROUP_SIZE}, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {{
+    uint output_words;
+    uint output_stride;
+    kernel_outputs.GetDimensions(output_words, output_stride);
+    if (id.x >= output_words / {out_words}u) {{
+        return;
+    }}
+    uint i = id.x * {in_words}u;
+    uint o = id.x * {out_words}u;
+    {result_type} result = {call};
+{stores}}}
+",
+            source = shader.source(),
+            result_type = syntax.type_name(result),
+        ),
     }
 }
 
 /// The source of an echo kernel for the struct `ty` declared by `shader`: invocation `i` reads
 /// element `i` of a storage buffer of `ty` (binding 0) and the push-constant block (a `ty`), and
 /// writes every field of both, by name and in declaration order, as words to binding 1 (the
-/// element first, then the push constants). GLSL blocks use `packing`; WGSL has its own rules.
+/// element first, then the push constants). GLSL blocks and Slang buffers use `packing`; WGSL has
+/// its own rules.
 pub fn echo_kernel_source(shader: &Shader, packing: GlslPacking, ty: &'static StructType) -> String {
     let syntax = Syntax::of(shader.language());
     let words = ShaderType::Struct(ty).words();
@@ -136,6 +170,30 @@ void main() {{
             source = shader.source(),
             packing = packing.qualifier(),
         ),
+        Language::Slang => format!(
+            "{source}
+
+[[vk::binding(0, 0)]] StructuredBuffer<{name}, {layout}> echo_values;
+[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
+[[vk::push_constant]] ConstantBuffer<{name}, {layout}> echo_push;
+
+[shader(\"compute\")]
+[numthreads({WORKGROUP_SIZE}, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {{
+    uint values;
+    uint value_stride;
+    echo_values.GetDimensions(values, value_stride);
+    if (id.x >= values) {{
+        return;
+    }}
+    uint o = id.x * {out_words}u;
+    {name} stored = echo_values[id.x];
+    {name} pushed = echo_push;
+{stores}}}
+",
+            source = shader.source(),
+            layout = packing.slang_layout(),
+        ),
     }
 }
 
@@ -150,22 +208,23 @@ impl Syntax {
     }
 
     fn type_name(&self, ty: ShaderType) -> &'static str {
-        let (wgsl, glsl) = match ty {
-            ShaderType::F32 => ("f32", "float"),
-            ShaderType::U32 => ("u32", "uint"),
-            ShaderType::I32 => ("i32", "int"),
-            ShaderType::Bool => ("bool", "bool"),
-            ShaderType::Vec2 => ("vec2<f32>", "vec2"),
-            ShaderType::Vec3 => ("vec3<f32>", "vec3"),
-            ShaderType::Vec4 => ("vec4<f32>", "vec4"),
-            ShaderType::Mat2 => ("mat2x2<f32>", "mat2"),
-            ShaderType::Mat3 => ("mat3x3<f32>", "mat3"),
-            ShaderType::Mat4 => ("mat4x4<f32>", "mat4"),
-            ShaderType::Struct(s) => (s.name, s.name),
+        let (wgsl, glsl, slang) = match ty {
+            ShaderType::F32 => ("f32", "float", "float"),
+            ShaderType::U32 => ("u32", "uint", "uint"),
+            ShaderType::I32 => ("i32", "int", "int"),
+            ShaderType::Bool => ("bool", "bool", "bool"),
+            ShaderType::Vec2 => ("vec2<f32>", "vec2", "float2"),
+            ShaderType::Vec3 => ("vec3<f32>", "vec3", "float3"),
+            ShaderType::Vec4 => ("vec4<f32>", "vec4", "float4"),
+            ShaderType::Mat2 => ("mat2x2<f32>", "mat2", "float2x2"),
+            ShaderType::Mat3 => ("mat3x3<f32>", "mat3", "float3x3"),
+            ShaderType::Mat4 => ("mat4x4<f32>", "mat4", "float4x4"),
+            ShaderType::Struct(s) => (s.name, s.name, s.name),
         };
         match self.language {
             Language::Wgsl => wgsl,
             Language::Glsl => glsl,
+            Language::Slang => slang,
         }
     }
 
@@ -181,10 +240,10 @@ impl Syntax {
             ShaderType::U32 => format!("kernel_inputs[i + {}u]", next()),
             ShaderType::I32 => {
                 let word = format!("kernel_inputs[i + {}u]", next());
-                if self.language == Language::Wgsl {
-                    format!("bitcast<i32>({word})")
-                } else {
-                    format!("int({word})")
+                match self.language {
+                    Language::Wgsl => format!("bitcast<i32>({word})"),
+                    Language::Glsl => format!("int({word})"),
+                    Language::Slang => format!("asint({word})"),
                 }
             }
             ShaderType::Bool => format!("(kernel_inputs[i + {}u] != 0u)", next()),
@@ -194,8 +253,11 @@ impl Syntax {
             | ShaderType::Mat2
             | ShaderType::Mat3
             | ShaderType::Mat4 => {
-                let floats: Vec<String> = (0..ty.words())
-                    .map(|_| format!("kernel_f32(i + {}u)", next()))
+                let first = *offset;
+                *offset += ty.words();
+                let floats: Vec<String> = self
+                    .constructor_words(ty)
+                    .map(|word| format!("kernel_f32(i + {}u)", first + word))
                     .collect();
                 format!("{}({})", self.type_name(ty), floats.join(", "))
             }
@@ -210,29 +272,39 @@ impl Syntax {
         }
     }
 
+    /// The input words, relative to a value's first, in the order the type's constructor takes its
+    /// components: word order, except for Slang matrices, whose element (r, c) is word c n + r.
+    fn constructor_words(&self, ty: ShaderType) -> impl Iterator<Item = usize> {
+        let words = ty.words();
+        let columns = match (self.language, ty) {
+            (Language::Slang, ShaderType::Mat2 | ShaderType::Mat3 | ShaderType::Mat4) => words.isqrt(),
+            _ => 1,
+        };
+        (0..words).map(move |index| (index % columns) * columns + index / columns)
+    }
+
     /// Statements writing `expr` of type `ty` to output words `o + offset..`; advances `offset`.
     fn store(&self, ty: ShaderType, expr: &str, offset: &mut usize, out: &mut String) {
-        let wgsl = self.language == Language::Wgsl;
+        let language = self.language;
         let mut word = |value: String| {
             writeln!(out, "    kernel_outputs[o + {}u] = {value};", *offset).expect("writing to a String");
             *offset += 1;
         };
         match ty {
-            ShaderType::F32 => word(if wgsl {
-                format!("bitcast<u32>({expr})")
-            } else {
-                format!("floatBitsToUint({expr})")
+            ShaderType::F32 => word(match language {
+                Language::Wgsl => format!("bitcast<u32>({expr})"),
+                Language::Glsl => format!("floatBitsToUint({expr})"),
+                Language::Slang => format!("asuint({expr})"),
             }),
             ShaderType::U32 => word(expr.to_string()),
-            ShaderType::I32 => word(if wgsl {
-                format!("bitcast<u32>({expr})")
-            } else {
-                format!("uint({expr})")
+            ShaderType::I32 => word(match language {
+                Language::Wgsl => format!("bitcast<u32>({expr})"),
+                Language::Glsl => format!("uint({expr})"),
+                Language::Slang => format!("asuint({expr})"),
             }),
-            ShaderType::Bool => word(if wgsl {
-                format!("select(0u, 1u, {expr})")
-            } else {
-                format!("({expr} ? 1u : 0u)")
+            ShaderType::Bool => word(match language {
+                Language::Wgsl => format!("select(0u, 1u, {expr})"),
+                Language::Glsl | Language::Slang => format!("({expr} ? 1u : 0u)"),
             }),
             ShaderType::Vec2 | ShaderType::Vec3 | ShaderType::Vec4 => {
                 for component in ["x", "y", "z", "w"].iter().take(ty.words()) {
@@ -260,7 +332,11 @@ impl Syntax {
         out: &mut String,
     ) {
         for index in 0..columns {
-            self.store(column, &format!("{expr}[{index}]"), offset, out);
+            let column_expr = match self.language {
+                Language::Wgsl | Language::Glsl => format!("{expr}[{index}]"),
+                Language::Slang => format!("transpose({expr})[{index}]"),
+            };
+            self.store(column, &column_expr, offset, out);
         }
     }
 }

@@ -2,9 +2,10 @@
 //!
 //! The Rust side is described by [`rust_layout!`](crate::rust_layout) (offsets and sizes from
 //! `offset_of!` and `size_of`). The shader side comes from naga's layout of a WGSL source
-//! ([`wgsl_layout`]) or from the `Offset` and `ArrayStride` decorations glslang emits for a GLSL
-//! struct in a std430 or scalar block ([`glsl_layout`]). [`compare`] returns a field-by-field
-//! [`LayoutTable`], or an error that names the struct and the field.
+//! ([`wgsl_layout`]) or from the `Offset` and `ArrayStride` decorations of a struct in a storage
+//! buffer under std430 or scalar rules, in the SPIR-V glslang writes for GLSL ([`glsl_layout`]) or
+//! slangc writes for Slang ([`slang_layout`]). [`compare`] returns a field-by-field [`LayoutTable`],
+//! or an error that names the struct and the field.
 //!
 //! ```no_run
 //! use shader_proptest::{layout, rust_layout};
@@ -24,7 +25,7 @@
 //! # Ok::<(), layout::LayoutError>(())
 //! ```
 
-use crate::compile::{compile_glsl, CompileError, Stage, Target};
+use crate::compile::{compile_glsl, compile_slang, CompileError, Stage, Target};
 use std::fmt;
 use std::path::Path;
 
@@ -52,7 +53,8 @@ pub struct StructLayout {
     pub fields: Vec<FieldLayout>,
 }
 
-/// GLSL block packing rules.
+/// GLSL block packing rules; Slang's buffers take the same three (`Std140DataLayout`,
+/// `Std430DataLayout`, `ScalarDataLayout`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum GlslPacking {
     /// `std140`, the default of uniform blocks.
@@ -70,6 +72,15 @@ impl GlslPacking {
             GlslPacking::Std140 => "std140",
             GlslPacking::Std430 => "std430",
             GlslPacking::Scalar => "scalar",
+        }
+    }
+
+    /// Slang's data layout type: `Std140DataLayout`, `Std430DataLayout` or `ScalarDataLayout`.
+    pub fn slang_layout(self) -> &'static str {
+        match self {
+            GlslPacking::Std140 => "Std140DataLayout",
+            GlslPacking::Std430 => "Std430DataLayout",
+            GlslPacking::Scalar => "ScalarDataLayout",
         }
     }
 }
@@ -185,8 +196,8 @@ impl fmt::Display for LayoutTable {
 }
 
 /// Renders a Rust layout next to several shader layouts of the same struct, one column each
-/// (`offset/size` per field, then the struct size). Fields follow the Rust layout's order; a field
-/// a column lacks shows as `-`.
+/// (`offset/size` per field, then the struct size), each at least as wide as its label. Fields
+/// follow the Rust layout's order; a field a column lacks shows as `-`.
 pub fn render_columns(rust: &StructLayout, columns: &[(&str, &StructLayout)]) -> String {
     let cell = |layout: &StructLayout, field: &str| {
         layout
@@ -195,20 +206,21 @@ pub fn render_columns(rust: &StructLayout, columns: &[(&str, &StructLayout)]) ->
             .find(|f| f.name == field)
             .map_or_else(|| String::from("-"), |f| format!("{}/{}", f.offset, f.size))
     };
+    let width = |label: &str| label.len().max(9);
     let mut out = format!("{:<26} {:>9}", rust.name, "Rust");
     columns
         .iter()
-        .for_each(|(label, _)| out.push_str(&format!(" {label:>9}")));
+        .for_each(|(label, _)| out.push_str(&format!(" {label:>w$}", w = width(label))));
     for field in &rust.fields {
         out.push_str(&format!("\n  {:<24} {:>9}", field.name, cell(rust, &field.name)));
-        columns
-            .iter()
-            .for_each(|(_, layout)| out.push_str(&format!(" {:>9}", cell(layout, &field.name))));
+        columns.iter().for_each(|(label, layout)| {
+            out.push_str(&format!(" {:>w$}", cell(layout, &field.name), w = width(label)))
+        });
     }
     out.push_str(&format!("\n  {:<24} {:>9}", "(size)", rust.size));
     columns
         .iter()
-        .for_each(|(_, layout)| out.push_str(&format!(" {:>9}", layout.size)));
+        .for_each(|(label, layout)| out.push_str(&format!(" {:>w$}", layout.size, w = width(label))));
     out
 }
 
@@ -336,6 +348,54 @@ pub fn glsl_layout(
     spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
 }
 
+/// The layout slangc gives the Slang struct `name` (declared in `source`, which may `import` or
+/// `#include` modules from `search_dirs`) as the element of a `StructuredBuffer` with `packing`'s
+/// data layout: field offsets from the SPIR-V `Offset` decorations, the size from the array's
+/// `ArrayStride`. The struct is found as the element type of the probe buffer, since slangc names
+/// a struct in SPIR-V after its layout (`RfRayCone_std430`, `RfRayCone_natural` under scalar
+/// rules). Needs `slangc` on the `PATH`.
+pub fn slang_layout(
+    source: &str,
+    name: &str,
+    packing: GlslPacking,
+    search_dirs: &[&Path],
+) -> Result<StructLayout, LayoutError> {
+    let probe = format!(
+        "{source}
+[[vk::binding(0, 0)]] RWStructuredBuffer<{name}, {}> layout_probe;
+         [shader(\"compute\")]
+[numthreads(1, 1, 1)]
+         void main() {{ layout_probe[0] = layout_probe[1]; }}
+",
+        packing.slang_layout()
+    );
+    // The probe buffer is on the line after the source; errors there alone mean `name` is not a
+    // type the source declares.
+    let probe_line = source.lines().count() + 1;
+    let spirv =
+        compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs).map_err(
+            |error| match error {
+                CompileError::NotRun(message) => LayoutError::Source(message),
+                CompileError::Failed { log, source_path } => {
+                    let at_probe = format!("{source_path}:{probe_line}:");
+                    let errors: Vec<&str> = log
+                        .lines()
+                        .filter(|l| l.trim_start().starts_with("--> "))
+                        .collect();
+                    if !errors.is_empty() && errors.iter().all(|l| l.contains(&at_probe)) {
+                        LayoutError::StructNotFound(name.to_string())
+                    } else {
+                        LayoutError::Source(log)
+                    }
+                }
+            },
+        )?;
+    let mut layout = spirv::buffer_element_layout(&spirv, "layout_probe")
+        .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
+    layout.name = name.to_string();
+    Ok(layout)
+}
+
 /// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.
 mod spirv {
     use super::{FieldLayout, StructLayout};
@@ -350,7 +410,9 @@ mod spirv {
     const OP_TYPE_ARRAY: u32 = 28;
     const OP_TYPE_RUNTIME_ARRAY: u32 = 29;
     const OP_TYPE_STRUCT: u32 = 30;
+    const OP_TYPE_POINTER: u32 = 32;
     const OP_CONSTANT: u32 = 43;
+    const OP_VARIABLE: u32 = 59;
     const OP_DECORATE: u32 = 71;
     const OP_MEMBER_DECORATE: u32 = 72;
     const DECORATION_ARRAY_STRIDE: u32 = 6;
@@ -366,6 +428,10 @@ mod spirv {
         array_strides: HashMap<u32, u32>,
         types: HashMap<u32, Vec<u32>>,
         constants: HashMap<u32, u32>,
+        /// Pointer type to pointee type.
+        pointees: HashMap<u32, u32>,
+        /// Variable to its pointer type.
+        variables: HashMap<u32, u32>,
     }
 
     fn string(words: &[u32]) -> String {
@@ -401,6 +467,12 @@ mod spirv {
                 }
                 (OP_CONSTANT, [_, id, value, ..]) => {
                     module.constants.insert(*id, *value);
+                }
+                (OP_TYPE_POINTER, [id, _, pointee]) => {
+                    module.pointees.insert(*id, *pointee);
+                }
+                (OP_VARIABLE, [pointer, id, ..]) => {
+                    module.variables.insert(*id, *pointer);
                 }
                 (
                     OP_TYPE_INT
@@ -455,29 +527,57 @@ mod spirv {
     /// The layout of the struct `name` used as a runtime-array element.
     pub fn struct_layout(words: &[u32], name: &str) -> Option<StructLayout> {
         let module = parse(words);
-        let (id, members) = module.types.iter().find_map(|(id, ty)| match ty.as_slice() {
-            [OP_TYPE_STRUCT, _, members @ ..] if module.names.get(id).map(String::as_str) == Some(name) => {
-                Some((*id, members.to_vec()))
-            }
+        let id = module.types.iter().find_map(|(id, ty)| match ty.as_slice() {
+            [OP_TYPE_STRUCT, ..] if module.names.get(id).map(String::as_str) == Some(name) => Some(*id),
             _ => None,
         })?;
-        let stride = module.types.iter().find_map(|(array, ty)| match ty.as_slice() {
-            [OP_TYPE_RUNTIME_ARRAY, _, element] if *element == id => module.array_strides.get(array).copied(),
-            _ => None,
+        module.element_layout(id)
+    }
+
+    /// The layout of the element struct of the storage buffer held by the variable `variable`: a
+    /// block whose first member is a runtime array of that struct. The layout is named as the
+    /// SPIR-V names the struct.
+    pub fn buffer_element_layout(words: &[u32], variable: &str) -> Option<StructLayout> {
+        let module = parse(words);
+        let pointer = module.variables.iter().find_map(|(id, pointer)| {
+            (module.names.get(id).map(String::as_str) == Some(variable)).then_some(pointer)
         })?;
-        let fields = (0..members.len() as u32)
-            .map(|m| FieldLayout {
-                name: module.member_names.get(&(id, m)).cloned().unwrap_or_default(),
-                offset: module.offsets.get(&(id, m)).copied().unwrap_or(0),
-                size: module.member_size(id, m, &members),
+        let block = module.pointees.get(pointer)?;
+        let [OP_TYPE_STRUCT, _, array, ..] = module.types.get(block)?.as_slice() else {
+            return None;
+        };
+        let [OP_TYPE_RUNTIME_ARRAY, _, element] = module.types.get(array)?.as_slice() else {
+            return None;
+        };
+        module.element_layout(*element)
+    }
+
+    impl Module {
+        /// The layout of the struct type `id`, sized by the stride of a runtime array of it.
+        fn element_layout(&self, id: u32) -> Option<StructLayout> {
+            let [OP_TYPE_STRUCT, _, members @ ..] = self.types.get(&id)?.as_slice() else {
+                return None;
+            };
+            let stride = self.types.iter().find_map(|(array, ty)| match ty.as_slice() {
+                [OP_TYPE_RUNTIME_ARRAY, _, element] if *element == id => {
+                    self.array_strides.get(array).copied()
+                }
+                _ => None,
+            })?;
+            let fields = (0..members.len() as u32)
+                .map(|m| FieldLayout {
+                    name: self.member_names.get(&(id, m)).cloned().unwrap_or_default(),
+                    offset: self.offsets.get(&(id, m)).copied().unwrap_or(0),
+                    size: self.member_size(id, m, members),
+                })
+                .collect();
+            Some(StructLayout {
+                name: self.names.get(&id).cloned().unwrap_or_default(),
+                size: stride,
+                align: 0,
+                fields,
             })
-            .collect();
-        Some(StructLayout {
-            name: name.to_string(),
-            size: stride,
-            align: 0,
-            fields,
-        })
+        }
     }
 }
 

@@ -1,8 +1,13 @@
 //! Where the functions under test come from: a language, the source text in front of the generated
 //! kernel, and what compiling and running it needs.
 
-use crate::compile::{base_capabilities, compile_glsl, compile_wgsl, CompileError, Language, Stage, Target};
+use crate::compile::{
+    base_capabilities, compile_glsl, compile_slang, compile_wgsl, CompileError, Language, Stage, Target,
+};
+use crate::layout::{glsl_layout, slang_layout, wgsl_layout, GlslPacking, LayoutError, StructLayout};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// An optional device feature a shader or a program may need.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -34,15 +39,17 @@ impl Feature {
 }
 
 /// The functions under test: a language and the source text placed in front of each generated
-/// kernel (a WGSL module, or GLSL such as `#include "colour.glsl"`), with the GLSL include
-/// directories, the naga capabilities WGSL may use, and the device features the code needs.
+/// kernel (a WGSL module, GLSL such as `#include "colour.glsl"`, or Slang such as `import colour;`),
+/// with the GLSL include directories or Slang search paths, the naga capabilities WGSL may use, and
+/// the device features the code needs.
 ///
 /// ```
 /// use shader_proptest::Shader;
 ///
 /// let wgsl = Shader::wgsl("fn luminance(c: vec3<f32>) -> f32 { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }");
 /// let glsl = Shader::glsl("#include \"colour.glsl\"").include_dir("shaders/glsl");
-/// # let _ = (wgsl, glsl);
+/// let slang = Shader::slang("import colour;").include_dir("shaders/slang");
+/// # let _ = (wgsl, glsl, slang);
 /// ```
 #[derive(Clone, Debug)]
 pub struct Shader {
@@ -64,6 +71,12 @@ impl Shader {
         Shader::new(Language::Glsl, source.into())
     }
 
+    /// Slang source declaring the functions, or bringing them in (`import colour;`,
+    /// `#include "colour.slang"`); no entry point. Functions of an imported module must be `public`.
+    pub fn slang(source: impl Into<String>) -> Shader {
+        Shader::new(Language::Slang, source.into())
+    }
+
     fn new(language: Language, source: String) -> Shader {
         Shader {
             language,
@@ -74,7 +87,8 @@ impl Shader {
         }
     }
 
-    /// Adds a directory to the GLSL include path.
+    /// Adds a directory to the GLSL include path, or to the Slang search path (`import` and
+    /// `#include`).
     pub fn include_dir(mut self, dir: impl AsRef<Path>) -> Shader {
         self.include_dirs.push(dir.as_ref().to_path_buf());
         self
@@ -105,7 +119,7 @@ impl Shader {
         &self.source
     }
 
-    /// The GLSL include directories.
+    /// The GLSL include directories or Slang search paths.
     pub fn include_dirs(&self) -> Vec<&Path> {
         self.include_dirs.iter().map(PathBuf::as_path).collect()
     }
@@ -116,8 +130,29 @@ impl Shader {
     }
 
     /// Compiles a whole compute shader written against this one (its source in front, as
-    /// [`crate::kernel_source`] writes) to SPIR-V for Vulkan 1.1.
+    /// [`crate::kernel_source`] writes) to SPIR-V for Vulkan 1.1. A kernel this process compiled
+    /// before, with the same language, capabilities and include directories, is not compiled again:
+    /// running slangc costs about a second, and an echo or a shrinking run compiles the same
+    /// kernel many times.
     pub fn compile_kernel(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
+        static COMPILED: OnceLock<Mutex<HashMap<String, Vec<u32>>>> = OnceLock::new();
+        let key = format!(
+            "{:?} {:?} {:?}\n{kernel}",
+            self.language, self.capabilities, self.include_dirs
+        );
+        let compiled = COMPILED.get_or_init(Mutex::default);
+        if let Some(spirv) = compiled.lock().unwrap_or_else(PoisonError::into_inner).get(&key) {
+            return Ok(spirv.clone());
+        }
+        let spirv = self.compile_uncached(kernel)?;
+        compiled
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .insert(key, spirv.clone());
+        Ok(spirv)
+    }
+
+    fn compile_uncached(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
         match self.language {
             Language::Wgsl => compile_wgsl(
                 kernel,
@@ -126,6 +161,18 @@ impl Shader {
                 Target::Vulkan1_1,
             ),
             Language::Glsl => compile_glsl(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
+            Language::Slang => compile_slang(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
+        }
+    }
+
+    /// The layout of the struct `name` this source declares, as a storage buffer holds it: naga's
+    /// WGSL layout, or the element of a `std430` buffer compiled by glslang or slangc.
+    pub fn struct_layout(&self, name: &str) -> Result<StructLayout, LayoutError> {
+        let dirs = self.include_dirs();
+        match self.language {
+            Language::Wgsl => wgsl_layout(&self.source, name),
+            Language::Glsl => glsl_layout(&self.source, name, GlslPacking::Std430, &dirs),
+            Language::Slang => slang_layout(&self.source, name, GlslPacking::Std430, &dirs),
         }
     }
 }

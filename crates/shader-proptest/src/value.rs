@@ -15,7 +15,7 @@ use crate::layout::StructLayout;
 use glam::{Mat2, Mat3, Mat4, Vec2, Vec3, Vec4};
 use std::fmt::Debug;
 
-/// A shader-side type: enough to load it from words and store it as words in WGSL and GLSL.
+/// A shader-side type: enough to load it from words and store it as words in WGSL, GLSL and Slang.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ShaderType {
     /// `f32` / `float`.

@@ -1,4 +1,4 @@
-//! The layout reader: what it reads from naga and glslang, and the errors it gives.
+//! The layout reader: what it reads from naga, glslang and slangc, and the errors it gives.
 
 use shader_proptest::layout::{self, GlslPacking, LayoutError};
 use shader_proptest::rust_layout;
@@ -17,6 +17,34 @@ fn glsl_packings_differ_where_the_rules_differ() {
     assert_eq!(offset_of_b(GlslPacking::Scalar), 4);
     let wgsl = layout::wgsl_layout("struct Probe { a: f32, b: vec3<f32> }", "Probe").expect("parses");
     assert_eq!((wgsl.fields[1].offset, wgsl.size, wgsl.align), (16, 32, 16));
+}
+
+/// The Slang reader sees the same difference between Slang's std430 and scalar buffer layouts,
+/// for a struct declared in the source and for one a nested struct holds.
+#[test]
+fn slang_layouts_differ_where_the_rules_differ() {
+    let source = "struct Probe { float a; float3 b; };\nstruct Outer { float c; Probe probe; };";
+    let layout = |name, packing| layout::slang_layout(source, name, packing, &[]).expect("compiles");
+    let std430 = layout("Probe", GlslPacking::Std430);
+    let scalar = layout("Probe", GlslPacking::Scalar);
+    assert_eq!(
+        (std430.name.as_str(), std430.fields[1].offset, std430.size),
+        ("Probe", 16, 32)
+    );
+    assert_eq!((scalar.fields[1].offset, scalar.size), (4, 16));
+    let outer = layout("Outer", GlslPacking::Std430);
+    assert_eq!(
+        (outer.fields[1].name.as_str(), outer.fields[1].offset, outer.size),
+        ("probe", 16, 48)
+    );
+    assert_eq!(
+        layout::slang_layout(source, "Missing", GlslPacking::Std430, &[]),
+        Err(LayoutError::StructNotFound("Missing".into()))
+    );
+    assert!(matches!(
+        layout::slang_layout("struct Probe { float a }", "Probe", GlslPacking::Std430, &[]),
+        Err(LayoutError::Source(_))
+    ));
 }
 
 #[repr(C)]

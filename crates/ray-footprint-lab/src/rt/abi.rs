@@ -1,6 +1,7 @@
-//! The structs the renderer's shaders share with Rust (declared in `shaders/rt_abi.glsl` and
-//! `shaders/ray_query.wgsl`, not by a library module), as `#[repr(C)]` bytemuck `Pod` mirrors; the
-//! renderer's per-pixel test compares their layouts in Rust, WGSL, std430 and scalar.
+//! The structs the renderer's shaders share with Rust (declared in `shaders/rt_abi.glsl`,
+//! `shaders/rt_abi.slang` and `shaders/ray_query.wgsl`, not by a library module), as `#[repr(C)]`
+//! bytemuck `Pod` mirrors; the renderer's layout test compares them in Rust, WGSL, and std430 and
+//! scalar in GLSL and in Slang.
 
 use bytemuck::{Pod, Zeroable};
 use glam::Vec3;

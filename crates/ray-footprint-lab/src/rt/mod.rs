@@ -1,11 +1,11 @@
-//! Ray tracing with the modules: acceleration structures, a GLSL ray-tracing pipeline and, where
-//! the device has ray queries, a WGSL ray-query compute shader, on a shader-proptest device with
-//! the validation layer on.
+//! Ray tracing with the modules: acceleration structures, a ray-tracing pipeline (GLSL, with a GLSL
+//! or a Slang closest-hit shader) and, where the device has ray queries, a WGSL ray-query compute
+//! shader, on a shader-proptest device with the validation layer on.
 //!
 //! A [`Renderer`] uploads a [`Scene`] built in code (a large textured ground plane, a mirror sphere,
 //! a dense torus), builds one bottom-level acceleration structure per mesh and a top-level one,
 //! makes a checker texture and a mip-colour texture with full mip chains, a trilinear sampler with
-//! `maxLod = VK_LOD_CLAMP_NONE` (anisotropic where the device allows), and two pipelines:
+//! `maxLod = VK_LOD_CLAMP_NONE` (anisotropic where the device allows), and its pipelines:
 //!
 //! - GLSL (`shaders/raygen.rgen`, `miss.rmiss`, `closest_hit.rchit`, compiled with glslang with the
 //!   library's GLSL directory on the include path): the shaders `#include` `ray_cone.glsl`,
@@ -16,12 +16,17 @@
 //!   ray differentials, the re-intersected barycentric offsets and the wireframe coverage, and it
 //!   shades in the chosen [`Mode`] with the functions of `rt_common.glsl` that the colour-only
 //!   pipelines ([`ColourPipeline`]) share;
+//! - Slang (`shaders/closest_hit.slang`, compiled with slangc with the library's Slang directory
+//!   on the search path): the recording closest-hit stage written in Slang, `import`-ing `ray_cone`,
+//!   `ray_diff` and `wireframe`, with the same bindings, push constants and payload and the same
+//!   measurements and shading, in place of the GLSL one in the recording pipeline with the GLSL ray
+//!   generation and miss ([`Renderer::with_closest_hit`] and [`ClosestHit::Slang`]);
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
 //!   with a ray query over the same acceleration structures and measuring the same values with
 //!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.
 //!
-//! Both record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so the
-//! Rust mirror can recompute every value from the same hit data.
+//! All three record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so
+//! the Rust mirror can recompute every value from the same hit data.
 //!
 //! ```no_run
 //! use ray_footprint::wireframe::WireframeSettings;
@@ -49,7 +54,7 @@ mod scene;
 mod texture;
 
 pub use mode::{Mode, Payload};
-pub use pipeline::{ray_query_source, SHADER_DIR};
+pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
 pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex,

@@ -2,7 +2,8 @@
 
 use std::fmt;
 
-/// A render mode. The discriminant is the `RT_MODE_*` constant of `shaders/rt_common.glsl`.
+/// A render mode. The discriminant is the `RT_MODE_*` constant of `shaders/rt_common.glsl` (and of
+/// `shaders/closest_hit.slang`).
 ///
 /// Every mode traces the same rays and records the same per-pixel values
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a

@@ -1,11 +1,12 @@
-//! Shaders and pipelines: the GLSL ray-tracing pipeline with its shader binding table, and the
+//! Shaders and pipelines: the ray-tracing pipelines with their shader binding tables (the
+//! recording shaders, with a GLSL or a Slang closest hit, and the colour-only shaders), and the
 //! WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
 
 use super::abi::RtPushConstants;
 use ash::vk;
-use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR};
+use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use shader_proptest::compile::{
-    base_capabilities, compile_glsl as glslang, compile_wgsl as naga, Stage, Target,
+    base_capabilities, compile_glsl as glslang, compile_slang as slangc, compile_wgsl as naga, Stage, Target,
 };
 use shader_proptest::{vulkan, Buffer, Error, Feature, Object, Owner};
 use std::path::Path;
@@ -104,6 +105,25 @@ pub(super) fn push(
     }
 }
 
+/// The closest-hit shader of the recording pipeline; its ray generation and miss are GLSL.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ClosestHit {
+    /// `closest_hit.rchit`, compiled by glslang, `#include`-ing the GLSL modules.
+    Glsl,
+    /// `closest_hit.slang`, compiled by slangc, `import`-ing the Slang modules.
+    Slang,
+}
+
+impl ClosestHit {
+    /// The closest-hit shader's file in [`SHADER_DIR`].
+    fn file(self) -> &'static str {
+        match self {
+            ClosestHit::Glsl => "closest_hit.rchit",
+            ClosestHit::Slang => "closest_hit.slang",
+        }
+    }
+}
+
 /// A ray-tracing pipeline and its shader binding table regions (ray generation, miss, hit,
 /// callable).
 pub(super) struct RayTracing {
@@ -111,9 +131,6 @@ pub(super) struct RayTracing {
     pub regions: [vk::StridedDeviceAddressRegionKHR; 4],
     pub loader: ash::khr::ray_tracing_pipeline::Device,
 }
-
-/// The stages of the recording shaders: ray generation, miss, closest hit.
-const RECORD_STAGES: [&str; 3] = ["raygen.rgen", "miss.rmiss", "closest_hit.rchit"];
 
 /// The stages of the colour-only shaders, compiled once per mode.
 pub(super) const COLOUR_STAGES: [&str; 3] = [
@@ -129,10 +146,15 @@ const STAGES: [(Stage, vk::ShaderStageFlags); 3] = [
     (Stage::ClosestHit, vk::ShaderStageFlags::CLOSEST_HIT_KHR),
 ];
 
-/// The ray-generation, miss and closest-hit shaders of [`SHADER_DIR`] that record what they
+/// The ray-generation, miss and `closest_hit` shaders of [`SHADER_DIR`] that record what they
 /// measured, in one pipeline.
-pub(super) fn ray_tracing(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<RayTracing, Error> {
-    ray_tracing_pipeline(owner, layout, &compile_stages(RECORD_STAGES, &[])?)
+pub(super) fn ray_tracing(
+    owner: &mut Owner<'_>,
+    layout: vk::PipelineLayout,
+    closest_hit: ClosestHit,
+) -> Result<RayTracing, Error> {
+    let files = ["raygen.rgen", "miss.rmiss", closest_hit.file()];
+    ray_tracing_pipeline(owner, layout, &compile_stages(files, &[])?)
 }
 
 /// The ray-generation, miss and closest-hit `files` of [`SHADER_DIR`] compiled with `defines`
@@ -141,7 +163,7 @@ pub(super) fn compile_stages(files: [&str; 3], defines: &[(&str, String)]) -> Re
     files
         .iter()
         .zip(STAGES)
-        .map(|(file, (stage, _))| compile_glsl(&Path::new(SHADER_DIR).join(file), stage, defines))
+        .map(|(file, (stage, _))| compile_stage(&Path::new(SHADER_DIR).join(file), stage, defines))
         .collect()
 }
 
@@ -298,13 +320,28 @@ pub(super) fn ray_query(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Re
 }
 
 fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, Error> {
-    // SAFETY: valid SPIR-V words from glslang or naga.
+    // SAFETY: valid SPIR-V words from glslang, slangc or naga.
     unsafe {
         owner
             .device()
             .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(spirv), None)
     }
     .map_err(vulkan("vkCreateShaderModule"))
+}
+
+/// Compiles a ray-tracing stage by its file's language: Slang (`.slang`) with slangc, GLSL with
+/// glslang. Only GLSL stages take `defines`.
+fn compile_stage(path: &Path, stage: Stage, defines: &[(&str, String)]) -> Result<Vec<u32>, Error> {
+    if path.extension().is_some_and(|extension| extension == "slang") {
+        if !defines.is_empty() {
+            return Err(Error::Compile(format!(
+                "{}: defines are for GLSL stages",
+                path.display()
+            )));
+        }
+        return compile_slang(path, stage);
+    }
+    compile_glsl(path, stage, defines)
 }
 
 /// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.5), with the library's
@@ -335,6 +372,16 @@ fn with_defines(source: &str, defines: &[(&str, String)]) -> String {
         lines.splice(version + 1..version + 1, inserted);
     }
     lines.join("\n")
+}
+
+/// Compiles a Slang ray-tracing stage with slangc for Vulkan 1.2 (SPIR-V 1.5), with the library's
+/// Slang directory and [`SHADER_DIR`] on the search path.
+fn compile_slang(path: &Path, stage: Stage) -> Result<Vec<u32>, Error> {
+    let source =
+        std::fs::read_to_string(path).map_err(|e| Error::Compile(format!("{}: {e}", path.display())))?;
+    let search_dirs = [Path::new(SLANG_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    slangc(&source, stage, Target::Vulkan1_2, &search_dirs)
+        .map_err(|error| Error::Compile(format!("{}:\n{error}", path.display())))
 }
 
 /// Compiles the ray-query shader with naga: the library modules' capabilities plus ray queries

@@ -1,10 +1,11 @@
 //! The renderer: the scene's buffers, acceleration structures and textures on the device, and the
-//! two ways of tracing it (the GLSL ray-tracing pipeline and the WGSL ray-query compute shader).
+//! ways of tracing it (the recording ray-tracing pipeline, with the GLSL or the Slang closest-hit
+//! shader, the colour-only ray-tracing pipelines, and the WGSL ray-query compute shader).
 
 use super::abi::{RtPixelRecord, RtPushConstants, RtUniforms};
 use super::accel;
 use super::mode::Mode;
-use super::pipeline::{self, RayTracing, BINDINGS};
+use super::pipeline::{self, ClosestHit, RayTracing, BINDINGS};
 use super::scene::{Camera, Scene};
 use super::texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, TEXTURE_SIZE};
 use super::Error;
@@ -28,7 +29,8 @@ pub fn open_device() -> Result<Gpu, shader_proptest::Error> {
     Gpu::open(DEVICE_REQUEST)
 }
 
-/// One traced image: colours (GLSL path only) and what each pixel's primary hit measured.
+/// One traced image: colours (ray-tracing pipeline only) and what each pixel's primary hit
+/// measured.
 #[derive(Clone, Debug)]
 pub struct Frame {
     /// Width in pixels.
@@ -46,7 +48,7 @@ pub struct Frame {
 /// Which shaders trace a frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Path {
-    /// GLSL ray generation, miss and closest hit in a ray-tracing pipeline.
+    /// The recording ray-tracing pipeline.
     RayTracing,
     /// The WGSL ray-query compute shader.
     RayQuery,
@@ -66,6 +68,8 @@ pub struct Renderer<'g> {
     sampler: vk::Sampler,
     set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
+    /// The recording pipeline: GLSL ray generation and miss, and the closest hit the renderer was
+    /// made with.
     ray_tracing: RayTracing,
     /// The WGSL ray-query pipeline, where the device has ray queries.
     ray_query: Option<vk::Pipeline>,
@@ -74,16 +78,37 @@ pub struct Renderer<'g> {
 impl<'g> Renderer<'g> {
     /// Uploads `scene`, builds its acceleration structures, makes the textures (full mip chains:
     /// the [`checker`] of [`CHECKER_SQUARE`]-texel squares and the mip colours) and the trilinear
-    /// sampler, and compiles the GLSL ray-tracing pipeline and, where the device has ray queries,
-    /// the WGSL ray-query pipeline. `gpu` must come from [`open_device`].
+    /// sampler, and compiles the recording ray-tracing pipeline with the GLSL closest-hit shader
+    /// and, where the device has ray queries, the WGSL ray-query pipeline. `gpu` must come from
+    /// [`open_device`].
     pub fn new(gpu: &'g Gpu, scene: Scene) -> Result<Renderer<'g>, Error> {
         Renderer::with_texture(gpu, scene, checker(TEXTURE_SIZE, CHECKER_SQUARE))
+    }
+
+    /// [`Renderer::new`] with the closest-hit shader `closest_hit` in the recording pipeline.
+    pub fn with_closest_hit(
+        gpu: &'g Gpu,
+        scene: Scene,
+        closest_hit: ClosestHit,
+    ) -> Result<Renderer<'g>, Error> {
+        let texture = checker(TEXTURE_SIZE, CHECKER_SQUARE);
+        Renderer::build(gpu, scene, texture, closest_hit)
     }
 
     /// [`Renderer::new`] with `texture` on every textured mesh instead of the checker; the
     /// mip-colour texture takes its size. Fails with [`Error::InvalidTexture`] unless `texture`
     /// is square, a power of two wide, with every level down to 1 x 1.
     pub fn with_texture(gpu: &'g Gpu, scene: Scene, texture: MipChain) -> Result<Renderer<'g>, Error> {
+        Renderer::build(gpu, scene, texture, ClosestHit::Glsl)
+    }
+
+    /// A renderer of `scene` with `texture` and `closest_hit` (see [`Renderer::with_texture`]).
+    fn build(
+        gpu: &'g Gpu,
+        scene: Scene,
+        texture: MipChain,
+        closest_hit: ClosestHit,
+    ) -> Result<Renderer<'g>, Error> {
         texture.validate().map_err(Error::InvalidTexture)?;
         let mut owner = Owner::new(gpu);
         let input = vk::BufferUsageFlags::STORAGE_BUFFER
@@ -101,7 +126,7 @@ impl<'g> Renderer<'g> {
         let textures = [upload(texture)?, upload(mip_colours(texture_size))?];
         let sampler = sampler(&mut owner, anisotropy(gpu))?;
         let (set_layout, layout) = pipeline::layouts(&mut owner)?;
-        let ray_tracing = pipeline::ray_tracing(&mut owner, layout)?;
+        let ray_tracing = pipeline::ray_tracing(&mut owner, layout, closest_hit)?;
         let ray_query = if gpu.has(Feature::RayQuery) {
             Some(pipeline::ray_query(&mut owner, layout)?)
         } else {
@@ -146,7 +171,7 @@ impl<'g> Renderer<'g> {
         anisotropy(self.owner.gpu)
     }
 
-    /// Traces a frame with the GLSL ray-tracing pipeline: colours and records. Fails with
+    /// Traces a frame with the recording ray-tracing pipeline: colours and records. Fails with
     /// [`Error::FrameTooLarge`] above [`Renderer::max_pixels`].
     pub fn render(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, Error> {
         self.trace(push, uniforms, Path::RayTracing)

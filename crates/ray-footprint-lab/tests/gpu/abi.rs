@@ -46,7 +46,7 @@ fn struct_words(ty: &'static StructType) -> BoxedStrategy<Vec<u32>> {
 
 /// Writes random values of `T` from Rust as raw bytes into a storage buffer and a push-constant
 /// block; the kernel reads every field by name and writes them back in declaration order. The words
-/// must come back bit for bit, in WGSL, GLSL std430 and GLSL scalar.
+/// must come back bit for bit, in WGSL, GLSL std430 and scalar, and Slang std430 and scalar.
 fn echoes<T: Pod + Value>(module: Module) {
     let ShaderType::Struct(ty) = T::TYPE else {
         panic!("{:?} is not a struct", T::TYPE)
@@ -56,6 +56,8 @@ fn echoes<T: Pod + Value>(module: Module) {
         (Language::Wgsl, GlslPacking::Std430, "WGSL"),
         (Language::Glsl, GlslPacking::Std430, "GLSL std430"),
         (Language::Glsl, GlslPacking::Scalar, "GLSL scalar"),
+        (Language::Slang, GlslPacking::Std430, "Slang std430"),
+        (Language::Slang, GlslPacking::Scalar, "Slang scalar"),
     ];
     for (language, packing, label) in targets {
         let shader = module.shader(language);

@@ -1,4 +1,4 @@
-//! Every shader function agrees with its Rust mirror, in WGSL and in GLSL.
+//! Every shader function agrees with its Rust mirror, in WGSL, GLSL and Slang.
 //!
 //! Each test prints one line per function: cases checked, largest error, that error as a fraction
 //! of the function's tolerance, and the share of cases whose tolerance is vacuous.
@@ -41,6 +41,11 @@ fn ray_cone_wgsl() {
 #[test]
 fn ray_cone_glsl() {
     agree(Module::RayCone, Language::Glsl);
+}
+
+#[test]
+fn ray_cone_slang() {
+    agree(Module::RayCone, Language::Slang);
 }
 
 /// The harness catches a mirror that is off by one part in a million, and shrinks the case.
@@ -86,6 +91,11 @@ fn wireframe_glsl() {
 }
 
 #[test]
+fn wireframe_slang() {
+    agree(Module::Wireframe, Language::Slang);
+}
+
+#[test]
 fn ray_diff_wgsl() {
     agree(Module::RayDiff, Language::Wgsl);
 }
@@ -96,6 +106,11 @@ fn ray_diff_glsl() {
 }
 
 #[test]
+fn ray_diff_slang() {
+    agree(Module::RayDiff, Language::Slang);
+}
+
+#[test]
 fn ray_diff_f64_wgsl() {
     agree(Module::RayDiffF64, Language::Wgsl);
 }
@@ -103,4 +118,9 @@ fn ray_diff_f64_wgsl() {
 #[test]
 fn ray_diff_f64_glsl() {
     agree(Module::RayDiffF64, Language::Glsl);
+}
+
+#[test]
+fn ray_diff_f64_slang() {
+    agree(Module::RayDiffF64, Language::Slang);
 }

@@ -1,5 +1,5 @@
 //! Edge cases for every function (`ray_footprint_lab::checks::edge`): special floats, zero and
-//! axis-aligned vectors, vectors tied to each other, in WGSL and GLSL. Finite inputs must give
+//! axis-aligned vectors, vectors tied to each other, in WGSL, GLSL and Slang. Finite inputs must give
 //! finite outputs in every language, and the shader must agree with the mirror within the
 //! function's tolerance, which, where the function is ill-conditioned, widens to the documented
 //! clamp.
@@ -42,6 +42,11 @@ fn ray_cone_glsl() {
 }
 
 #[test]
+fn ray_cone_slang() {
+    edges_agree(Module::RayCone, Language::Slang);
+}
+
+#[test]
 fn ray_diff_wgsl() {
     edges_agree(Module::RayDiff, Language::Wgsl);
 }
@@ -49,6 +54,11 @@ fn ray_diff_wgsl() {
 #[test]
 fn ray_diff_glsl() {
     edges_agree(Module::RayDiff, Language::Glsl);
+}
+
+#[test]
+fn ray_diff_slang() {
+    edges_agree(Module::RayDiff, Language::Slang);
 }
 
 #[test]
@@ -62,6 +72,11 @@ fn ray_diff_f64_glsl() {
 }
 
 #[test]
+fn ray_diff_f64_slang() {
+    edges_agree(Module::RayDiffF64, Language::Slang);
+}
+
+#[test]
 fn wireframe_wgsl() {
     edges_agree(Module::Wireframe, Language::Wgsl);
 }
@@ -69,4 +84,9 @@ fn wireframe_wgsl() {
 #[test]
 fn wireframe_glsl() {
     edges_agree(Module::Wireframe, Language::Glsl);
+}
+
+#[test]
+fn wireframe_slang() {
+    edges_agree(Module::Wireframe, Language::Slang);
 }

@@ -1,6 +1,6 @@
 //! Ray tracing with real acceleration structures.
 //!
-//! The GLSL closest-hit shader and the WGSL ray-query shader record, per pixel, the primary hit
+//! The GLSL and the Slang closest-hit shaders and the WGSL ray-query shader record, per pixel, the primary hit
 //! (distance, normal, barycentrics, instance, triangle), every ray-cone value they computed
 //! there, and the ray-differential, re-intersection and wireframe values. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
@@ -15,13 +15,14 @@ use ray_footprint::layout::{self, GlslPacking, StructLayout};
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
 use ray_footprint::rust_layout;
-use ray_footprint::shaders::GLSL_INCLUDE_DIR;
+use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks as suite;
 use ray_footprint_lab::checks::ray_cone::{area_corners, curvature_spread_angle_error, edge_curvature_error};
 use ray_footprint_lab::rt::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
 use ray_footprint_lab::rt::{
-    open_device, ray_query_source, Camera, Error, Frame, Mode, Renderer, Scene, Vertex, SHADER_DIR,
+    open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Mode, Renderer, Scene, Vertex,
+    SHADER_DIR,
 };
 use shader_proptest::tolerance::{dot_error, log2_error, ulps};
 use shader_proptest::{FunctionCheck, Gpu, Value};
@@ -45,8 +46,8 @@ pub(crate) fn gpu() -> Gpu {
     open_device().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
 }
 
-/// The renderer's shared structs have one layout in Rust, WGSL (naga), GLSL std430 and GLSL
-/// scalar (glslang), field by field; the uniform block's struct also under std140.
+/// The renderer's shared structs have one layout in Rust, WGSL (naga), std430 and scalar in GLSL
+/// (glslang) and in Slang (slangc), field by field; the uniform block's struct also under std140.
 #[test]
 fn renderer_structs_have_one_layout() {
     let rust = [
@@ -124,21 +125,27 @@ fn renderer_structs_have_one_layout() {
     );
 }
 
-/// Compares `rust` with its WGSL declaration in the ray-query source and its GLSL declaration in
-/// `rt_abi.glsl` under each of `packings`, and prints the table.
+/// Compares `rust` with its WGSL declaration in the ray-query source, its GLSL declaration in
+/// `rt_abi.glsl` and its Slang declaration in `rt_abi.slang` under each of `packings`, and prints
+/// the table.
 fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
     let include_dirs = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
+    let search_dirs = [Path::new(SLANG_INCLUDE_DIR), Path::new(SHADER_DIR)];
     let wgsl = layout::wgsl_layout(&ray_query_source(), &rust.name).unwrap_or_else(|e| panic!("{e}"));
-    let glsl: Vec<_> = packings
-        .iter()
-        .map(|&packing| {
-            let layout = layout::glsl_layout("#include \"rt_abi.glsl\"", &rust.name, packing, &include_dirs)
-                .unwrap_or_else(|e| panic!("{e}"));
-            (packing.qualifier(), layout)
-        })
+    let glsl = packings.iter().map(|&packing| {
+        let layout = layout::glsl_layout("#include \"rt_abi.glsl\"", &rust.name, packing, &include_dirs);
+        (packing.qualifier().to_string(), layout)
+    });
+    let slang = packings.iter().map(|&packing| {
+        let layout = layout::slang_layout("import rt_abi;", &rust.name, packing, &search_dirs);
+        (format!("Slang {}", packing.qualifier()), layout)
+    });
+    let shaders: Vec<_> = glsl
+        .chain(slang)
+        .map(|(label, layout)| (label, layout.unwrap_or_else(|e| panic!("{e}"))))
         .collect();
     let mut columns = vec![("WGSL", &wgsl)];
-    columns.extend(glsl.iter().map(|(name, layout)| (*name, layout)));
+    columns.extend(shaders.iter().map(|(label, layout)| (label.as_str(), layout)));
     for (_, shader) in &columns {
         layout::compare(rust, shader).unwrap_or_else(|e| panic!("{e}"));
     }
@@ -148,65 +155,109 @@ fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
 /// The GLSL closest-hit shader's values agree with the Rust mirror at every hit pixel.
 #[test]
 fn glsl_closest_hit_agrees_with_the_mirror() {
-    agree("GLSL closest hit", |renderer, push, uniforms| {
-        renderer.render(push, uniforms)
-    });
+    agree(
+        "GLSL closest hit",
+        ClosestHit::Glsl,
+        |renderer, push, uniforms| renderer.render(push, uniforms),
+    );
+}
+
+/// The Slang closest-hit shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn slang_closest_hit_agrees_with_the_mirror() {
+    agree(
+        "Slang closest hit",
+        ClosestHit::Slang,
+        |renderer, push, uniforms| renderer.render(push, uniforms),
+    );
 }
 
 /// The WGSL ray-query shader's values agree with the Rust mirror at every hit pixel.
 #[test]
 fn wgsl_ray_query_agrees_with_the_mirror() {
-    agree("WGSL ray query", |renderer, push, uniforms| {
+    agree("WGSL ray query", ClosestHit::Glsl, |renderer, push, uniforms| {
         renderer.trace_wgsl(push, uniforms)
     });
 }
 
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
-/// nothing, renders exactly the pixels of the recording pipeline in that mode: the ground view,
-/// through the pixel centres and through points off them ([`PIXEL_OFFSET`]), the mirror close-up
-/// and the torus close-up.
+/// nothing, renders exactly the pixels of the recording pipeline in that mode in every
+/// [`colour_views`] view.
 #[test]
 fn colour_pipelines_render_the_recorded_colours() {
     let gpu = gpu();
     let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
-    let views = [
-        ("ground", Camera::ground(), Vec2::ZERO),
-        ("ground off centre", Camera::ground(), PIXEL_OFFSET),
-        ("reflection", Camera::reflection(), Vec2::ZERO),
-        ("torus", Camera::torus(), Vec2::ZERO),
-    ];
-    let (width, height) = (WIDTH, HEIGHT);
     println!("device: {}", gpu.name());
     for mode in Mode::ALL {
         let colour = renderer
             .colour_pipeline(mode)
             .unwrap_or_else(|e| panic!("{mode}: {e}"));
-        for (view, camera, offset) in &views {
-            let mut push = renderer.push_constants(camera, mode, TEX_GRAD_SCALE, width, height);
-            push.pixel_offset = *offset;
-            let uniforms = camera.uniforms((width, height), WireframeSettings::default());
-            let recorded = renderer
-                .render(&push, &uniforms)
-                .unwrap_or_else(|e| panic!("{e}"));
-            let rendered = colour.render(&push, &uniforms).unwrap_or_else(|e| panic!("{e}"));
-            let differing = recorded
-                .pixels
-                .iter()
-                .zip(&rendered.pixels)
-                .filter(|(a, b)| a != b)
-                .count();
-            println!(
-                "{mode:<18} {view:<17} payload {:>2} bytes: {differing} of {} pixels differ",
-                colour.payload_bytes(),
-                rendered.pixels.len()
-            );
-            assert_eq!(rendered.pixels.len(), recorded.pixels.len());
+        let label = format!("payload {:>2} bytes", colour.payload_bytes());
+        compare_colours(&renderer, mode, &label, |push, uniforms| {
+            let rendered = colour.render(push, uniforms)?;
             assert!(rendered.records.is_empty());
-            assert_eq!(
-                differing, 0,
-                "{mode}, {view} view: the colour-only pipeline renders other pixels"
-            );
-        }
+            Ok(rendered)
+        });
+    }
+}
+
+/// The recording pipeline with the Slang closest-hit shader renders exactly the pixels of the one
+/// with the GLSL closest-hit shader, in every mode and [`colour_views`] view: the two shade alike,
+/// the mirror's reflected cones and differentials included.
+#[test]
+fn slang_closest_hit_renders_the_glsl_colours() {
+    let gpu = gpu();
+    let glsl = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
+    let slang = Renderer::with_closest_hit(&gpu, Scene::gallery(), ClosestHit::Slang)
+        .unwrap_or_else(|e| panic!("{e}"));
+    println!("device: {}", gpu.name());
+    for mode in Mode::ALL {
+        compare_colours(&glsl, mode, "Slang closest hit", |push, uniforms| {
+            slang.render(push, uniforms)
+        });
+    }
+}
+
+/// The views the colour comparisons render: the ground view, through the pixel centres and through
+/// points off them ([`PIXEL_OFFSET`]), the mirror close-up and the torus close-up.
+fn colour_views() -> [(&'static str, Camera, Vec2); 4] {
+    [
+        ("ground", Camera::ground(), Vec2::ZERO),
+        ("ground off centre", Camera::ground(), PIXEL_OFFSET),
+        ("reflection", Camera::reflection(), Vec2::ZERO),
+        ("torus", Camera::torus(), Vec2::ZERO),
+    ]
+}
+
+/// Renders every [`colour_views`] view in `mode` with `recording`'s recording pipeline and with
+/// `render`, prints how many pixels differ after `label`, and asserts that none does.
+fn compare_colours(
+    recording: &Renderer<'_>,
+    mode: Mode,
+    label: &str,
+    render: impl Fn(&RtPushConstants, &RtUniforms) -> Result<Frame, Error>,
+) {
+    let (width, height) = (WIDTH, HEIGHT);
+    for (view, camera, offset) in colour_views() {
+        let mut push = recording.push_constants(&camera, mode, TEX_GRAD_SCALE, width, height);
+        push.pixel_offset = offset;
+        let uniforms = camera.uniforms((width, height), WireframeSettings::default());
+        let recorded = recording
+            .render(&push, &uniforms)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let rendered = render(&push, &uniforms).unwrap_or_else(|e| panic!("{mode}: {e}"));
+        assert_eq!(rendered.pixels.len(), recorded.pixels.len());
+        let differing = recorded
+            .pixels
+            .iter()
+            .zip(&rendered.pixels)
+            .filter(|(a, b)| a != b)
+            .count();
+        println!(
+            "{mode:<18} {view:<17} {label}: {differing} of {} pixels differ",
+            rendered.pixels.len()
+        );
+        assert_eq!(differing, 0, "{mode}, {view} view ({label}): other pixels");
     }
 }
 
@@ -250,11 +301,17 @@ struct Inputs {
     uniforms: RtUniforms,
 }
 
-/// Traces every view with `trace`, checks every pixel and prints, per value, the pixels checked
-/// and the largest error, and per wireframe preset how much of the torus view its lines cover.
-fn agree(path: &str, trace: impl Fn(&Renderer<'_>, &RtPushConstants, &RtUniforms) -> Result<Frame, Error>) {
+/// Traces every view with `trace` on a renderer whose recording pipeline has `closest_hit`, checks
+/// every pixel and prints, per value, the pixels checked and the largest error, and per wireframe
+/// preset how much of the torus view its lines cover.
+fn agree(
+    path: &str,
+    closest_hit: ClosestHit,
+    trace: impl Fn(&Renderer<'_>, &RtPushConstants, &RtUniforms) -> Result<Frame, Error>,
+) {
     let gpu = gpu();
-    let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
+    let renderer =
+        Renderer::with_closest_hit(&gpu, Scene::gallery(), closest_hit).unwrap_or_else(|e| panic!("{e}"));
     println!(
         "device: {}; {path}, {WIDTH} x {HEIGHT} per view, the torus at {} x {}",
         gpu.name(),

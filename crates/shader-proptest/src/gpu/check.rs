@@ -12,7 +12,7 @@ use super::compute::ComputeKernel;
 use super::device::{Error, Gpu};
 use crate::compile::Language;
 use crate::kernel::kernel_source;
-use crate::layout::{compare, glsl_layout, wgsl_layout, GlslPacking, LayoutError};
+use crate::layout::{compare, LayoutError};
 use crate::shader::Shader;
 use crate::tolerance::Tolerance;
 use crate::value::{Args, ShaderType, StructType, Value};
@@ -656,8 +656,8 @@ pub(crate) fn missing_feature(gpu: &Gpu, shader: &Shader) -> Option<String> {
         .map(|feature| format!("{} lacks {}", gpu.name(), feature.name()))
 }
 
-/// Compares the Rust layout of every `pod` struct among the types with the shader's: naga's
-/// layout of the WGSL source, or the GLSL source's struct in a std430 block.
+/// Compares the Rust layout of every `pod` struct among the types with the shader's
+/// ([`Shader::struct_layout`]).
 fn check_layouts(shader: &Shader, parameters: &[ShaderType], result: ShaderType) -> Result<(), LayoutError> {
     let mut structs: Vec<&'static StructType> = Vec::new();
     parameters
@@ -668,16 +668,7 @@ fn check_layouts(shader: &Shader, parameters: &[ShaderType], result: ShaderType)
         let Some(rust_layout) = ty.rust_layout else {
             continue;
         };
-        let shader_layout = match shader.language() {
-            Language::Wgsl => wgsl_layout(shader.source(), ty.name)?,
-            Language::Glsl => glsl_layout(
-                shader.source(),
-                ty.name,
-                GlslPacking::Std430,
-                &shader.include_dirs(),
-            )?,
-        };
-        compare(&rust_layout(), &shader_layout)?;
+        compare(&rust_layout(), &shader.struct_layout(ty.name)?)?;
     }
     Ok(())
 }

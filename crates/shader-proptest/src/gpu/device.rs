@@ -61,7 +61,7 @@ pub(crate) fn setup(problem: &str) -> Error {
     Error::Setup(format!(
         "{problem}. Checks need a Vulkan loader, a Vulkan device (Mesa's lavapipe, from the \
          mesa-vulkan-drivers package, runs anywhere) and the Khronos validation layer \
-         (vulkan-validationlayers); GLSL needs glslangValidator (glslang-tools)"
+         (vulkan-validationlayers); GLSL needs glslangValidator (glslang-tools), Slang needs slangc"
     ))
 }
 

@@ -1,5 +1,6 @@
-//! A user's colour helpers: Rust functions with twins in `shaders/colour.wgsl` and
-//! `shaders/colour.glsl`, property-tested against them on a Vulkan device in `tests/colour.rs`.
+//! A user's colour helpers: Rust functions with twins in `shaders/colour.wgsl`,
+//! `shaders/colour.glsl` and `shaders/colour.slang`, property-tested against them on a Vulkan device
+//! in `tests/colour.rs`.
 
 use glam::Vec3;
 

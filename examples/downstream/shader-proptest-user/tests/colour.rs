@@ -24,10 +24,29 @@ fn wgsl_luminance_agrees() {
 #[test]
 fn glsl_tone_map_agrees() {
     let gpu = Gpu::new().unwrap();
-    let shader = Shader::glsl("#include \"colour.glsl\"").include_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders"));
+    let shader =
+        Shader::glsl("#include \"colour.glsl\"").include_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders"));
     // A correctly rounded sum and a division of 2.5 ULP on the device, 0.5 each in Rust.
     let check = FunctionCheck::new("tone_map", colour, |(c,)| tone_map(c)).tolerance(Tolerance::Ulps(4.0));
     let report = check.run(&gpu, &shader, &RunConfig::default()).unwrap();
     println!("{report}");
     report.assert_passed();
+}
+
+#[test]
+fn slang_luminance_and_tone_map_agree() {
+    let gpu = Gpu::new().unwrap();
+    let shader = Shader::slang("import colour;").include_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders"));
+    // The same operations as in WGSL and GLSL, with the same bounds.
+    let luminance_check =
+        FunctionCheck::new("luminance", colour, |(c,)| luminance(c)).tolerance(Tolerance::Ulps(4.0));
+    let tone_map_check =
+        FunctionCheck::new("tone_map", colour, |(c,)| tone_map(c)).tolerance(Tolerance::Ulps(4.0));
+    for report in [
+        luminance_check.run(&gpu, &shader, &RunConfig::default()).unwrap(),
+        tone_map_check.run(&gpu, &shader, &RunConfig::default()).unwrap(),
+    ] {
+        println!("{report}");
+        report.assert_passed();
+    }
 }

@@ -1,6 +1,6 @@
 //! The degenerate-input table (the root crate's `src/degenerate.md`): for each function, the
 //! degenerate inputs and the documented output, driven from one data source ([`table::tables`]) on
-//! the CPU (the Rust mirror) and on the GPU (WGSL and GLSL kernels).
+//! the CPU (the Rust mirror) and on the GPU (WGSL, GLSL and Slang kernels).
 //!
 //! Three kinds of rows:
 //! - a documented value: the mirror returns exactly that value, each shader within the function's
@@ -258,4 +258,9 @@ fn wgsl_follows_the_table() {
 #[test]
 fn glsl_follows_the_table() {
     gpu_follows_the_table(Language::Glsl);
+}
+
+#[test]
+fn slang_follows_the_table() {
+    gpu_follows_the_table(Language::Slang);
 }
