@@ -70,7 +70,7 @@ pub fn check_on_the_device(
         .map(|_| chains.new_tree(&mut runner).map(|tree| tree.current()))
         .collect::<Result<Vec<Chain>, _>>()
         .map_err(|reason| reason.to_string())?;
-    let shader = chain_shader(language);
+    let shader = chain_shader(language)?;
     let kernel = kernel_source(&shader, "reflection_chain", ChainArgs::TYPES, ChainSamples::TYPE);
     let spirv = shader
         .compile_kernel(&kernel)

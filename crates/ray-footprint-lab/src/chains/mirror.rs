@@ -273,10 +273,11 @@ pub fn reflection_chain(
 }
 
 /// The chain shader in `language`: the WGSL ray-cone and ray-differential modules followed by
-/// `reflection_chain.wgsl`, or `reflection_chain.glsl`, which includes the GLSL modules.
-pub fn chain_shader(language: Language) -> Shader {
+/// `reflection_chain.wgsl`, or `reflection_chain.glsl`, which includes the GLSL modules. `Err` for
+/// Slang: the chain shader is written in WGSL and GLSL only.
+pub fn chain_shader(language: Language) -> Result<Shader, String> {
     let modules = [Module::RayCone, Module::RayDiff];
-    match language {
+    Ok(match language {
         Language::Wgsl => {
             let source = format!(
                 "{}{}",
@@ -289,5 +290,6 @@ pub fn chain_shader(language: Language) -> Shader {
         Language::Glsl => Shader::glsl("#include \"reflection_chain.glsl\"")
             .include_dir(GLSL_INCLUDE_DIR)
             .include_dir(CHAIN_SHADER_DIR),
-    }
+        Language::Slang => return Err("the chain shader is written in WGSL and GLSL only".into()),
+    })
 }

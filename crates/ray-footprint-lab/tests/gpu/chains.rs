@@ -20,8 +20,9 @@ const MAX_VACUOUS: f64 = 0.01;
 fn chains_agree(language: Language) {
     let gpu = gpu();
     println!("device: {} ({})", gpu.name(), gpu.driver());
+    let shader = chain_shader(language).unwrap_or_else(|reason| panic!("{}: {reason}", language.name()));
     let report = reflection_chain_check()
-        .run(&gpu, &chain_shader(language), &RunConfig::default())
+        .run(&gpu, &shader, &RunConfig::default())
         .unwrap_or_else(|error| panic!("reflection_chain ({}): {error}", language.name()));
     println!("{report} in {:.1} s", report.elapsed.as_secs_f64());
     report.assert_passed();
