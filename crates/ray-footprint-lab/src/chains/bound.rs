@@ -4,7 +4,7 @@
 use super::{Chain, ChainSample, Comparison, Surface};
 use ray_footprint::ray_cone::RayCone;
 
-/// Roundings (in f32 ULP of the chain's scale, see [`Scale`], over the cube of its smallest cosine
+/// Roundings (in f32 ULP of the chain's scale, see `Scale`, over the cube of its smallest cosine
 /// of incidence so far) by which the cone's width and the differential's footprint may differ per
 /// leg of a chain, computed in f32 on the CPU or on a Vulkan device.
 ///

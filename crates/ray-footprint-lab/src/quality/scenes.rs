@@ -2,6 +2,7 @@
 
 use crate::rt::abi::RtPixelRecord;
 use crate::rt::{checker, two_scale_checker, Camera, MipChain, Mode, Scene, CHECKER_SQUARE, TEXTURE_SIZE};
+use glam::Vec3;
 use ray_footprint::wireframe::WireframeSettings;
 
 /// Fine checker square of the ground plane's two-scale texture, in texels: level 3 averages it
@@ -9,6 +10,12 @@ use ray_footprint::wireframe::WireframeSettings;
 pub const FINE_CHECKER_SQUARE: u32 = 4;
 /// Distance from the eye beyond which the ground plane's pixels form the plane scene's mask.
 pub const PLANE_MASK_DISTANCE: f32 = 3.0;
+/// Vertical field of view of the corners scene, degrees: 100 vertical is about 121 across a 3:2
+/// image, and the image's corners lie about 65 degrees off the view axis.
+pub const CORNERS_FOV_Y_DEGREES: f32 = 100.0;
+/// Angle off the view axis beyond which the corners scene's ground-plane pixels form its mask,
+/// degrees.
+pub const CORNERS_MASK_DEGREES: f32 = 45.0;
 
 /// What a scene measures.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -37,6 +44,16 @@ pub enum Mask {
         /// Distance from the eye.
         distance: f32,
     },
+    /// Pixels whose primary ray hits mesh `mesh` and leaves the eye more than `degrees` off the
+    /// view axis `axis` (unit length).
+    MeshOffAxis {
+        /// The mesh.
+        mesh: u32,
+        /// The camera's view axis.
+        axis: Vec3,
+        /// Least angle between the ray and the axis, degrees.
+        degrees: f32,
+    },
 }
 
 impl Mask {
@@ -47,6 +64,10 @@ impl Mask {
             Mask::MeshBeyond { mesh, distance } => {
                 record.hit == 1 && record.instance == mesh && record.t > distance
             }
+            Mask::MeshOffAxis { mesh, axis, degrees } => {
+                let cosine = record.direction.normalize_or_zero().dot(axis);
+                record.hit == 1 && record.instance == mesh && cosine < degrees.to_radians().cos()
+            }
         }
     }
 
@@ -56,6 +77,9 @@ impl Mask {
         match *self {
             Mask::Mesh(mesh) => format!("the {}", name(mesh)),
             Mask::MeshBeyond { mesh, distance } => format!("the {} beyond {distance} units", name(mesh)),
+            Mask::MeshOffAxis { mesh, degrees, .. } => {
+                format!("the {} more than {degrees} degrees off the view axis", name(mesh))
+            }
         }
     }
 }
@@ -99,6 +123,31 @@ impl LabScene {
             },
             measure: Measure::Texture,
             crop: [0.0, 0.48, 0.5, 0.4],
+        }
+    }
+
+    /// The ground plane under a wide view ([`CORNERS_FOV_Y_DEGREES`]), the plane scene's texture;
+    /// mask: the plane more than [`CORNERS_MASK_DEGREES`] off the view axis, where each primary
+    /// ray's own cone (`pinhole_ray_cone_for_ray`) is narrower than the centre pixel's.
+    pub fn corners() -> LabScene {
+        let camera = Camera {
+            eye: Vec3::new(0.0, 1.5, 4.0),
+            target: Vec3::new(0.0, 0.0, -2.0),
+            fov_y: CORNERS_FOV_Y_DEGREES.to_radians(),
+        };
+        LabScene {
+            name: "corners",
+            description: "ground plane under a 100-degree view, the plane's checkers",
+            scene: Scene::gallery(),
+            texture: two_scale_checker(TEXTURE_SIZE, CHECKER_SQUARE, FINE_CHECKER_SQUARE),
+            camera,
+            mask: Mask::MeshOffAxis {
+                mesh: 0,
+                axis: (camera.target - camera.eye).normalize(),
+                degrees: CORNERS_MASK_DEGREES,
+            },
+            measure: Measure::Texture,
+            crop: [0.0, 0.6, 0.4, 0.4],
         }
     }
 
@@ -153,6 +202,7 @@ impl LabScene {
     pub fn all() -> Vec<LabScene> {
         vec![
             LabScene::plane(),
+            LabScene::corners(),
             LabScene::paraboloid(),
             LabScene::sphere(),
             LabScene::torus(),
