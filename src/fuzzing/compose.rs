@@ -155,8 +155,12 @@ mod naga_check {
     fn composer(modules: &[Module]) -> Result<naga_oil::compose::Composer, String> {
         let mut composer =
             naga_oil::compose::Composer::default().with_capabilities(crate::naga_oil::capabilities(modules));
-        crate::naga_oil::add_composable_modules(&mut composer, modules)
-            .map_err(|error| format!("registering {modules:?}: {}", error.emit_to_string(&composer)))?;
+        crate::naga_oil::add_composable_modules(&mut composer, modules).map_err(|error| match error {
+            crate::naga_oil::RegisterError::Composer { error, .. } => {
+                format!("registering {modules:?}: {}", error.emit_to_string(&composer))
+            }
+            other => format!("registering {modules:?}: {other}"),
+        })?;
         Ok(composer)
     }
 
