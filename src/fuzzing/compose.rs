@@ -103,12 +103,13 @@ mod naga_check {
         composer: naga_oil::compose::Composer,
     }
 
+    /// The capabilities `modules` need together ([`Module::naga_capabilities`]).
     fn capabilities(modules: &[Module]) -> naga::valid::Capabilities {
-        let mut capabilities = naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
-        if modules.iter().any(|module| module.needs_f64()) {
-            capabilities |= naga::valid::Capabilities::FLOAT64;
-        }
-        capabilities
+        modules
+            .iter()
+            .fold(naga::valid::Capabilities::empty(), |all, module| {
+                all | module.naga_capabilities()
+            })
     }
 
     /// Parses and validates `source` with naga; the error is rendered as text.
