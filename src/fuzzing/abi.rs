@@ -97,7 +97,9 @@ fn cast_at<T: Pod>(name: &str, data: &[u8]) -> Result<(), String> {
 
 /// [`crate::abi::from_bytes`], [`crate::abi::vec_from_bytes`] and [`crate::abi::slice_from_bytes`]
 /// succeed exactly when the length (and, in place, the alignment) allow, give back the same bytes,
-/// and otherwise name the struct, its size and the length received.
+/// and otherwise hold the struct, its size or alignment and what the bytes are. (How the errors
+/// read is `tests/bad_input.rs`'s business: rendering every error here made the target six times
+/// slower.)
 fn crate_conversions<T: Pod>(name: &str, data: &[u8], aligned: bool) -> Result<(), String> {
     use crate::abi::{from_bytes, slice_from_bytes, vec_from_bytes};
     let size = std::mem::size_of::<T>();
@@ -135,13 +137,10 @@ fn crate_conversions<T: Pod>(name: &str, data: &[u8], aligned: bool) -> Result<(
     Ok(())
 }
 
-/// Whether `error` holds the struct's name, size or alignment and what `data` is, and its
-/// message shows them.
+/// Whether `error` holds the struct's name, size or alignment and what `data` is.
 fn error_is_exact<T>(name: &str, data: &[u8], error: crate::abi::BytesError) -> bool {
     use crate::abi::BytesError;
     let (size, align) = (std::mem::size_of::<T>(), std::mem::align_of::<T>());
-    let message = error.to_string();
-    let shows = |values: [usize; 2]| values.iter().all(|v| message.contains(&v.to_string()));
     match error {
         BytesError::Length {
             structure,
@@ -152,19 +151,14 @@ fn error_is_exact<T>(name: &str, data: &[u8], error: crate::abi::BytesError) -> 
             structure,
             size: expected,
             actual,
-        } => {
-            structure.ends_with(name) && (expected, actual) == (size, data.len()) && shows([size, data.len()])
-        }
+        } => structure.ends_with(name) && (expected, actual) == (size, data.len()),
         BytesError::Misaligned {
             structure,
             align: needed,
             misalignment,
         } => {
             let expected = data.as_ptr() as usize % align;
-            structure.ends_with(name)
-                && (needed, misalignment) == (align, expected)
-                && expected != 0
-                && shows([align, expected])
+            structure.ends_with(name) && (needed, misalignment) == (align, expected) && expected != 0
         }
     }
 }
