@@ -7,14 +7,17 @@
 #
 # Usage:
 #   scripts/fuzz.sh [SECONDS]           each target for SECONDS (default 60) in one process (CI)
-#   scripts/fuzz.sh --runs N [WORKERS]  each target until it has run N inputs, on WORKERS processes
-#                                       (default 2); the long run is `scripts/fuzz.sh --runs 1000000`
+#   scripts/fuzz.sh --runs N [WORKERS]  each target until it has run N inputs, shared by WORKERS
+#                                       processes (default 2) that share one corpus (libFuzzer -jobs);
+#                                       the long run is `scripts/fuzz.sh --runs 1000000`
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root="$PWD"
 if [[ "${1:-}" == "--runs" ]]; then
     runs="${2:?--runs needs a number of inputs}"
     workers="${3:-2}"
-    budget=(-runs="$runs" -fork="$workers")
+    # Each job writes its output to fuzz-<job>.log in the working directory.
+    budget=(-runs="$(((runs + workers - 1) / workers))" -jobs="$workers" -workers="$workers")
 else
     seconds="${1:-60}"
     budget=(-max_total_time="$seconds")
@@ -37,25 +40,26 @@ options() {
 }
 
 cargo +nightly fuzz build
+binaries="fuzz/target/$(rustc +nightly -vV | sed -n 's/^host: //p')/release"
 status=0
 for target in "${targets[@]}"; do
-    mkdir -p "$scratch/$target" "$scratch/$target-artifacts"
-    log="$scratch/$target.log"
+    run="$scratch/$target-run"
+    mkdir -p "$scratch/$target" "$scratch/$target-artifacts" "$run"
     start="$(date +%s)"
     # shellcheck disable=SC2046 # options are words without spaces
-    if cargo +nightly fuzz run "$target" "$scratch/$target" "fuzz/corpus/$target" -- \
+    if (cd "$run" && "$root/$binaries/$target" "$scratch/$target" "$root/fuzz/corpus/$target" \
         "${budget[@]}" $(options "$target") -print_final_stats=1 \
-        -artifact_prefix="$scratch/$target-artifacts/" >"$log" 2>&1; then
+        -artifact_prefix="$scratch/$target-artifacts/" >"$run/main.log" 2>&1); then
         crashed=0
     else
         crashed=1
         status=1
-        tail -n 40 "$log"
+        tail -n 40 "$run/main.log"
     fi
     elapsed=$(($(date +%s) - start))
-    # One process prints its total in the final stats, a fork parent in its last status line.
-    executions="$(grep -oE 'stat::number_of_executed_units: *[0-9]+|^#[0-9]+' "$log" | tail -n 1 |
-        grep -oE '[0-9]+$' || echo 0)"
+    # The final stats of the process, or of each job (whose logs the parent prints when it ends).
+    executions="$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$run/main.log" |
+        awk '{ sum += $2 } END { print sum + 0 }')"
     crashes=0
     for artifact in "$scratch/$target-artifacts"/*; do
         [[ -f "$artifact" ]] || continue
