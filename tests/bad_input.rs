@@ -259,7 +259,14 @@ fn reader_row(
 }
 
 fn wgsl_row(input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
-    reader_row("layout::wgsl_layout", layout::wgsl_layout, input, name, names, source)
+    reader_row(
+        "layout::wgsl_layout",
+        layout::wgsl_layout,
+        input,
+        name,
+        names,
+        source,
+    )
 }
 
 fn glsl_row(input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
