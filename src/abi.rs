@@ -34,6 +34,23 @@
 //! ```
 //!
 //! so every bool crosses the boundary as a 32-bit integer (0 = false, anything else = true).
+//!
+//! # Reading structs from bytes
+//!
+//! Bytes read back from the GPU or a file become structs through [`from_bytes`] (one struct, any
+//! alignment), [`vec_from_bytes`] (an array, copied, any alignment) or [`slice_from_bytes`] (an
+//! array in place; the bytes must be aligned for the struct). A wrong byte count or a misaligned
+//! start is a [`BytesError`] naming the struct, the size or alignment it needs and what it got:
+//!
+//! ```
+//! use ray_footprint::abi::{from_bytes, HitPayload};
+//!
+//! let error = from_bytes::<HitPayload>(&[0; 31]).unwrap_err();
+//! assert_eq!(error.to_string(), "ray_footprint::abi::HitPayload: expected 32 bytes, got 31");
+//! ```
+//!
+//! Every bit pattern is a valid value of these structs; what the values mean is checked elsewhere
+//! (for settings, [`WireframeSettingsIo::unpack`] then [`crate::wireframe::WireframeSettings::validate`]).
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec4};
@@ -85,6 +102,115 @@ pub struct WireframePushConstants {
 const _: () = assert!(std::mem::size_of::<RayConePushConstants>() <= PUSH_CONSTANT_LIMIT);
 const _: () = assert!(std::mem::size_of::<WireframePushConstants>() <= PUSH_CONSTANT_LIMIT);
 const _: () = assert!(std::mem::size_of::<PackedRayCone>() == 4);
+
+/// Bytes that do not hold the requested structs: the struct's Rust type, what it needs and what
+/// the bytes are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BytesError {
+    /// [`from_bytes`]: the byte count is not the struct's size.
+    Length {
+        /// The struct's Rust type.
+        structure: &'static str,
+        /// Its size in bytes.
+        expected: usize,
+        /// The byte count received.
+        actual: usize,
+    },
+    /// [`vec_from_bytes`], [`slice_from_bytes`]: the byte count is not a multiple of the struct's
+    /// size (or the struct has no size).
+    NotWhole {
+        /// The struct's Rust type.
+        structure: &'static str,
+        /// Its size in bytes.
+        size: usize,
+        /// The byte count received.
+        actual: usize,
+    },
+    /// [`slice_from_bytes`]: the bytes start at an address that is not a multiple of the struct's
+    /// alignment.
+    Misaligned {
+        /// The struct's Rust type.
+        structure: &'static str,
+        /// Its alignment in bytes.
+        align: usize,
+        /// The start address of the bytes modulo `align` (never 0).
+        misalignment: usize,
+    },
+}
+
+impl std::fmt::Display for BytesError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            BytesError::Length {
+                structure,
+                expected,
+                actual,
+            } => write!(f, "{structure}: expected {expected} bytes, got {actual}"),
+            BytesError::NotWhole {
+                structure,
+                size,
+                actual,
+            } => write!(
+                f,
+                "{structure}: {actual} bytes are not a whole number of {size}-byte structs"
+            ),
+            BytesError::Misaligned {
+                structure,
+                align,
+                misalignment,
+            } => write!(
+                f,
+                "{structure}: the bytes start {misalignment} byte(s) past a multiple of the struct's \
+                 alignment {align} (vec_from_bytes copies them from any address)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for BytesError {}
+
+/// One `T` from exactly `size_of::<T>()` bytes at any alignment (a copy).
+pub fn from_bytes<T: Pod>(bytes: &[u8]) -> Result<T, BytesError> {
+    bytemuck::try_pod_read_unaligned(bytes).map_err(|_| BytesError::Length {
+        structure: std::any::type_name::<T>(),
+        expected: std::mem::size_of::<T>(),
+        actual: bytes.len(),
+    })
+}
+
+/// `bytes.len() / size_of::<T>()` structs from a whole number of them at any alignment (a copy).
+pub fn vec_from_bytes<T: Pod>(bytes: &[u8]) -> Result<Vec<T>, BytesError> {
+    let size = std::mem::size_of::<T>();
+    if size == 0 || !bytes.len().is_multiple_of(size) {
+        return Err(not_whole::<T>(bytes));
+    }
+    Ok(bytes
+        .chunks_exact(size)
+        .map(bytemuck::pod_read_unaligned)
+        .collect())
+}
+
+/// The structs that a whole number of them occupy, in place: `bytes` must start at a multiple of
+/// `align_of::<T>()`.
+pub fn slice_from_bytes<T: Pod>(bytes: &[u8]) -> Result<&[T], BytesError> {
+    let size = std::mem::size_of::<T>();
+    if size == 0 || !bytes.len().is_multiple_of(size) {
+        return Err(not_whole::<T>(bytes));
+    }
+    bytemuck::try_cast_slice(bytes).map_err(|_| BytesError::Misaligned {
+        structure: std::any::type_name::<T>(),
+        align: std::mem::align_of::<T>(),
+        misalignment: bytes.as_ptr() as usize % std::mem::align_of::<T>(),
+    })
+}
+
+fn not_whole<T>(bytes: &[u8]) -> BytesError {
+    BytesError::NotWhole {
+        structure: std::any::type_name::<T>(),
+        size: std::mem::size_of::<T>(),
+        actual: bytes.len(),
+    }
+}
 
 // Generated by build.rs: offsets, sizes and alignments naga computes for the WGSL declarations.
 #[cfg(feature = "validate")]

@@ -8,6 +8,10 @@
 #![deny(missing_docs)]
 
 pub mod abi;
+/// Bad input at the edges of the API: what each entry that takes outside data answers.
+///
+#[doc = include_str!("bad_input.md")]
+pub mod bad_input {}
 /// Degenerate inputs: the documented output of every function, in every implementation.
 ///
 #[doc = include_str!("degenerate.md")]

@@ -103,6 +103,38 @@ fn cpu_mirror_covers_every_public_mirror_function() {
     }
 }
 
+/// The compose target leaves a module out of a text's parse when the text spells none of the
+/// names the module declares, so those names must be every module-scope declaration: each line of
+/// a WGSL module that starts with `fn`, `struct`, `const`, `alias` or `override` declares one of them.
+#[cfg(feature = "validate")]
+#[test]
+fn compose_knows_every_name_a_module_declares() {
+    use ray_footprint::fuzzing::compose::declared_names;
+    for &module in Module::ALL {
+        let names = declared_names(module).expect("the module parses");
+        let mut declarations = 0;
+        for line in module.wgsl().lines() {
+            let mut words = line
+                .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .filter(|word| !word.is_empty());
+            let (Some(keyword), Some(name)) = (words.next(), words.next()) else {
+                continue;
+            };
+            if line.starts_with(keyword) && ["fn", "struct", "const", "alias", "override"].contains(&keyword)
+            {
+                assert!(
+                    names.contains(name),
+                    "{}: `{keyword} {name}` is not among the names {names:?}",
+                    module.stem()
+                );
+                declarations += 1;
+            }
+        }
+        assert!(declarations > 0, "{}: no declaration found", module.stem());
+        println!("{}: {declarations} declared names", module.stem());
+    }
+}
+
 /// The include directory holds the embedded sources as regular files inside it (no symlink that
 /// could lead elsewhere), so what the resolver serves is what `-I GLSL_INCLUDE_DIR` serves.
 #[test]

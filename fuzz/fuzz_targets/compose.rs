@@ -1,4 +1,6 @@
 //! Fuzz target `compose`: see `ray_footprint::fuzzing` for the properties it checks.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ray_footprint::fuzzing::fuzz_one("compose", data));
+use ray_footprint::fuzzing;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| fuzzing::fuzz_one(fuzzing::compose::compose, data));

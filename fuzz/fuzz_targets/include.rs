@@ -1,4 +1,6 @@
 //! Fuzz target `include`: see `ray_footprint::fuzzing` for the properties it checks.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| ray_footprint::fuzzing::fuzz_one("include", data));
+use ray_footprint::fuzzing;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| fuzzing::fuzz_one(fuzzing::include::include, data));

@@ -82,6 +82,7 @@ fn cast_at<T: Pod>(name: &str, data: &[u8]) -> Result<(), String> {
             read.err()
         )
     })?;
+    crate_conversions::<T>(name, data, aligned)?;
     for chunk in data.chunks_exact(size) {
         let value: T = bytemuck::pod_read_unaligned(chunk);
         check(bytemuck::bytes_of(&value) == chunk, || {
@@ -92,6 +93,74 @@ fn cast_at<T: Pod>(name: &str, data: &[u8]) -> Result<(), String> {
         })?;
     }
     Ok(())
+}
+
+/// [`crate::abi::from_bytes`], [`crate::abi::vec_from_bytes`] and [`crate::abi::slice_from_bytes`]
+/// succeed exactly when the length (and, in place, the alignment) allow, give back the same bytes,
+/// and otherwise hold the struct, its size or alignment and what the bytes are. (How the errors
+/// read is `tests/bad_input.rs`'s business: rendering every error here made the target six times
+/// slower.)
+fn crate_conversions<T: Pod>(name: &str, data: &[u8], aligned: bool) -> Result<(), String> {
+    use crate::abi::{from_bytes, slice_from_bytes, vec_from_bytes};
+    let size = std::mem::size_of::<T>();
+    let whole = data.len().is_multiple_of(size);
+    let one = from_bytes::<T>(data);
+    check(one.is_ok() == (data.len() == size), || {
+        format!("{name}: from_bytes of {} bytes gave {:?}", data.len(), one.err())
+    })?;
+    let many = vec_from_bytes::<T>(data);
+    let in_place = slice_from_bytes::<T>(data);
+    check(
+        many.is_ok() == whole && in_place.is_ok() == (whole && aligned),
+        || {
+            format!(
+                "{name}: vec_from_bytes / slice_from_bytes of {} bytes (aligned: {aligned}) gave {:?} / {:?}",
+                data.len(),
+                many.as_ref().err(),
+                in_place.err()
+            )
+        },
+    )?;
+    if let Ok(values) = &many {
+        check(bytemuck::cast_slice::<T, u8>(values) == data, || {
+            format!("{name}: vec_from_bytes changed the bytes")
+        })?;
+    }
+    for error in [one.err(), many.err(), in_place.err()].into_iter().flatten() {
+        check(error_is_exact::<T>(name, data, error), || {
+            format!(
+                "{name}: the error {error:?} ({error}) does not describe {} bytes",
+                data.len()
+            )
+        })?;
+    }
+    Ok(())
+}
+
+/// Whether `error` holds the struct's name, size or alignment and what `data` is.
+fn error_is_exact<T>(name: &str, data: &[u8], error: crate::abi::BytesError) -> bool {
+    use crate::abi::BytesError;
+    let (size, align) = (std::mem::size_of::<T>(), std::mem::align_of::<T>());
+    match error {
+        BytesError::Length {
+            structure,
+            expected,
+            actual,
+        }
+        | BytesError::NotWhole {
+            structure,
+            size: expected,
+            actual,
+        } => structure.ends_with(name) && (expected, actual) == (size, data.len()),
+        BytesError::Misaligned {
+            structure,
+            align: needed,
+            misalignment,
+        } => {
+            let expected = data.as_ptr() as usize % align;
+            structure.ends_with(name) && (needed, misalignment) == (align, expected) && expected != 0
+        }
+    }
 }
 
 /// The float fields and flags of settings, floats by their bits: what a round trip must keep.

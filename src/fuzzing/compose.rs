@@ -1,12 +1,30 @@
 //! `compose`: arbitrary user shader text combined with the crate's WGSL modules.
 //!
 //! The first byte selects the modules (bit `i` for `Module::ALL[i]`), the rest is the user's text
-//! (invalid UTF-8 replaced). The text goes, after [`wgsl_prelude`] of the selected modules, through
-//! naga's WGSL front end and validator (with the capabilities the modules need); with the `naga_oil`
-//! feature it also goes to a naga_oil composer holding the modules
-//! ([`crate::naga_oil::add_composable_modules`]) as the top-level shader. Properties: no panic, errors
-//! are returned (and render as text); the modules alone (empty or blank text) always validate and
-//! always register with the composer. Without naga (default features) only the prelude is built.
+//! (invalid UTF-8 replaced). Properties:
+//!
+//! - The module set: [`wgsl_prelude`] holds every selected module, the prelude alone parses and
+//!   validates with naga (with the capabilities the modules need), and the modules register with a
+//!   naga_oil composer ([`crate::naga_oil::add_composable_modules`]).
+//! - The text after the prelude goes through naga's WGSL front end and validator, and (feature
+//!   `naga_oil`) to the composer as the top-level shader: no panic, errors are returned (and render
+//!   as text).
+//!
+//! Without naga (default features) only the prelude is built.
+//!
+//! # Work per input
+//!
+//! Nothing about a module set depends on the text, so each set is checked once per thread and kept
+//! with the names its modules declare and its composer; an input then costs only the work its text
+//! needs. The text is parsed after the prelude of the selected modules it can interact with: those
+//! declaring a name the text spells (every ASCII run of letters, digits and `_` in the text is
+//! compared with the names), and all selected modules when the text spells `enable`, `requires` or
+//! `diagnostic` (directives, which must come before every declaration). A module the text never
+//! names cannot change how naga reads it: naga parses without resolving names and then resolves the
+//! text's identifiers by name, and the modules declare only functions, structs and constants. The
+//! source naga sees then differs from the full prelude only in the declarations it leaves out (and
+//! so in the numbering of naga's arenas). Parsing the selected modules' WGSL (up to 43 KB) for
+//! every input was nearly all of the target's time; now a text pays only for the modules it names.
 
 use crate::shaders::{wgsl_prelude, Module};
 
@@ -20,84 +38,170 @@ pub fn compose(data: &[u8]) -> Result<(), String> {
         .map(|(_, &module)| module)
         .collect();
     let text = String::from_utf8_lossy(text);
-    let prelude = wgsl_prelude(&modules);
+    #[cfg(not(any(feature = "validate", feature = "naga_oil")))]
+    {
+        // Without naga there is nothing to parse the text with.
+        let _ = text;
+        full_prelude(&modules).map(drop)
+    }
+    #[cfg(any(feature = "validate", feature = "naga_oil"))]
+    naga_check::check(&text, &modules)
+}
+
+/// The prelude of `modules`, checked to hold each of them.
+fn full_prelude(modules: &[Module]) -> Result<String, String> {
+    let prelude = wgsl_prelude(modules);
     if modules.iter().any(|module| !prelude.contains(module.wgsl())) {
         return Err(format!("the prelude of {modules:?} lacks a module"));
     }
-    // Without naga there is nothing to parse the text with.
-    #[cfg(not(any(feature = "validate", feature = "naga_oil")))]
-    let _ = text;
-    #[cfg(any(feature = "validate", feature = "naga_oil"))]
-    naga_check::with_prelude(&prelude, &text, &modules)?;
-    #[cfg(feature = "naga_oil")]
-    naga_check::with_composer(&text, &modules)?;
-    Ok(())
+    Ok(prelude)
+}
+
+/// Every ASCII run of letters, digits and `_` in `text`: a superset of the identifiers naga reads
+/// there that are spelled in ASCII.
+#[cfg(any(feature = "validate", feature = "naga_oil"))]
+fn words(text: &str) -> impl Iterator<Item = &str> {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .filter(|word| !word.is_empty())
+}
+
+/// The names `module` declares at module scope, as naga reads them: functions, named types,
+/// constants, global variables and overrides.
+#[cfg(any(feature = "validate", feature = "naga_oil"))]
+pub fn declared_names(module: Module) -> Result<std::collections::HashSet<String>, String> {
+    let parsed = naga::front::wgsl::parse_str(module.wgsl())
+        .map_err(|error| format!("{module:?}: {}", error.emit_to_string(module.wgsl())))?;
+    let functions = parsed.functions.iter().map(|(_, f)| &f.name);
+    let types = parsed.types.iter().map(|(_, t)| &t.name);
+    let constants = parsed.constants.iter().map(|(_, c)| &c.name);
+    let globals = parsed.global_variables.iter().map(|(_, g)| &g.name);
+    let overrides = parsed.overrides.iter().map(|(_, o)| &o.name);
+    Ok(functions
+        .chain(types)
+        .chain(constants)
+        .chain(globals)
+        .chain(overrides)
+        .flatten()
+        .cloned()
+        .collect())
 }
 
 #[cfg(any(feature = "validate", feature = "naga_oil"))]
 mod naga_check {
-    use crate::shaders::Module;
+    use super::{declared_names, full_prelude, words};
+    use crate::shaders::{wgsl_prelude, Module};
+    use std::collections::{HashMap, HashSet};
 
+    /// Words that begin a directive, which must precede every declaration.
+    const DIRECTIVES: [&str; 3] = ["enable", "requires", "diagnostic"];
+
+    /// A checked module set: its modules with the names each declares, and its composer.
+    struct ModuleSet {
+        names: Vec<(Module, HashSet<String>)>,
+        capabilities: naga::valid::Capabilities,
+        #[cfg(feature = "naga_oil")]
+        composer: naga_oil::compose::Composer,
+    }
+
+    /// The capabilities `modules` need together ([`Module::naga_capabilities`]).
     fn capabilities(modules: &[Module]) -> naga::valid::Capabilities {
-        let mut capabilities = naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
-        if modules.iter().any(|module| module.needs_f64()) {
-            capabilities |= naga::valid::Capabilities::FLOAT64;
-        }
-        capabilities
+        modules
+            .iter()
+            .fold(naga::valid::Capabilities::empty(), |all, module| {
+                all | module.naga_capabilities()
+            })
     }
 
-    /// Parses and validates `prelude + text`; an error is fine unless `text` is blank.
-    pub fn with_prelude(prelude: &str, text: &str, modules: &[Module]) -> Result<(), String> {
-        let source = format!("{prelude}{text}");
-        let outcome = naga::front::wgsl::parse_str(&source)
-            .map_err(|error| error.emit_to_string_with_path(&source, "user.wgsl"))
-            .and_then(|module| {
-                naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities(modules))
-                    .validate(&module)
-                    .map(drop)
-                    .map_err(|error| error.emit_to_string_with_path(&source, "user.wgsl"))
-            });
-        match outcome {
-            Err(message) if text.trim().is_empty() => {
-                Err(format!("the modules {modules:?} alone fail: {message}"))
-            }
-            _ => Ok(()),
+    /// Parses and validates `source` with naga; the error is rendered as text.
+    fn parse_and_validate(source: &str, capabilities: naga::valid::Capabilities) -> Result<(), String> {
+        let module = naga::front::wgsl::parse_str(source)
+            .map_err(|error| error.emit_to_string_with_path(source, "user.wgsl"))?;
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
+            .validate(&module)
+            .map(drop)
+            .map_err(|error| error.emit_to_string_with_path(source, "user.wgsl"))
+    }
+
+    impl ModuleSet {
+        /// Checks the set's prelude alone and registers the modules with a composer.
+        fn new(modules: &[Module]) -> Result<ModuleSet, String> {
+            let capabilities = capabilities(modules);
+            parse_and_validate(&full_prelude(modules)?, capabilities)
+                .map_err(|message| format!("the modules {modules:?} alone fail: {message}"))?;
+            let names = modules
+                .iter()
+                .map(|&module| declared_names(module).map(|names| (module, names)))
+                .collect::<Result<_, _>>()?;
+            Ok(ModuleSet {
+                names,
+                capabilities,
+                #[cfg(feature = "naga_oil")]
+                composer: composer(modules)?,
+            })
+        }
+
+        /// The selected modules `text` can interact with (see the module docs).
+        fn named_by(&self, text: &str) -> Vec<Module> {
+            let spelled: HashSet<&str> = words(text).collect();
+            let directive = DIRECTIVES.iter().any(|word| spelled.contains(word));
+            self.names
+                .iter()
+                .filter(|(_, names)| directive || names.iter().any(|name| spelled.contains(name.as_str())))
+                .map(|(module, _)| *module)
+                .collect()
         }
     }
 
-    /// Composes `text` against the naga_oil modules; an error is fine, but the modules must register.
-    ///
-    /// The composer holding a module set is built once per set and thread, and reused: naga_oil only
-    /// caches the compiled imports in it, and building it anew for every input ran about three
-    /// inputs per second under the fuzzer's sanitizer.
     #[cfg(feature = "naga_oil")]
-    pub fn with_composer(text: &str, modules: &[Module]) -> Result<(), String> {
-        use naga_oil::compose::{Composer, NagaModuleDescriptor};
-        use std::collections::HashMap;
+    fn composer(modules: &[Module]) -> Result<naga_oil::compose::Composer, String> {
+        let mut composer =
+            naga_oil::compose::Composer::default().with_capabilities(crate::naga_oil::capabilities(modules));
+        crate::naga_oil::add_composable_modules(&mut composer, modules).map_err(|error| match error {
+            crate::naga_oil::RegisterError::Composer { error, .. } => {
+                format!("registering {modules:?}: {}", error.emit_to_string(&composer))
+            }
+            other => format!("registering {modules:?}: {other}"),
+        })?;
+        Ok(composer)
+    }
+
+    /// Both properties for `text` and `modules`; the module set is checked once per thread.
+    pub fn check(text: &str, modules: &[Module]) -> Result<(), String> {
         thread_local! {
-            static COMPOSERS: std::cell::RefCell<HashMap<Vec<Module>, Composer>> = Default::default();
+            static SETS: std::cell::RefCell<HashMap<Vec<Module>, Result<ModuleSet, String>>> =
+                Default::default();
         }
-        COMPOSERS.with_borrow_mut(|composers| {
-            let composer = match composers.entry(modules.to_vec()) {
-                std::collections::hash_map::Entry::Occupied(entry) => entry.into_mut(),
-                std::collections::hash_map::Entry::Vacant(entry) => {
-                    let mut composer =
-                        Composer::default().with_capabilities(crate::naga_oil::capabilities(modules));
-                    crate::naga_oil::add_composable_modules(&mut composer, modules).map_err(|error| {
-                        format!("registering {modules:?}: {}", error.emit_to_string(&composer))
-                    })?;
-                    entry.insert(composer)
-                }
-            };
-            let composed = composer.make_naga_module(NagaModuleDescriptor {
+        SETS.with_borrow_mut(|sets| {
+            let set = sets
+                .entry(modules.to_vec())
+                .or_insert_with(|| ModuleSet::new(modules))
+                .as_mut()
+                .map_err(|message| message.clone())?;
+            with_prelude(text, set);
+            #[cfg(feature = "naga_oil")]
+            with_composer(text, set);
+            Ok(())
+        })
+    }
+
+    /// Parses and validates the text after the prelude of the modules it names; an error is fine.
+    fn with_prelude(text: &str, set: &ModuleSet) {
+        let source = format!("{}{text}", wgsl_prelude(&set.named_by(text)));
+        let _outcome = parse_and_validate(&source, set.capabilities);
+    }
+
+    /// Composes `text` against the set's naga_oil modules; an error is fine.
+    #[cfg(feature = "naga_oil")]
+    fn with_composer(text: &str, set: &mut ModuleSet) {
+        let composed = set
+            .composer
+            .make_naga_module(naga_oil::compose::NagaModuleDescriptor {
                 source: text,
                 file_path: "user.wgsl",
                 ..Default::default()
             });
-            if let Err(error) = composed {
-                let _message = error.emit_to_string(composer);
-            }
-            Ok(())
-        })
+        if let Err(error) = composed {
+            let _message = error.emit_to_string(&set.composer);
+        }
     }
 }

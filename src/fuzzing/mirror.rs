@@ -262,24 +262,31 @@ impl<'a> Draw<'a> {
 
 /// The floats of a mirror function's result.
 pub trait Floats {
-    /// Appends every float of the value.
-    fn floats(&self, out: &mut Vec<f32>);
+    /// Calls `visit` with every float of the value, in field order.
+    fn each_float(&self, visit: &mut impl FnMut(f32));
+
+    /// Every float of the value, in field order.
+    fn floats(&self) -> Vec<f32> {
+        let mut out = Vec::new();
+        self.each_float(&mut |x| out.push(x));
+        out
+    }
 }
 
 macro_rules! floats {
     ($($ty:ty => |$v:ident| [$($field:expr),*];)+) => {
         $(impl Floats for $ty {
-            fn floats(&self, out: &mut Vec<f32>) {
+            fn each_float(&self, visit: &mut impl FnMut(f32)) {
                 let $v = self;
-                $($field.floats(out);)*
+                $($field.each_float(visit);)*
             }
         })+
     };
 }
 
 impl Floats for f32 {
-    fn floats(&self, out: &mut Vec<f32>) {
-        out.push(*self);
+    fn each_float(&self, visit: &mut impl FnMut(f32)) {
+        visit(*self);
     }
 }
 
@@ -299,20 +306,21 @@ floats! {
     WireframeSettings => |v| [v.thickness_var, v.thickness, v.smoothing, v.stipple_length];
 }
 
-/// One public mirror function, evaluated on drawn arguments; returns the result's floats.
+/// One public mirror function, evaluated on drawn arguments.
 pub struct MirrorFunction {
     /// The module.
     pub module: Module,
     /// The function's name in the Rust module.
     pub name: &'static str,
-    run: fn(&mut Draw) -> Vec<f32>,
+    /// Evaluates the function; returns its result's floats when one of them is not finite.
+    run: fn(&mut Draw) -> Option<Vec<f32>>,
 }
 
 /// The `cpu_mirror` target.
 pub fn cpu_mirror(data: &[u8]) -> Result<(), String> {
     for function in functions() {
         for mode in [Mode::Raw, Mode::Domain] {
-            evaluate(&function, data, mode)?;
+            evaluate(function, data, mode)?;
         }
     }
     Ok(())
@@ -320,7 +328,7 @@ pub fn cpu_mirror(data: &[u8]) -> Result<(), String> {
 
 fn evaluate(function: &MirrorFunction, data: &[u8], mode: Mode) -> Result<(), String> {
     let mut draw = Draw::new(data, mode);
-    let floats = (function.run)(&mut draw);
+    let non_finite = (function.run)(&mut draw);
     let promised = match mode {
         Mode::Domain => true,
         Mode::Raw => draw.finite && function.module == Module::Wireframe,
@@ -329,7 +337,7 @@ fn evaluate(function: &MirrorFunction, data: &[u8], mode: Mode) -> Result<(), St
         return Ok(());
     }
     let mut problems = draw.violations;
-    if floats.iter().any(|x| !x.is_finite()) {
+    if let Some(floats) = non_finite {
         problems.push(format!("non-finite output {floats:?}"));
     }
     if problems.is_empty() {
@@ -350,39 +358,41 @@ macro_rules! f {
         MirrorFunction {
             module: Module::$module,
             name: stringify!($name),
-            run: |$d| {
-                let mut out = Vec::new();
-                Floats::floats(&$body, &mut out);
-                out
-            },
+            run: |$d| non_finite(&$body),
         }
     };
 }
 
+/// The floats of `value` when one of them is not finite.
+fn non_finite<T: Floats>(value: &T) -> Option<Vec<f32>> {
+    let mut finite = true;
+    value.each_float(&mut |x| finite &= x.is_finite());
+    (!finite).then(|| value.floats())
+}
+
 /// Evaluates `value`, records a range check on it, and returns it.
 fn within<T: Floats>(d: &mut Draw, value: T, lo: f32, hi: f32, what: &str) -> T {
-    let mut out = Vec::new();
-    value.floats(&mut out);
-    for x in out {
-        d.within(x, lo, hi, what);
-    }
+    value.each_float(&mut |x| d.within(x, lo, hi, what));
     value
 }
 
 /// `F64_MAX_VALUE` as the f32 the functions return.
 const F64_MAX: f32 = rd64::F64_MAX_VALUE as f32;
 
-/// Every public function of the mirror modules, in module order.
-pub fn functions() -> Vec<MirrorFunction> {
-    [
-        ray_cone_functions(),
-        ray_diff_functions(),
-        ray_diff_f64_functions(),
-        wireframe_functions(),
-    ]
-    .into_iter()
-    .flatten()
-    .collect()
+/// Every public function of the mirror modules, in module order (built once).
+pub fn functions() -> &'static [MirrorFunction] {
+    static FUNCTIONS: std::sync::OnceLock<Vec<MirrorFunction>> = std::sync::OnceLock::new();
+    FUNCTIONS.get_or_init(|| {
+        [
+            ray_cone_functions(),
+            ray_diff_functions(),
+            ray_diff_f64_functions(),
+            wireframe_functions(),
+        ]
+        .into_iter()
+        .flatten()
+        .collect()
+    })
 }
 
 fn ray_cone_functions() -> Vec<MirrorFunction> {

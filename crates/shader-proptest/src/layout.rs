@@ -129,7 +129,12 @@ impl fmt::Display for LayoutError {
                 "{structure}: {uncovered} byte(s) of the Rust struct are not covered by the listed fields \
                  (implicit padding or unlisted fields)"
             ),
-            LayoutError::Mismatch(table) => write!(f, "layout mismatch:\n{table}"),
+            LayoutError::Mismatch(table) => write!(
+                f,
+                "{}: offset or size differs at {}:\n{table}",
+                table.shader.name,
+                table.mismatches().join(", ")
+            ),
         }
     }
 }
@@ -246,11 +251,12 @@ pub fn compare(rust: &StructLayout, shader: &StructLayout) -> Result<LayoutTable
     {
         return Err(missing(&field.name, "shader"));
     }
-    let covered: u32 = rust.fields.iter().map(|field| field.size).sum();
-    if covered < rust.size {
+    // Summed in 64 bits: the fields of a hand-made layout may add up past u32::MAX.
+    let covered: u64 = rust.fields.iter().map(|field| u64::from(field.size)).sum();
+    if covered < u64::from(rust.size) {
         return Err(LayoutError::ImplicitPadding {
             structure: shader.name.clone(),
-            uncovered: rust.size - covered,
+            uncovered: rust.size - covered as u32,
         });
     }
     let rust_in_shader_order = StructLayout {
@@ -310,42 +316,63 @@ pub fn wgsl_layout(source: &str, name: &str) -> Result<StructLayout, LayoutError
 /// The layout glslang gives the GLSL struct `name` (declared in `source`, a module without
 /// `#version` or `main`, which may `#include` files from `include_dirs`) as the element of a
 /// runtime array in a `packing` storage block: field offsets from the SPIR-V `Offset` decorations,
-/// the size from the array's `ArrayStride`. Needs `glslangValidator` on the `PATH`.
+/// the size from the array's `ArrayStride`. Needs `glslangValidator` on the `PATH`. Compiler
+/// errors name the lines of `source` as `source:LINE`.
 pub fn glsl_layout(
     source: &str,
     name: &str,
     packing: GlslPacking,
     include_dirs: &[&Path],
 ) -> Result<StructLayout, LayoutError> {
+    if !is_identifier(name) {
+        return Err(LayoutError::StructNotFound(name.to_string()));
+    }
+    // `#line 1` numbers the lines of `source` from 1; the probe block follows on the next line.
     let probe = format!(
         "#version 460\n#extension GL_GOOGLE_include_directive : require\n\
-         #extension GL_EXT_scalar_block_layout : require\n{source}\n\
+         #extension GL_EXT_scalar_block_layout : require\n#line 1\n{source}\n\
          layout({}, set = 0, binding = 0) readonly buffer LayoutProbe {{ {name} layout_probe[]; }};\n\
          layout(local_size_x = 1) in;\nvoid main() {{}}\n",
         packing.qualifier()
     );
-    // The probe block is on the line after the source; errors there alone mean `name` is not a
-    // type the source declares.
-    let probe_line = 3 + source.lines().count() + 1;
+    let probe_line = source.matches('\n').count() + 2;
     let spirv =
         compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs).map_err(
             |error| match error {
                 CompileError::NotRun(message) => LayoutError::Source(message),
                 CompileError::Failed { log, source_path } => {
-                    let at_probe = format!("{source_path}:{probe_line}:");
-                    let errors: Vec<&str> = log
-                        .lines()
-                        .filter(|l| l.starts_with("ERROR: ") && l.contains(&source_path))
-                        .collect();
-                    if !errors.is_empty() && errors.iter().all(|l| l.contains(&at_probe)) {
-                        LayoutError::StructNotFound(name.to_string())
-                    } else {
-                        LayoutError::Source(log)
-                    }
+                    glsl_compile_error(&log.replace(&source_path, "source"), name, probe_line)
                 }
             },
         )?;
     spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
+}
+
+/// Whether `name` is a GLSL identifier (ASCII letters, digits and `_`, not starting with a digit).
+fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars
+        .next()
+        .is_some_and(|first| first.is_ascii_alphabetic() || first == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// The error for a failed probe compile: errors at the probe block alone mean `name` is not a type
+/// the source declares; otherwise glslang's errors about the source (`source:LINE: ...`).
+fn glsl_compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError {
+    let errors: Vec<&str> = log
+        .lines()
+        .filter_map(|line| line.strip_prefix("ERROR: "))
+        .filter(|line| !line.contains("compilation errors") && !line.starts_with("Linking"))
+        .collect();
+    let at_probe = format!("source:{probe_line}:");
+    if !errors.is_empty() && errors.iter().all(|line| line.starts_with(&at_probe)) {
+        LayoutError::StructNotFound(name.to_string())
+    } else if errors.is_empty() {
+        LayoutError::Source(log.to_string())
+    } else {
+        LayoutError::Source(errors.join("\n"))
+    }
 }
 
 /// The layout slangc gives the Slang struct `name` (declared in `source`, which may `import` or
@@ -360,6 +387,9 @@ pub fn slang_layout(
     packing: GlslPacking,
     search_dirs: &[&Path],
 ) -> Result<StructLayout, LayoutError> {
+    if !is_identifier(name) {
+        return Err(LayoutError::StructNotFound(name.to_string()));
+    }
     let probe = format!(
         "{source}
 [[vk::binding(0, 0)]] RWStructuredBuffer<{name}, {}> layout_probe;
@@ -369,24 +399,15 @@ pub fn slang_layout(
 ",
         packing.slang_layout()
     );
-    // The probe buffer is on the line after the source; errors there alone mean `name` is not a
-    // type the source declares.
-    let probe_line = source.lines().count() + 1;
+    // The probe buffer is on the line after the source (counted from the newlines, so that a source
+    // ending in one counts right); errors there alone mean `name` is not a type the source declares.
+    let probe_line = source.matches('\n').count() + 2;
     let spirv =
         compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs).map_err(
             |error| match error {
                 CompileError::NotRun(message) => LayoutError::Source(message),
                 CompileError::Failed { log, source_path } => {
-                    let at_probe = format!("{source_path}:{probe_line}:");
-                    let errors: Vec<&str> = log
-                        .lines()
-                        .filter(|l| l.trim_start().starts_with("--> "))
-                        .collect();
-                    if !errors.is_empty() && errors.iter().all(|l| l.contains(&at_probe)) {
-                        LayoutError::StructNotFound(name.to_string())
-                    } else {
-                        LayoutError::Source(log)
-                    }
+                    slang_compile_error(&log.replace(&source_path, "source"), name, probe_line)
                 }
             },
         )?;
@@ -394,6 +415,21 @@ pub fn slang_layout(
         .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
     layout.name = name.to_string();
     Ok(layout)
+}
+
+/// The error for a failed Slang probe compile: errors (slangc's `--> source:LINE:` lines) at the probe
+/// buffer alone mean `name` is not a type the source declares; otherwise slangc's log.
+fn slang_compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError {
+    let at_probe = format!("source:{probe_line}:");
+    let errors: Vec<&str> = log
+        .lines()
+        .filter(|line| line.trim_start().starts_with("--> "))
+        .collect();
+    if !errors.is_empty() && errors.iter().all(|line| line.contains(&at_probe)) {
+        LayoutError::StructNotFound(name.to_string())
+    } else {
+        LayoutError::Source(log.to_string())
+    }
 }
 
 /// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.

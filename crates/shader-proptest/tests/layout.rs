@@ -128,3 +128,40 @@ fn implicit_padding_is_reported() {
         })
     );
 }
+
+/// The GLSL and Slang readers compile the source with a probe after it: a struct the source does not
+/// declare (also after a final newline) and a name that is not an identifier are `StructNotFound`,
+/// and an error in the source is reported at the source's own line.
+#[test]
+fn probe_errors_name_the_struct_or_the_source_line() {
+    type Reader = fn(&str, &str) -> Result<layout::StructLayout, LayoutError>;
+    let readers: [(&str, Reader); 2] = [
+        ("GLSL", |source, name| {
+            layout::glsl_layout(source, name, GlslPacking::Std430, &[])
+        }),
+        ("Slang", |source, name| {
+            layout::slang_layout(source, name, GlslPacking::Std430, &[])
+        }),
+    ];
+    for (language, read) in readers {
+        for (source, name) in [
+            ("struct Probe { float a; };\n", "Missing"),
+            ("struct Probe { float a; };\n\n", "Missing"),
+            ("struct Probe { float a; };", "Probe p; float"),
+            ("struct Probe { float a; };", ""),
+        ] {
+            assert_eq!(
+                read(source, name),
+                Err(LayoutError::StructNotFound(name.into())),
+                "{language}: {source:?}, {name:?}"
+            );
+        }
+        match read("struct Probe { float a; };\nstruct Broken { float b }", "Probe") {
+            Err(LayoutError::Source(log)) => {
+                assert!(log.contains("source:2:"), "{language}: {log}");
+                println!("{language}: {}", log.lines().next().unwrap_or_default());
+            }
+            other => panic!("{language}: expected a source error, got {other:?}"),
+        }
+    }
+}
