@@ -4,8 +4,8 @@ use super::table::{cone, direction_at, mirror, same, value, widest, INF, NAN};
 use super::{Degenerate, Table};
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_cone::{
-    self as rc, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS, MIN_MAGNITUDE,
-    MIN_ROUGHNESS_DENOMINATOR,
+    self as rc, PackedRayCone, F16_MAX, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS,
+    MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
 };
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::checks::ray_cone as cone_suite;
@@ -30,20 +30,61 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             module: Module::RayCone,
             function: "pack_ray_cone",
             mirror: |(c,)| rc::pack_ray_cone(c),
-            // Compared unpacked; packHalf2x16's rounding is the implementation's (one f16 ULP).
-            tolerance: |_, e| e.abs() / 1024.0,
+            // Compared unpacked; packHalf2x16's rounding is the implementation's (one f16 ULP:
+            // 2^-10 relative, 2^-24 absolute for f16 sub-normals).
+            tolerance: |_, e| (e.abs() / 1024.0).max(1.0 / 16_777_216.0),
             rows: vec![
                 value(
                     "values beyond f16 (1e9, -1e9)",
                     "(F16_MAX, -F16_MAX), never infinite",
                     (cone(1.0e9, -1.0e9),),
-                    vec![rc::F16_MAX, -rc::F16_MAX],
+                    vec![F16_MAX, -F16_MAX],
+                ),
+                value(
+                    "halfway between two f16 (1 + 2^-11)",
+                    "1 (ties to even)",
+                    (cone(1.0 + 1.0 / 2048.0, 0.0),),
+                    vec![1.0, 0.0],
+                ),
+                value(
+                    "below half the smallest f16 sub-normal (2^-26)",
+                    "0 (rounds to nearest)",
+                    (cone(1.0 / 67_108_864.0, -1.0 / 67_108_864.0),),
+                    vec![0.0, 0.0],
                 ),
                 mirror(
                     "infinity in (width)",
                     "CPU: (F16_MAX, spread)",
                     (cone(INF, 0.5),),
-                    vec![rc::F16_MAX, 0.5],
+                    vec![F16_MAX, 0.5],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
+            function: "unpack_ray_cone",
+            mirror: |(packed,)| rc::unpack_ray_cone(packed),
+            // f16 to f32 is exact.
+            tolerance: |_, _| 0.0,
+            rows: vec![
+                value("zero bits", "(0, 0)", (PackedRayCone(0),), vec![0.0, 0.0]),
+                value(
+                    "largest finite f16 (0x7bff, 0xfbff)",
+                    "(F16_MAX, -F16_MAX)",
+                    (PackedRayCone(0xfbff_7bff),),
+                    vec![F16_MAX, -F16_MAX],
+                ),
+                value(
+                    "smallest f16 sub-normal (0x0001), negative zero (0x8000)",
+                    "(2^-24, -0), exact",
+                    (PackedRayCone(0x8000_0001),),
+                    vec![1.0 / 16_777_216.0, -0.0],
+                ),
+                mirror(
+                    "f16 infinity and NaN bits (0x7c00, 0x7e00)",
+                    "CPU: (inf, NaN)",
+                    (PackedRayCone(0x7e00_7c00),),
+                    vec![INF, NAN],
                 ),
             ],
         }),
@@ -192,6 +233,8 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     (2.0, 0.0),
                     vec![2.0, 0.0],
                 ),
+                same("negative viewport (H = -5)", "as H = 1", (2.0, -5.0), (2.0, 1.0)),
+                value("zero view height", "(0, 0)", (0.0, 1080.0), vec![0.0, 0.0]),
                 mirror(
                     "infinity in (view_height)",
                     "CPU: (inf, 0)",
@@ -293,11 +336,51 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     (Vec3::ZERO, Vec3::ZERO),
                     vec![0.0],
                 ),
+                value(
+                    "one derivative zero, the other of length 2",
+                    "2 atan(1) = pi / 2",
+                    (Vec3::ZERO, Vec3::new(0.0, 0.0, -2.0)),
+                    vec![std::f32::consts::FRAC_PI_2],
+                ),
+                value(
+                    "sub-normal derivatives (1e-40 each)",
+                    "0 (the squares underflow)",
+                    (Vec3::splat(1.0e-40), Vec3::splat(-1.0e-40)),
+                    vec![0.0],
+                ),
                 mirror(
                     "infinity in",
                     "CPU: pi (2 atan(inf))",
                     (Vec3::new(INF, 0.0, 0.0), Vec3::ZERO),
                     vec![std::f32::consts::PI],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
+            function: "normal_spread_angle_small",
+            mirror: |(dx, dy)| rc::normal_spread_angle_small(dx, dy),
+            // A sum of squares (3 roundings, 1.5 after the root) and a square root (inherited from
+            // inversesqrt and a division: 4.5 ULP).
+            tolerance: |_, e| ulps(6.0, e),
+            rows: vec![
+                value(
+                    "zero normal derivatives (flat)",
+                    "0",
+                    (Vec3::ZERO, Vec3::ZERO),
+                    vec![0.0],
+                ),
+                value(
+                    "derivatives (3, 0, 0) and (0, -4, 0)",
+                    "5, the length of both together",
+                    (Vec3::new(3.0, 0.0, 0.0), Vec3::new(0.0, -4.0, 0.0)),
+                    vec![5.0],
+                ),
+                value(
+                    "sub-normal derivatives (1e-40 each)",
+                    "0 (the squares underflow)",
+                    (Vec3::splat(1.0e-40), Vec3::splat(-1.0e-40)),
+                    vec![0.0],
                 ),
             ],
         }),
@@ -313,6 +396,18 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO),
                     vec![-1.0],
                 ),
+                value(
+                    "convex (dot(dp_dx, dn_dx) = 1)",
+                    "1",
+                    (x, Vec3::ZERO, x, Vec3::ZERO),
+                    vec![1.0],
+                ),
+                value(
+                    "terms cancelling to exactly 0 (1 - 1)",
+                    "-1 (sign(0) = -1)",
+                    (x, Vec3::Y, x, Vec3::NEG_Y),
+                    vec![-1.0],
+                ),
                 mirror(
                     "NaN in",
                     "CPU: -1 (NaN > 0 is false)",
@@ -323,10 +418,52 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
         }),
         Box::new(Table {
             module: Module::RayCone,
+            function: "surface_spread_angle",
+            mirror: |(phi, s, k1, k2)| rc::surface_spread_angle(phi, s, k1, k2),
+            // Three products and a sum: 4 roundings of the terms.
+            tolerance: |&(phi, s, k1, k2), _| ulps(4.0, (2.0 * k1 * s * phi).abs() + k2.abs()),
+            rows: vec![
+                value(
+                    "flat (phi = 0), RTG's k1 = 1, k2 = 0",
+                    "0",
+                    (0.0, 1.0, 1.0, 0.0),
+                    vec![0.0],
+                ),
+                value(
+                    "concave (s = -1), phi = 0.25",
+                    "-2 phi = -0.5: the cone narrows",
+                    (0.25, -1.0, 1.0, 0.0),
+                    vec![-0.5],
+                ),
+                value(
+                    "k1 = 0",
+                    "k2: the curvature is ignored",
+                    (0.25, 1.0, 0.0, 0.125),
+                    vec![0.125],
+                ),
+            ],
+        }),
+        Box::new(Table {
+            module: Module::RayCone,
             function: "edge_curvature",
             mirror: |(pi, pj, ni, nj)| rc::edge_curvature(pi, pj, ni, nj),
             tolerance: |_, e| ulps(6.0, e),
-            rows: vec![value("zero-length edge", "0", (x, x, z, x), vec![0.0])],
+            rows: vec![
+                value("zero-length edge", "0", (x, x, z, x), vec![0.0]),
+                value(
+                    "edge of the unit sphere (p = n: x, then y)",
+                    "1 (1 / R)",
+                    (x, Vec3::Y, x, Vec3::Y),
+                    vec![1.0],
+                ),
+                value("equal normals (flat)", "0", (Vec3::ZERO, x, z, z), vec![0.0]),
+                value(
+                    "edge of length 1e-12 (|edge|^2 below MIN_MAGNITUDE)",
+                    "dot(n_j - n_i, edge) / MIN_MAGNITUDE",
+                    (Vec3::ZERO, Vec3::new(1.0e-12, 0.0, 0.0), Vec3::ZERO, x),
+                    vec![1.0e-12 / MIN_MAGNITUDE],
+                ),
+            ],
         }),
         Box::new(Table {
             module: Module::RayCone,
@@ -334,12 +471,32 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             mirror: |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
             // Three curvatures (dot 3 ULP, division 2.5 ULP) of magnitude <= 1, summed and divided.
             tolerance: |_, _| ulps(10.0, 1.0),
-            rows: vec![value(
-                "zero-area triangle (p2 = p0)",
-                "the mean of the two real edges' curvatures (the zero edge counts 0): 2/3 here",
-                (Vec3::ZERO, x, Vec3::ZERO, z, x, z),
-                vec![(1.0 + 1.0 + 0.0) / 3.0],
-            )],
+            rows: vec![
+                value(
+                    "zero-area triangle (p2 = p0)",
+                    "the mean of the two real edges' curvatures (the zero edge counts 0): 2/3 here",
+                    (Vec3::ZERO, x, Vec3::ZERO, z, x, z),
+                    vec![(1.0 + 1.0 + 0.0) / 3.0],
+                ),
+                value(
+                    "flat (equal vertex normals)",
+                    "0",
+                    (Vec3::ZERO, x, Vec3::Y, z, z, z),
+                    vec![0.0],
+                ),
+                value(
+                    "vertices and outward normals x, y, z of the unit sphere",
+                    "1 (each edge 1 / R)",
+                    (x, Vec3::Y, z, x, Vec3::Y, z),
+                    vec![1.0],
+                ),
+                value(
+                    "all three vertices at one point",
+                    "0 (three zero-length edges)",
+                    (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, z, x, Vec3::Y),
+                    vec![0.0],
+                ),
+            ],
         }),
         Box::new(Table {
             module: Module::RayCone,
@@ -465,7 +622,22 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             function: "triangle_uv_area2",
             mirror: |(a, b, c)| rc::triangle_uv_area2(a, b, c),
             tolerance: |_, e| ulps(2.0, e),
-            rows: vec![value("collinear UVs", "0", collinear_uv, vec![0.0])],
+            rows: vec![
+                value("collinear UVs", "0", collinear_uv, vec![0.0]),
+                value(
+                    "repeated vertex",
+                    "0",
+                    (Vec2::ZERO, Vec2::X, Vec2::ZERO),
+                    vec![0.0],
+                ),
+                value("unit right triangle", "1", unit_uv, vec![1.0]),
+                value(
+                    "clockwise unit right triangle",
+                    "1 (the absolute value)",
+                    (Vec2::ZERO, Vec2::Y, Vec2::X),
+                    vec![1.0],
+                ),
+            ],
         }),
         Box::new(Table {
             module: Module::RayCone,
@@ -492,6 +664,32 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                         collinear_uv.2,
                     ),
                     vec![0.0],
+                ),
+                value(
+                    "zero-area triangle and collinear UVs",
+                    "0 (0 / sqrt(MIN_MAGNITUDE))",
+                    (
+                        Vec3::ZERO,
+                        x,
+                        Vec3::ZERO,
+                        collinear_uv.0,
+                        collinear_uv.1,
+                        collinear_uv.2,
+                    ),
+                    vec![0.0],
+                ),
+                value(
+                    "unit right triangle in both spaces",
+                    "1",
+                    (
+                        unit_world.0,
+                        unit_world.1,
+                        unit_world.2,
+                        unit_uv.0,
+                        unit_uv.1,
+                        unit_uv.2,
+                    ),
+                    vec![1.0],
                 ),
             ],
         }),
@@ -599,6 +797,8 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0],
                 ),
                 value("negative footprint", "|footprint| scale", (-0.5, 2.0), vec![1.0]),
+                value("scale 0", "0 (samples mip 0)", (0.5, 0.0), vec![0.0]),
+                value("zero footprint", "0", (0.0, 2.0), vec![0.0]),
             ],
         }),
         Box::new(Table {
