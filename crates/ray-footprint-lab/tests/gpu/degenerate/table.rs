@@ -91,3 +91,19 @@ pub(super) fn offset_args() -> OffsetArgs {
         Vec3::new(0.25, 0.25, 0.5),
     )
 }
+
+/// Re-intersection arguments with the triangle `(0, 0, -5)`, `(1, 0, -5)`, `(0, 1, -5)` seen from
+/// the origin, hit `(0.25, 0.25, 0.5)` and the given neighbour directions.
+pub(super) fn plane_offset_args(direction_x: Vec3, direction_y: Vec3) -> OffsetArgs {
+    let p0 = Vec3::new(0.0, 0.0, -5.0);
+    (
+        Mat4::IDENTITY,
+        Vec3::ZERO,
+        p0,
+        p0 + Vec3::X,
+        p0 + Vec3::Y,
+        direction_x,
+        direction_y,
+        Vec3::new(0.25, 0.25, 0.5),
+    )
+}

@@ -49,6 +49,34 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                         ..WIREFRAME_DEFAULT
                     }),
                 ),
+                value(
+                    "flags 0",
+                    "false",
+                    (WireframeSettingsIo {
+                        stipple: 0,
+                        screen_space: 0,
+                        ..WIREFRAME_DEFAULT.pack()
+                    },),
+                    parts(WireframeSettings {
+                        stipple: false,
+                        screen_space: false,
+                        ..WIREFRAME_DEFAULT
+                    }),
+                ),
+                value(
+                    "flags -1 (negative)",
+                    "true (any non-zero)",
+                    (WireframeSettingsIo {
+                        stipple: -1,
+                        screen_space: -1,
+                        ..WIREFRAME_DEFAULT.pack()
+                    },),
+                    parts(WireframeSettings {
+                        stipple: true,
+                        screen_space: true,
+                        ..WIREFRAME_DEFAULT
+                    }),
+                ),
             ],
         }),
         Box::new(Table {
@@ -56,12 +84,27 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             function: "edge_position",
             mirror: |(b,)| wf::edge_position(b),
             tolerance: |_, _| 0.0,
-            rows: vec![mirror(
-                "NaN in (b.x)",
-                "CPU: max(b.y, b.z) (Rust's `max` ignores NaN)",
-                (Vec3::new(NAN, 0.2, 0.3),),
-                vec![0.3],
-            )],
+            rows: vec![
+                mirror(
+                    "NaN in (b.x)",
+                    "CPU: max(b.y, b.z) (Rust's `max` ignores NaN)",
+                    (Vec3::new(NAN, 0.2, 0.3),),
+                    vec![0.3],
+                ),
+                value("at a vertex (0, 1, 0)", "1", (Vec3::Y,), vec![1.0]),
+                value(
+                    "at the centroid (1/3 each)",
+                    "1/3",
+                    (Vec3::splat(1.0 / 3.0),),
+                    vec![1.0 / 3.0],
+                ),
+                value(
+                    "outside the triangle (-0.5, 0.75, 0.75)",
+                    "0.75, the largest component",
+                    (Vec3::new(-0.5, 0.75, 0.75),),
+                    vec![0.75],
+                ),
+            ],
         }),
         Box::new(Table {
             module: Module::Wireframe,
