@@ -11,7 +11,11 @@
 //!   infinity handling to the implementation (and WGSL lets a compiler assume neither occurs), so
 //!   the shaders' outputs are printed, not asserted.
 
+mod ray_cone;
+mod ray_diff;
+mod ray_diff_f64;
 mod table;
+mod wireframe;
 
 use super::gpu;
 use ray_footprint::shaders::Module;
