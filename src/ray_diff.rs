@@ -253,7 +253,8 @@ fn safe_normalize(v: Vec3) -> Vec3 {
 }
 
 /// World direction of the ray through normalized device coordinates `ndc` (wireframe tutorial's
-/// primary-ray generator): `view_inv * (normalize((proj_inv * (ndc, 1, 1)).xyz), 0)`.
+/// primary-ray generator): `view_inv * (normalize((proj_inv * (ndc, 1, 1)).xyz), 0)`, normalised as
+/// [`eye_ray_direction_from_matrices`] says.
 fn matrix_ray_direction(ndc: Vec2, view_inv: Mat4, proj_inv: Mat4) -> Vec3 {
     let far_point = proj_inv * Vec4::new(ndc.x, ndc.y, 1.0, 1.0);
     (view_inv * safe_normalize(far_point.xyz()).extend(0.0)).xyz()
@@ -261,7 +262,9 @@ fn matrix_ray_direction(ndc: Vec2, view_inv: Mat4, proj_inv: Mat4) -> Vec3 {
 
 /// Eye-ray direction through pixel `pixel` from the inverse view and projection matrices (wireframe
 /// tutorial): `view_inv * (normalize((proj_inv * (ndc, 1, 1)).xyz), 0)` with
-/// `ndc = ((pixel + 0.5) / size) * 2 - 1`. Unit length when `view_inv` is a rigid transform. The ray
+/// `ndc = ((pixel + 0.5) / size) * 2 - 1`, where the normalisation divides by
+/// `sqrt(max(|h|^2, DIFF_MIN_MAGNITUDE))` for the far point `h`: unit length when `view_inv` is a
+/// rigid transform and `|h|^2 >= DIFF_MIN_MAGNITUDE`, shorter (zero for a zero matrix) below. The ray
 /// origin is `view_inv * (0, 0, 0, 1)`. The projection's y flip (Vulkan) is simply applied.
 pub fn eye_ray_direction_from_matrices(
     pixel: Vec2,
