@@ -27,8 +27,8 @@ pub use lab::{
     convergence, run, Convergence, LabRun, LabSettings, MethodResult, Progress, Quiet, SceneResult,
 };
 pub use scenes::{
-    hard_lines, not_a_texture_method, LabScene, Mask, Measure, Method, FINE_CHECKER_SQUARE,
-    PLANE_MASK_DISTANCE,
+    hard_lines, not_a_texture_method, LabScene, Mask, Measure, Method, CORNERS_FOV_Y_DEGREES,
+    CORNERS_MASK_DEGREES, FINE_CHECKER_SQUARE, PLANE_MASK_DISTANCE,
 };
 
 use crate::figure::FigureError;
