@@ -537,8 +537,9 @@ fn refracted_direction(
 /// `diff` is then the reflected differential ([`reflect_ray_diff`]): the same derivative with
 /// `eta = 1`, `mu = 2 dot(D, N)` and `rate = 2`, since `R = D - 2 dot(D, N) N` is `T` with those.
 /// The shaders compute both sets and select one (no branch); the products with 1 and 2 are exact,
-/// so the result is `reflect_ray_diff`'s bit for bit. `dot(T, N)` is clamped away from 0 to
-/// `|dot(T, N)| >= DIFF_MIN_COS` (the critical angle, where `dmu` diverges).
+/// so the result is `reflect_ray_diff`'s bit for bit. In `dmu`, `dot(T, N)` is kept at least
+/// `DIFF_MIN_COS` from 0 with its own sign, `-sign(dot(D, N))`, also at exactly the critical angle
+/// (`k = 0`, where `dmu` diverges and `sqrt(k)` carries no sign).
 pub fn refract_ray_diff(
     diff: RayDiff,
     direction: Vec3,
@@ -552,7 +553,13 @@ pub fn refract_ray_diff(
     let root = k.max(0.0).sqrt();
     let transmitted_cos = if cosine <= 0.0 { -root } else { root };
     let mu = eta * cosine - transmitted_cos;
-    let rate = eta - eta * eta * cosine / clamp_away_from_zero(transmitted_cos, DIFF_MIN_COS);
+    let clamped_root = root.max(DIFF_MIN_COS);
+    let clamped_cos = if cosine <= 0.0 {
+        -clamped_root
+    } else {
+        clamped_root
+    };
+    let rate = eta - eta * eta * cosine / clamped_cos;
     let (ratio, normal_scale, normal_rate) = if total_internal_reflection {
         (1.0, 2.0 * cosine, 2.0)
     } else {

@@ -773,3 +773,48 @@ fn ray_diff_layout() {
     let words: &[f32] = bytemuck::cast_slice(std::slice::from_ref(&diff));
     assert_eq!([words[3], words[7], words[11], words[15]], [0.0; 4]);
 }
+
+/// At exactly the critical angle (`k = 0`) refraction continues the angles just short of it:
+/// `dot(T, N)` is `-sqrt(k)`, which at `k = 0` is `-0`, and keeping it `DIFF_MIN_COS` away from 0
+/// must keep that sign. With `eta = 2` the critical cosine is `-sqrt(3) / 2`: `cos^2` rounds to
+/// exactly 0.75 in f32, so `k = 1 - 4 (1 - 0.75)` is exactly 0; one ULP more head-on, `k` is
+/// 2.4e-7 and `dot(T, N) = -4.9e-4`. A change of direction along the normal is amplified by
+/// `rate = 2 - 4 cos / dot(T, N)`: about `2 - 7094` there and `2 - 3.46 / DIFF_MIN_COS` at the
+/// critical angle, the same sign and larger; a clamp to `+DIFF_MIN_COS` would flip it.
+#[test]
+fn refraction_keeps_its_sign_at_the_critical_angle() {
+    let normal = Vec3::Z;
+    let d_normal = Derivatives3 {
+        dx: Vec3::ZERO,
+        dy: Vec3::ZERO,
+    };
+    let diff = RayDiff::new(Vec3::ZERO, Vec3::ZERO, Vec3::Z, Vec3::Z);
+    let refracted_at = |cosine: f32| {
+        let direction = Vec3::new((1.0 - cosine * cosine).sqrt(), 0.0, cosine);
+        let k = 1.0 - 4.0 * (1.0 - cosine * cosine);
+        (k, rd::refract_ray_diff(diff, direction, normal, d_normal, 2.0))
+    };
+    let critical = -0.866_025_4f32;
+    let (k_critical, at) = refracted_at(critical);
+    let (k_short, short) = refracted_at(f32::from_bits(critical.to_bits() + 1));
+    println!(
+        "k = {k_critical:e}: dT/dx = {:?}; k = {k_short:e}: dT/dx = {:?}",
+        at.diff.d_direction_dx, short.diff.d_direction_dx
+    );
+    assert_eq!(k_critical, 0.0, "the test's angle is not the critical one");
+    assert!(k_short > 0.0 && !short.total_internal_reflection && !at.total_internal_reflection);
+    let (at_z, short_z) = (at.diff.d_direction_dx.z, short.diff.d_direction_dx.z);
+    assert!(
+        short_z > 1.0e3,
+        "the change of direction is not amplified: {short_z}"
+    );
+    assert!(
+        at_z >= short_z,
+        "at the critical angle the change turns or shrinks: {at_z} against {short_z} just short of it"
+    );
+    let clamp_bound = 2.0 + 4.0 * critical.abs() / rd::DIFF_MIN_COS;
+    assert!(
+        at_z <= clamp_bound * 1.0001,
+        "beyond the clamp: {at_z} > {clamp_bound}"
+    );
+}

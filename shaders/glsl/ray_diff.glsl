@@ -279,7 +279,8 @@ vec3 rf_refracted_direction(vec3 d_direction, vec3 direction, vec3 normal, vec3 
 }
 
 // Refracted differential with relative index eta (Igehy): mu = eta dot(D, N) - dot(T, N),
-// rate = eta - eta^2 dot(D, N) / dot(T, N) (dot(T, N) clamped away from 0 to RF_DIFF_MIN_COS).
+// rate = eta - eta^2 dot(D, N) / dot(T, N) (dot(T, N) kept RF_DIFF_MIN_COS from 0 with its own sign,
+// -sign(dot(D, N)), also at exactly the critical angle).
 // Total internal reflection (k = 1 - eta^2 (1 - dot(D, N)^2) < 0): the reflected differential, the
 // same derivative with eta = 1, mu = 2 dot(D, N), rate = 2 (selected, no branch), and the flag set.
 RfRefractedRayDiff rf_refract_ray_diff(RfRayDiff diff, vec3 direction, vec3 normal, RfDerivatives3 d_normal,
@@ -290,7 +291,9 @@ RfRefractedRayDiff rf_refract_ray_diff(RfRayDiff diff, vec3 direction, vec3 norm
     float root = sqrt(max(k, 0.0));
     float transmitted_cos = mix(root, -root, cosine <= 0.0);
     float mu = eta * cosine - transmitted_cos;
-    float rate = eta - eta * eta * cosine / rf_clamp_away_from_zero(transmitted_cos, RF_DIFF_MIN_COS);
+    float clamped_root = max(root, RF_DIFF_MIN_COS);
+    float clamped_cos = mix(clamped_root, -clamped_root, cosine <= 0.0);
+    float rate = eta - eta * eta * cosine / clamped_cos;
     float ratio = mix(eta, 1.0, total_internal_reflection);
     float normal_scale = mix(mu, 2.0 * cosine, total_internal_reflection);
     float normal_rate = mix(rate, 2.0, total_internal_reflection);

@@ -304,7 +304,8 @@ fn rf_refracted_direction(
 }
 
 // Refracted differential with relative index eta (Igehy): mu = eta dot(D, N) - dot(T, N),
-// rate = eta - eta^2 dot(D, N) / dot(T, N) (dot(T, N) clamped away from 0 to RF_DIFF_MIN_COS).
+// rate = eta - eta^2 dot(D, N) / dot(T, N) (dot(T, N) kept RF_DIFF_MIN_COS from 0 with its own sign,
+// -sign(dot(D, N)), also at exactly the critical angle).
 // Total internal reflection (k = 1 - eta^2 (1 - dot(D, N)^2) < 0): the reflected differential, the
 // same derivative with eta = 1, mu = 2 dot(D, N), rate = 2 (selected, no branch), and the flag set.
 fn rf_refract_ray_diff(
@@ -316,7 +317,9 @@ fn rf_refract_ray_diff(
     let root = sqrt(max(k, 0.0));
     let transmitted_cos = select(root, -root, cosine <= 0.0);
     let mu = eta * cosine - transmitted_cos;
-    let rate = eta - eta * eta * cosine / rf_clamp_away_from_zero(transmitted_cos, RF_DIFF_MIN_COS);
+    let clamped_root = max(root, RF_DIFF_MIN_COS);
+    let clamped_cos = select(clamped_root, -clamped_root, cosine <= 0.0);
+    let rate = eta - eta * eta * cosine / clamped_cos;
     let ratio = select(eta, 1.0, total_internal_reflection);
     let normal_scale = select(mu, 2.0 * cosine, total_internal_reflection);
     let normal_rate = select(rate, 2.0, total_internal_reflection);

@@ -420,7 +420,15 @@ fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I
         root.hull(-root)
     };
     let mu = eta * cosine - transmitted_cos;
-    let rate = eta - (eta * eta * cosine).div_away(transmitted_cos, f64::from(DIFF_MIN_COS));
+    let clamped_root = root.max_c(f64::from(DIFF_MIN_COS));
+    let clamped_cos = if cosine.hi <= 0.0 {
+        -clamped_root
+    } else if cosine.lo > 0.0 {
+        clamped_root
+    } else {
+        clamped_root.hull(-clamped_root)
+    };
+    let rate = eta - (eta * eta * cosine).div_away(clamped_cos, f64::from(DIFF_MIN_COS));
     let refracted = |dd: Vec3, dnormal: Vec3| {
         let (dd, dnormal) = (v3(dd), v3(dnormal));
         let d_cos = dd.dot(n) + d.dot(dnormal);
