@@ -1,0 +1,206 @@
+//! Bad command-line options of the examples (`verify`, `gallery`, `quality`): each must stop the
+//! program before it opens a device, with exit status 2 and a first line on stderr that names the
+//! option and the value received. The table of what was tried is rendered into the README's "Bad
+//! input" section; regenerate it with
+//! `RAY_FOOTPRINT_BLESS=1 cargo test --release -p ray-footprint-lab --test options`.
+//!
+//! Cargo builds the examples next to the test binaries (`target/<profile>/examples/`) whenever it
+//! builds this test.
+
+use std::fmt::Write;
+use std::path::PathBuf;
+use std::process::Command;
+
+/// The README's markers around the rendered table.
+const START: &str = "<!-- example options: start -->";
+const END: &str = "<!-- example options: end -->";
+
+/// One bad option: the example, its arguments and the texts its message must contain.
+struct Case {
+    example: &'static str,
+    args: &'static [&'static str],
+    names: &'static [&'static str],
+}
+
+const CASES: &[Case] = &[
+    Case {
+        example: "verify",
+        args: &["--cases", "0"],
+        names: &["--cases", "'0'"],
+    },
+    Case {
+        example: "verify",
+        args: &["--cases", "many"],
+        names: &["--cases", "'many'"],
+    },
+    Case {
+        example: "verify",
+        args: &["--batch", "-1"],
+        names: &["--batch", "'-1'"],
+    },
+    Case {
+        example: "verify",
+        args: &["--cases"],
+        names: &["--cases"],
+    },
+    Case {
+        example: "verify",
+        args: &["--seed", "7"],
+        names: &["'--seed'"],
+    },
+    Case {
+        example: "gallery",
+        args: &["--width", "0"],
+        names: &["--width", "'0'"],
+    },
+    Case {
+        example: "gallery",
+        args: &["--height", "99999999"],
+        names: &["--height", "'99999999'"],
+    },
+    Case {
+        example: "gallery",
+        args: &["--mode", "sharp"],
+        names: &["mode", "'sharp'"],
+    },
+    Case {
+        example: "gallery",
+        args: &["--out", ""],
+        names: &["--out"],
+    },
+    Case {
+        example: "gallery",
+        args: &["--width"],
+        names: &["--width"],
+    },
+    Case {
+        example: "gallery",
+        args: &["--fast"],
+        names: &["'--fast'"],
+    },
+    Case {
+        example: "quality",
+        args: &["--width", "0"],
+        names: &["--width", "'0'"],
+    },
+    Case {
+        example: "quality",
+        args: &["--height", "abc"],
+        names: &["--height", "'abc'"],
+    },
+    Case {
+        example: "quality",
+        args: &["--samples", "0"],
+        names: &["--samples", "'0'"],
+    },
+    Case {
+        example: "quality",
+        args: &["--frames", "1"],
+        names: &["--frames", "'1'"],
+    },
+    Case {
+        example: "quality",
+        args: &["--scene", "moon"],
+        names: &["scene", "'moon'"],
+    },
+    Case {
+        example: "quality",
+        args: &["--out", ""],
+        names: &["--out"],
+    },
+    Case {
+        example: "quality",
+        args: &["--truth"],
+        names: &["'--truth'"],
+    },
+];
+
+/// The folder cargo put the examples in: beside the `deps/` folder holding this test.
+fn examples_dir() -> PathBuf {
+    let test = std::env::current_exe().expect("the test's path");
+    let profile = test
+        .parent()
+        .and_then(|deps| deps.parent())
+        .expect("target/<profile>/deps");
+    profile.join("examples")
+}
+
+/// Runs one case; the first line of stderr, or why the case failed.
+fn run(case: &Case) -> Result<String, String> {
+    let program = examples_dir().join(case.example);
+    let output = Command::new(&program)
+        .args(case.args)
+        .current_dir(std::env::temp_dir())
+        .output()
+        .map_err(|error| format!("{}: {error}", program.display()))?;
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let first_line = stderr.lines().next().unwrap_or_default().to_string();
+    if output.status.code() != Some(2) {
+        return Err(format!(
+            "exit status {:?}, stderr: {stderr}",
+            output.status.code()
+        ));
+    }
+    let missing: Vec<_> = case
+        .names
+        .iter()
+        .filter(|name| !first_line.contains(*name))
+        .collect();
+    if !missing.is_empty() {
+        return Err(format!("the message leaves out {missing:?}: {first_line}"));
+    }
+    Ok(first_line)
+}
+
+/// The README's table: example, arguments, the first line of the message.
+fn render(rows: &[(&Case, String)]) -> String {
+    let mut table = String::from("| example | arguments | message |\n| --- | --- | --- |\n");
+    for (case, message) in rows {
+        let args: Vec<String> = case.args.iter().map(|arg| format!("`{arg}`")).collect();
+        let args = if args.iter().any(|arg| arg == "``") {
+            args.join(" ").replace("``", "`\"\"`")
+        } else {
+            args.join(" ")
+        };
+        writeln!(
+            table,
+            "| `{}` | {args} | {} |",
+            case.example,
+            message.replace('|', "\\|")
+        )
+        .expect("a String");
+    }
+    table
+}
+
+#[test]
+fn bad_options_are_refused_by_name() {
+    let mut rows = Vec::new();
+    let mut failures = Vec::new();
+    for case in CASES {
+        match run(case) {
+            Ok(message) => rows.push((case, message)),
+            Err(why) => failures.push(format!("{} {:?}: {why}", case.example, case.args)),
+        }
+    }
+    println!(
+        "{} bad options tried, {} refused by name",
+        CASES.len(),
+        rows.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../README.md");
+    let readme = std::fs::read_to_string(&path).expect("the README");
+    let (head, rest) = readme.split_once(START).expect("the start marker");
+    let (current, tail) = rest.split_once(END).expect("the end marker");
+    let rendered = render(&rows);
+    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
+        std::fs::write(&path, format!("{head}{START}\n{rendered}{END}{tail}")).expect("writing the README");
+        return;
+    }
+    assert_eq!(
+        current.trim(),
+        rendered.trim(),
+        "the README's table of bad example options is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
+    );
+}
