@@ -100,7 +100,7 @@ pub fn pinhole_ray_cone(pixel_spread_angle: f32) -> RayCone {
 }
 
 /// Primary cone of a pinhole camera for one ray, narrower off axis (the OptiX Toolkit's per-ray
-/// pinhole cone; SPEC 1.12): width 0, spread
+/// pinhole cone): width 0, spread
 /// `pixel_spread_angle * clamp(dot(direction, view_axis), 0, 1)`.
 ///
 /// `direction` is the unit ray direction and `view_axis` the camera's unit viewing direction. A
@@ -219,7 +219,7 @@ fn facing_cos(normal: Vec3, direction: Vec3) -> f32 {
 }
 
 /// Surface spread angle of a reflection from a curvature estimate (JCGT 2021, "optimized" form, as
-/// Falcor's `computeSpreadAngleFromCurvatureIso` evaluates it; SPEC 1.12): across the cone's
+/// Falcor's `computeSpreadAngleFromCurvatureIso` evaluates it): across the cone's
 /// slanted footprint the normal turns by `curvature * width / dn` with `dn = -dot(normal, direction)`,
 /// and the reflected direction turns twice as much:
 /// `beta = 2 * curvature * width / dn`, `dn` kept at least `MIN_COS` away from 0 with its sign

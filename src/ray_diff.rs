@@ -12,7 +12,7 @@
 //! and Texture Level of Detail Using Ray Cones", JCGT 10(1), 2021, cited as "JCGT 2021"; Duff et al.,
 //! "Building an Orthonormal Basis, Revisited", JCGT 6(1), 2017, cited as "Duff et al. 2017".
 //!
-//! Conventions (SPEC section 0): camera space is right-handed and looks down -Z; pixel (0, 0) is the
+//! Conventions (the README's Conventions): camera space is right-handed and looks down -Z; pixel (0, 0) is the
 //! top-left pixel and pixel y grows downwards, so every `dy` below is the change for one pixel step
 //! *down*. Normals and directions passed in are unit length unless a function says otherwise. A
 //! "differential" is the change per one-pixel step: `dx` for a step to the right neighbour, `dy` for a

@@ -1,7 +1,7 @@
 //! Ray differentials in double precision, for scenes whose coordinate range defeats f32. Needs f64 in shaders (naga FLOAT64 / wgpu SHADER_F64; GLSL double with shaderFloat64).
 //!
 //! The Rust mirror of `shaders/wgsl/ray_diff_f64.wgsl` and `shaders/glsl/ray_diff_f64.glsl`: the
-//! barycentric re-intersection of [`crate::ray_diff`] (SPEC 2.10) computed in f64, as the wireframe
+//! barycentric re-intersection of [`crate::ray_diff`] (the tutorial's `computeDerivative`) computed in f64, as the wireframe
 //! tutorial's `computeDerivativeHighp`. The public functions take and return `f32` exactly like their
 //! f32 twins in [`crate::ray_diff`] (drop-in replacements with the suffix `_f64`); every intermediate
 //! is `f64`, in the shaders as here, in the same order of operations.

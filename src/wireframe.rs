@@ -6,8 +6,8 @@
 //!
 //! Source: NVIDIA's ray-tracing tutorial "20 Wireframe" (nvpro-samples `vk_raytracing_tutorial_KHR`,
 //! after `nvpro_core2/nvshaders/wireframe.h.slang`), cited as "the wireframe tutorial": a hit's
-//! barycentrics `b = (w, u, v)` and their per-pixel spread `deltas` (the ray tracer's `fwidth(b)`, see
-//! SPEC 2.10-2.11) give an edge coverage in `[0, 1]` to blend a wire colour with:
+//! barycentrics `b = (w, u, v)` and their per-pixel spread `deltas` (the ray tracer's `fwidth(b)`: the
+//! re-intersected or cone-derived barycentric deltas of [`crate::ray_diff`]) give an edge coverage in `[0, 1]` to blend a wire colour with:
 //! `color = mix(shaded, wire, process_wireframe(settings, b, deltas))`.
 //!
 //! The tutorial's styling is a smoothstep per barycentric component against `deltas`, a thickness
@@ -33,7 +33,7 @@ pub const MIN_LINE_RAMP: f32 = 1.0e-30;
 
 /// How a wireframe is drawn; the shader-side struct `RfWireframeSettings`, with real `bool`s.
 ///
-/// Meaning of the fields after SPEC section 3 and the wireframe tutorial's settings. In WGSL this
+/// Meaning of the fields after the wireframe tutorial's settings. In WGSL this
 /// struct can only be a function value or a constant: WGSL forbids `bool` in host-shareable memory
 /// (uniform, storage and push-constant blocks), so hosts upload a [`WireframeSettingsIo`] and the
 /// shader calls `rf_unpack_wireframe_settings`. GLSL could declare it in a block, but the `bool` is
@@ -56,7 +56,7 @@ pub struct WireframeSettings {
     pub stipple_repeats: i32,
     /// `true`: `deltas` are per-pixel barycentric deltas and `thickness` is in pixels. `false`:
     /// deltas are taken as 1 and `thickness` is in barycentric units (the tutorial declares this flag
-    /// but never reads it; SPEC 3 gives it this meaning).
+    /// but never reads it; this crate gives it this meaning).
     pub screen_space: bool,
 }
 
@@ -232,8 +232,8 @@ pub fn process_wireframe(settings: WireframeSettings, barycentrics: Vec3, deltas
 }
 
 impl WireframeSettings {
-    /// Every preset with a display name for a UI, in SPEC 3's order (the wireframe tutorial's
-    /// preset table).
+    /// Every preset with a display name for a UI, in the order of the wireframe
+    /// tutorial's preset table.
     pub const PRESETS: [(&'static str, WireframeSettings); 7] = [
         ("Default", WIREFRAME_DEFAULT),
         ("Wire dot", WIREFRAME_WIRE_DOT),
@@ -244,7 +244,7 @@ impl WireframeSettings {
         ("Stipple", WIREFRAME_STIPPLE),
     ];
 
-    /// Settings in SPEC 3's column order, unchecked (the shader functions clamp as documented;
+    /// Settings in the tutorial's column order, unchecked (the shader functions clamp as documented;
     /// use [`WireframeSettings::try_new`] for values that come from a user).
     pub const fn new(
         thickness: f32,

@@ -55,7 +55,7 @@ proptest! {
         prop_assert!((from_matrix - from_fov).abs() <= 1.0e-5 * from_fov, "{from_matrix} vs {from_fov}");
     }
 
-    /// SPEC 1.4: after a planar mirror (surface spread 0) at distance t0, the cone traced a further
+    /// RTG Eq. 35: after a planar mirror (surface spread 0) at distance t0, the cone traced a further
     /// t1 is as wide as the chord between the two reflected pixel-edge rays, which is the chord of
     /// the mirror-image camera's primary rays at t0 + t1: `2 (t0 + t1) sin(alpha / 2)`. The cone's
     /// linear width `alpha (t0 + t1)` exceeds it by `alpha^2 / 24` relative, at any incidence angle.
@@ -71,7 +71,7 @@ proptest! {
         prop_assert!((width - chord).abs() <= bound * chord, "cone {width} chord {chord} (incidence {incidence})");
     }
 
-    /// SPEC 1.9: for a square W x W texture, `lambda` (RTG Eq. 34) equals
+    /// For a square W x W texture, `lambda` (RTG Eq. 34) equals
     /// `log2(world_footprint * texel_density * W)`. Both sides are f32 sums of about ten rounded
     /// terms no larger than 64: 10 * 64 * 2^-24 < 4e-5, so 1e-4 bounds their difference.
     #[test]
@@ -140,7 +140,7 @@ fn exact_pixel_footprint(fov_y: f64, size: DVec2, pixel: DVec2) -> (DVec3, [DVec
 /// terms of second order in the pixel's angular size, and f32 rounding.
 const PER_RAY_LOD_SLACK: f64 = 1.0e-3;
 
-/// SPEC 1.12, the per-ray pinhole cone, across 16:9 views with 60- and 160-degree vertical fields
+/// The per-ray pinhole cone (the OptiX Toolkit's), across 16:9 views with 60- and 160-degree vertical fields
 /// of view: the width at distance 1 of the per-ray cone and of the constant one against the exact
 /// footprint's longer side on the plane across the ray (the isotropic LOD's measure, RTG Eq. 2),
 /// as LOD errors `log2(cone width / exact width)`.
@@ -266,7 +266,7 @@ fn curvatures(positions: &[Vec3], normals: &[Vec3], triangles: &[[usize; 3]]) ->
         .collect()
 }
 
-/// SPEC 1.6: on a tessellated sphere of radius R with exact vertex normals, every triangle's
+/// JCGT 2021's curvature from vertex normals: on a tessellated sphere of radius R with exact vertex normals, every triangle's
 /// curvature estimate is 1/R (to f32 rounding) with outward normals and -1/R with inward ones. With
 /// the normals as the mesh stores them, in either orientation, the reflection spread near the pole
 /// is `+2 width / R` for a ray from outside (a convex mirror) and `-2 width / R` for a ray from
@@ -434,7 +434,7 @@ fn flat_and_cylindrical_curvature() {
     assert!(values.iter().all(|&k| k > 0.0 && k < 1.0 / radius));
 }
 
-/// The clamps keep every output finite at the degenerate inputs SPEC section 0 names.
+/// The clamps keep every output finite at the degenerate inputs the README's Conventions name.
 #[test]
 fn degenerate_inputs_give_finite_outputs() {
     let grazing = Vec3::new(1.0, 0.0, 0.0);

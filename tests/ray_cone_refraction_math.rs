@@ -329,8 +329,8 @@ fn index_one_leaves_the_cone_unchanged() {
     println!("eta = 1: worst relative change {worst:.2e}");
 }
 
-/// A small cone on a flat interface, with `m = eta cos i / cos t` and the half spread `h`: SPEC
-/// 1.12's first order `spread' = m spread`, `width' = width cos t / cos i`, within twice the
+/// A small cone on a flat interface, with `m = eta cos i / cos t` and the half spread `h`: the
+/// first order of RTG II ch. 10, `spread' = m spread`, `width' = width cos t / cos i`, within twice the
 /// leading second-order correction ([`second_order_corrections`], kept below 1e-3 so that the
 /// higher orders are negligible) plus the f32 error; and refracting into a flat slab of zero
 /// thickness and straight back out (`eta`, then `1 / eta` along the refracted ray) restores the

@@ -90,7 +90,7 @@ fn similar_uvs(p: [Vec3; 3], normal: DVec3, angle: f64, scale: f64) -> [Vec2; 3]
 /// operations (about 40 x 6e-8, rounded up).
 const F32_CHAIN: f64 = 1.0e-5;
 
-/// SPEC 1.12: at normal incidence (exactly, and 1.4e-5 and 4.5e-4 radians off it, on either side
+/// JCGT 2021's anisotropic footprint: at normal incidence (exactly, and 1.4e-5 and 4.5e-4 radians off it, on either side
 /// of `DIFF_MIN_SINE`), both gradients have the isotropic
 /// cone's length `texture_gradient(world_footprint * texel_density)` for a texture mapped without
 /// shear, and they are perpendicular. The normals include (1, -1, 1) / sqrt(3), for which the
@@ -138,7 +138,7 @@ fn normal_incidence_gives_the_isotropic_gradient() {
     println!("normal incidence: worst relative difference from the isotropic gradient {worst:.2e}");
 }
 
-/// SPEC 1.12: the major axis is `|width| / |cos|` long and the minor one `|width|`, perpendicular to
+/// JCGT 2021's anisotropic footprint: the major axis is `|width| / |cos|` long and the minor one `|width|`, perpendicular to
 /// each other, to the normal and (the minor one) to the ray, from head-on down to `|cos| = 1e-3`;
 /// the gradients of a shear-free texture follow with the texture's scale.
 #[test]
@@ -334,8 +334,8 @@ fn conversions_round_trip_and_commute_with_propagation() {
 }
 
 /// The differential of a cone, transferred to a surface, spans the ellipse of the anisotropic
-/// footprint of the propagated cone there (SPEC 1.12: projected this way, the cone gives the same
-/// ellipse), at any incidence down to `|cos| = 0.01`.
+/// footprint of the propagated cone there (the OptiX Toolkit's projection onto the surface: projected
+/// this way, the cone gives the same ellipse), at any incidence down to `|cos| = 0.01`.
 #[test]
 fn a_transferred_cone_differential_spans_the_anisotropic_footprint() {
     let mut rng = Rng(0xa11_0006);

@@ -1,4 +1,4 @@
-//! The wireframe mirror does what SPEC section 3 says: coverage in [0, 1] for every finite input,
+//! The wireframe mirror does what its documentation says: coverage in [0, 1] for every finite input,
 //! lines on edges and none inside, hard steps, dash fractions, the bool-to-int mirror, validation
 //! and the presets' exact values. (Agreement of the shaders with this mirror is tests/agreement.rs.)
 
@@ -410,10 +410,10 @@ fn validation_names_the_offending_field() {
     );
 }
 
-/// SPEC 3's preset table, typed from the SPEC: thickness, thickness_var, smoothing, stipple,
+/// The wireframe tutorial's preset table, typed from the tutorial: thickness, thickness_var, smoothing, stipple,
 /// stipple_length, stipple_repeats, screen_space.
-type SpecRow = (&'static str, f32, (f32, f32), f32, bool, f32, i32, bool);
-const SPEC_PRESETS: [SpecRow; 7] = [
+type TutorialRow = (&'static str, f32, (f32, f32), f32, bool, f32, i32, bool);
+const TUTORIAL_PRESETS: [TutorialRow; 7] = [
     ("DEFAULT", 1.0, (1.0, 1.0), 1.0, false, 0.5, 5, true),
     ("WIRE_DOT", 1.0, (1.0, 1.0), 0.5, false, 0.5, 5, true),
     ("STAR", 0.1, (0.0, 1.0), 0.1, false, 0.5, 5, false),
@@ -423,7 +423,7 @@ const SPEC_PRESETS: [SpecRow; 7] = [
     ("STIPPLE", 0.5, (1.0, 1.0), 1.0, true, 0.5, 20, true),
 ];
 
-fn spec_settings(row: &SpecRow) -> WireframeSettings {
+fn spec_settings(row: &TutorialRow) -> WireframeSettings {
     let &(_, thickness, (x, y), smoothing, stipple, stipple_length, stipple_repeats, screen_space) = row;
     WireframeSettings {
         thickness_var: Vec2::new(x, y),
@@ -447,8 +447,10 @@ fn presets_have_the_spec_values() {
         wf::WIREFRAME_WIRE_LINE,
         wf::WIREFRAME_STIPPLE,
     ];
-    for ((row, constant), (ui_name, listed)) in
-        SPEC_PRESETS.iter().zip(constants).zip(WireframeSettings::PRESETS)
+    for ((row, constant), (ui_name, listed)) in TUTORIAL_PRESETS
+        .iter()
+        .zip(constants)
+        .zip(WireframeSettings::PRESETS)
     {
         assert_eq!(constant, spec_settings(row), "{}", row.0);
         assert_eq!(listed, constant, "{ui_name}");
@@ -458,8 +460,8 @@ fn presets_have_the_spec_values() {
     assert_eq!(WireframeSettingsIo::default().unpack(), wf::WIREFRAME_DEFAULT);
 }
 
-/// The constructor call a shader module spells for a preset, from the SPEC row.
-fn shader_constructor(row: &SpecRow, vec2: &str) -> String {
+/// The constructor call a shader module spells for a preset, from the tutorial's row.
+fn shader_constructor(row: &TutorialRow, vec2: &str) -> String {
     let &(name, thickness, (x, y), smoothing, stipple, length, repeats, screen_space) = row;
     format!(
         "RF_WIREFRAME_{name}: RfWireframeSettings = RfWireframeSettings({vec2}({x:?}, {y:?}), {thickness:?}, \
@@ -478,7 +480,7 @@ fn shader_presets_spell_the_spec_values() {
             " = RfWireframeSettings(",
             ": RfWireframeSettings = RfWireframeSettings(",
         );
-    for row in &SPEC_PRESETS {
+    for row in &TUTORIAL_PRESETS {
         let wgsl_line = shader_constructor(row, "vec2<f32>");
         let glsl_line = shader_constructor(row, "vec2");
         assert!(wgsl.contains(&wgsl_line), "WGSL lacks `{wgsl_line}`");

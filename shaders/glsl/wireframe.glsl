@@ -49,7 +49,7 @@ struct RfWireframePushConstants {
     RfWireframeSettingsIo settings;
 };
 
-// Presets of the wireframe tutorial (SPEC 3), fields in declaration order.
+// Presets of the wireframe tutorial, fields in declaration order.
 const RfWireframeSettings RF_WIREFRAME_DEFAULT = RfWireframeSettings(vec2(1.0, 1.0), 1.0, 1.0, false, 0.5, 5, true);
 const RfWireframeSettings RF_WIREFRAME_WIRE_DOT = RfWireframeSettings(vec2(1.0, 1.0), 1.0, 0.5, false, 0.5, 5, true);
 const RfWireframeSettings RF_WIREFRAME_STAR = RfWireframeSettings(vec2(0.0, 1.0), 0.1, 0.1, false, 0.5, 5, false);

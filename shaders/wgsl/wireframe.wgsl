@@ -47,7 +47,7 @@ struct RfWireframePushConstants {
     settings: RfWireframeSettingsIo,
 }
 
-// Presets of the wireframe tutorial (SPEC 3), fields in declaration order.
+// Presets of the wireframe tutorial, fields in declaration order.
 const RF_WIREFRAME_DEFAULT: RfWireframeSettings = RfWireframeSettings(vec2<f32>(1.0, 1.0), 1.0, 1.0, false, 0.5, 5, true);
 const RF_WIREFRAME_WIRE_DOT: RfWireframeSettings = RfWireframeSettings(vec2<f32>(1.0, 1.0), 1.0, 0.5, false, 0.5, 5, true);
 const RF_WIREFRAME_STAR: RfWireframeSettings = RfWireframeSettings(vec2<f32>(0.0, 1.0), 0.1, 0.1, false, 0.5, 5, false);

@@ -6,8 +6,8 @@
 //! - [`Mode::Raw`]: the words' bits as they are (NaN, infinities, subnormals, anything). Property:
 //!   no panic; for the wireframe module, whose documentation promises it for every finite input, a
 //!   finite coverage in `[0, 1]` whenever every argument is finite.
-//! - [`Mode::Domain`]: the same words mapped into the documented domain (README, SPEC section 0,
-//!   `src/gpu/strategy.rs`): a float becomes [`into_domain`] of itself (NaN to 0, magnitudes below
+//! - [`Mode::Domain`]: the same words mapped into the documented domain (the README's Conventions,
+//!   `shader_proptest::strategy`): a float becomes [`into_domain`] of itself (NaN to 0, magnitudes below
 //!   1e-12 to 0, above 1e12 to 1e12, sign kept); a unit-vector argument is the normalized vector of
 //!   three such floats (+Z when they are all 0); an angle is clamped to `[-3.2, 3.2]` radians; a
 //!   camera-to-world matrix is a rotation plus a translation; a world-to-object matrix is a rotation, a
