@@ -43,6 +43,15 @@ pub enum ShaderType {
 }
 
 impl ShaderType {
+    /// Appends, per 32-bit word of the value, whether it is a float.
+    pub fn float_words(self, out: &mut Vec<bool>) {
+        match self {
+            ShaderType::U32 | ShaderType::I32 | ShaderType::Bool => out.push(false),
+            ShaderType::Struct(s) => s.fields.iter().for_each(|&(_, field)| field.float_words(out)),
+            float => out.extend(std::iter::repeat_n(true, float.words())),
+        }
+    }
+
     /// How many 32-bit words the value takes.
     pub fn words(self) -> usize {
         match self {
@@ -283,6 +292,8 @@ pub trait Args: Clone + Debug + Send + Sync + 'static {
     const TYPES: &'static [ShaderType];
     /// Appends every argument's words.
     fn write(&self, words: &mut Vec<u32>);
+    /// Reads the arguments back from their words, advancing `words`.
+    fn read(words: &mut &[u32]) -> Self;
     /// Whether every float in every argument is finite.
     fn is_finite(&self) -> bool;
 }
@@ -295,6 +306,9 @@ macro_rules! args_tuple {
             fn write(&self, words: &mut Vec<u32>) {
                 let ($($name,)+) = self;
                 $($name.write(words);)+
+            }
+            fn read(words: &mut &[u32]) -> Self {
+                ($($name::read(words),)+)
             }
             #[allow(non_snake_case)]
             fn is_finite(&self) -> bool {
