@@ -70,8 +70,9 @@ pub use value::{Args, ShaderType, StructType, Value};
 
 #[cfg(feature = "gpu")]
 pub use gpu::{
-    echo, evaluate, vulkan, Buffer, Check, ComputeKernel, DeviceRequest, Error, Failure, FunctionCheck, Gpu,
-    Location, Object, Outcome, Owner, Report, RunConfig, DEVICE_ENV, SEED_ENV,
+    barrier_shader_writes_to_host, echo, evaluate, vulkan, Buffer, Check, ComputeKernel, DeviceRequest,
+    Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, Report, RunConfig, DEVICE_ENV,
+    SEED_ENV,
 };
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

@@ -10,7 +10,9 @@ use super::scene::{Camera, Scene};
 use super::texture::{checker, mip_colours, MipChain, CHECKER_SQUARE, TEXTURE_SIZE};
 use super::Error;
 use ash::vk;
-use shader_proptest::{vulkan, Buffer, DeviceRequest, Feature, Gpu, Location, Object, Owner};
+use shader_proptest::{
+    barrier_shader_writes_to_host, vulkan, Buffer, DeviceRequest, Feature, Gpu, Location, Object, Owner,
+};
 use std::time::{Duration, Instant};
 
 mod colour;
@@ -347,18 +349,7 @@ impl<'g> Renderer<'g> {
                     device.cmd_dispatch(command_buffer, push.width.div_ceil(8), push.height.div_ceil(8), 1)
                 }
             }
-            let written = vk::MemoryBarrier::default()
-                .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-                .dst_access_mask(vk::AccessFlags::HOST_READ);
-            device.cmd_pipeline_barrier(
-                command_buffer,
-                self.owner.shader_stages(),
-                vk::PipelineStageFlags::HOST,
-                vk::DependencyFlags::empty(),
-                &[written],
-                &[],
-                &[],
-            );
+            barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages());
         }
     }
 }

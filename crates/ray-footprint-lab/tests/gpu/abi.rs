@@ -19,15 +19,8 @@ use std::cell::Cell;
 /// Words of a random value of a shader struct: any bits for integer fields, any non-NaN bits for
 /// float fields (a NaN's payload may legally change when a float is loaded).
 fn struct_words(ty: &'static StructType) -> BoxedStrategy<Vec<u32>> {
-    fn kinds(ty: ShaderType, out: &mut Vec<bool>) {
-        match ty {
-            ShaderType::Struct(s) => s.fields.iter().for_each(|&(_, field)| kinds(field, out)),
-            ShaderType::U32 | ShaderType::I32 | ShaderType::Bool => out.push(false),
-            float => out.extend(std::iter::repeat_n(true, float.words())),
-        }
-    }
     let mut is_float = Vec::new();
-    kinds(ShaderType::Struct(ty), &mut is_float);
+    ShaderType::Struct(ty).float_words(&mut is_float);
     let words: Vec<BoxedStrategy<u32>> = is_float
         .into_iter()
         .map(|float| {

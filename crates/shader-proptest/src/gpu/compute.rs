@@ -4,7 +4,7 @@
 //! ones while they are large enough.
 
 use super::device::{vulkan, Error, Gpu};
-use super::resources::{Buffer, Location, Object, Owner};
+use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
 use crate::kernel::WORKGROUP_SIZE;
 use ash::vk;
 use std::sync::Mutex;
@@ -243,18 +243,7 @@ impl<'g> ComputeKernel<'g> {
                 );
             }
             device.cmd_dispatch(command_buffer, groups, 1, 1);
-            let barrier = vk::MemoryBarrier::default()
-                .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-                .dst_access_mask(vk::AccessFlags::HOST_READ);
-            device.cmd_pipeline_barrier(
-                command_buffer,
-                vk::PipelineStageFlags::COMPUTE_SHADER,
-                vk::PipelineStageFlags::HOST,
-                vk::DependencyFlags::empty(),
-                &[barrier],
-                &[],
-                &[],
-            );
+            barrier_shader_writes_to_host(device, command_buffer, vk::PipelineStageFlags::COMPUTE_SHADER);
         }
     }
 }

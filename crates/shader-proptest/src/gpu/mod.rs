@@ -11,4 +11,4 @@ pub use check::{evaluate, Check, Failure, FunctionCheck, Outcome, Report, RunCon
 pub use compute::ComputeKernel;
 pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
 pub use echo::echo;
-pub use resources::{Buffer, Location, Object, Owner};
+pub use resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};

@@ -370,6 +370,33 @@ impl<'g> Owner<'g> {
     }
 }
 
+/// Records a barrier after which the host may read back what the `writers` stages wrote to memory
+/// (once the submission's fence has signalled).
+///
+/// # Safety
+/// `command_buffer` was allocated from `device` and is recording.
+pub unsafe fn barrier_shader_writes_to_host(
+    device: &ash::Device,
+    command_buffer: vk::CommandBuffer,
+    writers: vk::PipelineStageFlags,
+) {
+    let written = vk::MemoryBarrier::default()
+        .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+        .dst_access_mask(vk::AccessFlags::HOST_READ);
+    // SAFETY: the caller's promise.
+    unsafe {
+        device.cmd_pipeline_barrier(
+            command_buffer,
+            writers,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[written],
+            &[],
+            &[],
+        );
+    }
+}
+
 impl Owner<'_> {
     /// The shader stages this crate's users read resources from: compute, and the ray-tracing
     /// stages where ray-tracing pipelines are enabled.

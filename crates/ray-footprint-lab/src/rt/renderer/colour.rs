@@ -10,7 +10,7 @@ use super::{Error, Frame, Renderer};
 use ash::vk;
 use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use shader_proptest::layout::{glsl_layout, GlslPacking};
-use shader_proptest::{vulkan, Buffer, Gpu, Location, Object, Owner};
+use shader_proptest::{barrier_shader_writes_to_host, vulkan, Buffer, Gpu, Location, Object, Owner};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -196,18 +196,7 @@ impl ColourPipeline<'_, '_> {
             if let Some(pool) = timing {
                 device.cmd_write_timestamp(command_buffer, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, 1);
             }
-            let written = vk::MemoryBarrier::default()
-                .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-                .dst_access_mask(vk::AccessFlags::HOST_READ);
-            device.cmd_pipeline_barrier(
-                command_buffer,
-                self.owner.shader_stages(),
-                vk::PipelineStageFlags::HOST,
-                vk::DependencyFlags::empty(),
-                &[written],
-                &[],
-                &[],
-            );
+            barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages());
         }
     }
 }
