@@ -37,6 +37,10 @@
 //! 5. A failure is shrunk by proptest to a small case and reported with the inputs, both outputs,
 //!    the tolerance, the seed that replays it ([`SEED_ENV`]) and the kernel's source.
 //!
+//! A [`RunConfig`] of 0 cases, a batch of 0 or 0 threads, and a [`SEED_ENV`] that holds no seed
+//! (neither decimal nor hexadecimal after `0x`) end the run before it starts with
+//! [`Error::Config`], which names the field or variable and its value.
+//!
 //! Arguments and results are [`Value`]s: `f32`, `u32`, `i32`, `bool`, glam's vectors and matrices,
 //! and structs declared with [`shader_struct!`]; with `pod`, a `#[repr(C)]` bytemuck struct's Rust
 //! layout is compared with the shader's before the check runs. [`layout`] compares layouts on its

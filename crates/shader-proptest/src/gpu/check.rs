@@ -38,8 +38,8 @@ pub struct RunConfig {
     pub cases: usize,
     /// Cases per batch (one dispatch).
     pub batch: usize,
-    /// The seed of the run; batch `i` is generated from a seed derived from it and `i`. `None`: a
-    /// fresh seed, printed in the report.
+    /// The seed of the run; batch `i` is generated from a seed derived from it and `i`. `None`: the
+    /// seed in [`SEED_ENV`] if that is set, else a fresh seed; either is printed in the report.
     pub seed: Option<u64>,
     /// Threads that generate cases and run the mirror.
     pub threads: usize,
@@ -54,10 +54,46 @@ impl Default for RunConfig {
         RunConfig {
             cases: 100_000,
             batch: 8192,
-            seed: std::env::var(SEED_ENV).ok().and_then(|text| parse_seed(&text)),
+            seed: None,
             threads: std::thread::available_parallelism().map_or(1, usize::from),
             shrink_steps: 1024,
         }
+    }
+}
+
+impl RunConfig {
+    /// The configuration as a run uses it: [`Error::Config`] names the first field that is 0
+    /// (`cases`, `batch`, `threads`: a run of nothing, or one no thread generates), or
+    /// [`SEED_ENV`] with its value where `seed` is `None` and that variable holds no seed.
+    /// Otherwise the seed the run uses: `seed`, else the variable's, else a fresh one.
+    pub fn validate(&self) -> Result<u64, Error> {
+        let counts = [
+            ("cases", self.cases),
+            ("batch", self.batch),
+            ("threads", self.threads),
+        ];
+        if let Some(&(field, _)) = counts.iter().find(|(_, count)| *count == 0) {
+            return Err(Error::Config {
+                field,
+                value: "0".into(),
+                expected: "at least 1",
+            });
+        }
+        run_seed(self.seed, std::env::var(SEED_ENV).ok())
+    }
+}
+
+/// The seed of a run: `seed`, else the one in `variable` (the value of [`SEED_ENV`]), else a fresh
+/// one; [`Error::Config`] where `variable` holds no seed.
+fn run_seed(seed: Option<u64>, variable: Option<String>) -> Result<u64, Error> {
+    match (seed, variable) {
+        (Some(seed), _) => Ok(seed),
+        (None, Some(text)) => parse_seed(&text).ok_or(Error::Config {
+            field: SEED_ENV,
+            value: text,
+            expected: "a decimal seed, or a hexadecimal one after 0x",
+        }),
+        (None, None) => Ok(fresh_seed()),
     }
 }
 
@@ -406,7 +442,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// Runs the check on the function of `shader` (see [`Check::run`]).
     pub fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
         let started = Instant::now();
-        let seed = config.seed.unwrap_or_else(fresh_seed);
+        let seed = config.validate()?;
         let mut report = Report {
             function: self.function.clone(),
             language: shader.language(),
@@ -462,14 +498,13 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         seed: u64,
         stats: &mut Stats,
     ) -> Result<Option<Mismatch>, Error> {
-        let batch = config.batch.max(1);
-        let total = config.cases.max(1);
+        let (batch, total) = (config.batch, config.cases);
         let batches = total.div_ceil(batch);
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
-        let (sender, receiver) = sync_channel::<Result<Prepared<A>, Error>>(config.threads.max(1));
+        let (sender, receiver) = sync_channel::<Result<Prepared<A>, Error>>(config.threads);
         std::thread::scope(|scope| {
-            for _ in 0..config.threads.max(1) {
+            for _ in 0..config.threads {
                 let sender = sender.clone();
                 let (next, stop) = (&next, &stop);
                 scope.spawn(move || loop {
@@ -810,6 +845,47 @@ fn count_vacuous(expected: &[f32], bounds: &[f32], cases: usize) -> Vacuous {
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    /// A run of 0 cases, batches of 0 or 0 threads is refused, naming the field and the value.
+    #[test]
+    fn zero_counts_are_refused_naming_the_field() {
+        let zero_cases = RunConfig {
+            cases: 0,
+            ..RunConfig::default()
+        };
+        let zero_batch = RunConfig {
+            batch: 0,
+            ..RunConfig::default()
+        };
+        let zero_threads = RunConfig {
+            threads: 0,
+            ..RunConfig::default()
+        };
+        for (config, field) in [
+            (zero_cases, "cases"),
+            (zero_batch, "batch"),
+            (zero_threads, "threads"),
+        ] {
+            let message = config.validate().expect_err(field).to_string();
+            assert_eq!(message, format!("{field} = \"0\": expected at least 1"));
+        }
+    }
+
+    /// The seed comes from the configuration, else from the variable; a variable that holds no
+    /// seed is refused, naming the variable and its value.
+    #[test]
+    fn the_seed_variable_must_hold_a_seed() {
+        assert_eq!(run_seed(Some(5), Some("banana".into())).ok(), Some(5));
+        assert_eq!(run_seed(None, Some("0x1f".into())).ok(), Some(31));
+        assert_eq!(run_seed(None, Some("31".into())).ok(), Some(31));
+        for text in ["banana", "", "0x", "-1", "0x1g"] {
+            let message = run_seed(None, Some(text.into())).expect_err(text).to_string();
+            assert!(
+                message.starts_with(&format!("{SEED_ENV} = {text:?}")),
+                "{message}"
+            );
+        }
+    }
 
     /// A batch's cases are the values that shrinking re-generates from the batch's seed through
     /// the boxed strategy, case by case, rejections included.

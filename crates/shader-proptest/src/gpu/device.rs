@@ -27,6 +27,16 @@ pub enum Error {
     BatchTooLarge(usize),
     /// A check's strategy produced no value: proptest's reason.
     Strategy(String),
+    /// A [`crate::RunConfig`] field (or the environment variable standing in for it) holds a value
+    /// no run can use.
+    Config {
+        /// The field or variable.
+        field: &'static str,
+        /// Its value, as given.
+        value: String,
+        /// What it should be.
+        expected: &'static str,
+    },
 }
 
 impl fmt::Display for Error {
@@ -45,6 +55,11 @@ impl fmt::Display for Error {
             }
             Error::BatchTooLarge(cases) => write!(f, "a batch of {cases} cases does not fit in one dispatch"),
             Error::Strategy(reason) => write!(f, "no cases: {reason}"),
+            Error::Config {
+                field,
+                value,
+                expected,
+            } => write!(f, "{field} = {value:?}: expected {expected}"),
         }
     }
 }
