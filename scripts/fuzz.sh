@@ -10,6 +10,9 @@
 #   scripts/fuzz.sh --runs N [WORKERS]  each target until it has run N inputs, shared by WORKERS
 #                                       processes (default 2) that share one corpus (libFuzzer -jobs);
 #                                       the long run is `scripts/fuzz.sh --runs 1000000`
+#
+# FUZZ_BINARIES=DIR runs the target binaries in DIR instead of building them (a machine without
+# the nightly toolchain, given the binaries `cargo +nightly fuzz build` made elsewhere).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$PWD"
@@ -39,15 +42,19 @@ options() {
     esac
 }
 
-cargo +nightly fuzz build
-binaries="fuzz/target/$(rustc +nightly -vV | sed -n 's/^host: //p')/release"
+if [[ -n "${FUZZ_BINARIES:-}" ]]; then
+    binaries="$(cd "$FUZZ_BINARIES" && pwd)"
+else
+    cargo +nightly fuzz build
+    binaries="$root/fuzz/target/$(rustc +nightly -vV | sed -n 's/^host: //p')/release"
+fi
 status=0
 for target in "${targets[@]}"; do
     run="$scratch/$target-run"
     mkdir -p "$scratch/$target" "$scratch/$target-artifacts" "$run"
     start="$(date +%s)"
     # shellcheck disable=SC2046 # options are words without spaces
-    if (cd "$run" && "$root/$binaries/$target" "$scratch/$target" "$root/fuzz/corpus/$target" \
+    if (cd "$run" && "$binaries/$target" "$scratch/$target" "$root/fuzz/corpus/$target" \
         "${budget[@]}" $(options "$target") -print_final_stats=1 \
         -artifact_prefix="$scratch/$target-artifacts/" >"$run/main.log" 2>&1); then
         crashed=0
