@@ -103,26 +103,75 @@ const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, stipple) == 16);
 const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, screen_space) == 28);
 
 /// Preset "default" (wireframe tutorial): a 1-pixel anti-aliased solid line.
-pub const WIREFRAME_DEFAULT: WireframeSettings =
-    WireframeSettings::new(1.0, Vec2::new(1.0, 1.0), 1.0, false, 0.5, 5, true);
+pub const WIREFRAME_DEFAULT: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(1.0, 1.0),
+    thickness: 1.0,
+    smoothing: 1.0,
+    stipple: false,
+    stipple_length: 0.5,
+    stipple_repeats: 5,
+    screen_space: true,
+};
 /// Preset "wire dot": as the default with a ramp half as wide.
-pub const WIREFRAME_WIRE_DOT: WireframeSettings =
-    WireframeSettings::new(1.0, Vec2::new(1.0, 1.0), 0.5, false, 0.5, 5, true);
+pub const WIREFRAME_WIRE_DOT: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(1.0, 1.0),
+    thickness: 1.0,
+    smoothing: 0.5,
+    stipple: false,
+    stipple_length: 0.5,
+    stipple_repeats: 5,
+    screen_space: true,
+};
 /// Preset "star": thin barycentric-space lines that vanish at edge middles and grow to the vertices.
-pub const WIREFRAME_STAR: WireframeSettings =
-    WireframeSettings::new(0.1, Vec2::new(0.0, 1.0), 0.1, false, 0.5, 5, false);
+pub const WIREFRAME_STAR: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(0.0, 1.0),
+    thickness: 0.1,
+    smoothing: 0.1,
+    stipple: false,
+    stipple_length: 0.5,
+    stipple_repeats: 5,
+    screen_space: false,
+};
 /// Preset "flake": dashed barycentric-space lines, widest at edge middles, vanishing at the vertices.
-pub const WIREFRAME_FLAKE: WireframeSettings =
-    WireframeSettings::new(0.1, Vec2::new(0.7, 0.0), 0.1, true, 0.8, 10, false);
+pub const WIREFRAME_FLAKE: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(0.7, 0.0),
+    thickness: 0.1,
+    smoothing: 0.1,
+    stipple: true,
+    stipple_length: 0.8,
+    stipple_repeats: 10,
+    screen_space: false,
+};
 /// Preset "thin": a 0.3-pixel line with a wide (2x) anti-aliasing ramp.
-pub const WIREFRAME_THIN: WireframeSettings =
-    WireframeSettings::new(0.3, Vec2::new(1.0, 1.0), 2.0, false, 0.4, 8, true);
+pub const WIREFRAME_THIN: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(1.0, 1.0),
+    thickness: 0.3,
+    smoothing: 2.0,
+    stipple: false,
+    stipple_length: 0.4,
+    stipple_repeats: 8,
+    screen_space: true,
+};
 /// Preset "wire line": stipple on with dashes covering the whole period, so a solid half-pixel line.
-pub const WIREFRAME_WIRE_LINE: WireframeSettings =
-    WireframeSettings::new(0.5, Vec2::new(1.0, 1.0), 1.0, true, 1.0, 1, true);
+pub const WIREFRAME_WIRE_LINE: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(1.0, 1.0),
+    thickness: 0.5,
+    smoothing: 1.0,
+    stipple: true,
+    stipple_length: 1.0,
+    stipple_repeats: 1,
+    screen_space: true,
+};
 /// Preset "stipple": a half-pixel line in 20 dashes per edge, half of each period drawn.
-pub const WIREFRAME_STIPPLE: WireframeSettings =
-    WireframeSettings::new(0.5, Vec2::new(1.0, 1.0), 1.0, true, 0.5, 20, true);
+pub const WIREFRAME_STIPPLE: WireframeSettings = WireframeSettings {
+    thickness_var: Vec2::new(1.0, 1.0),
+    thickness: 0.5,
+    smoothing: 1.0,
+    stipple: true,
+    stipple_length: 0.5,
+    stipple_repeats: 20,
+    screen_space: true,
+};
 
 /// Turns the host-shareable mirror back into settings: every integer flag becomes `flag != 0`
 /// (the wireframe tutorial's `unpackWireframeSettings`).

@@ -1,0 +1,175 @@
+//! The shared declarations in WGSL, GLSL and Slang: each item preceded by its doc comment's first
+//! paragraph, struct fields by theirs.
+
+use crate::comment;
+use crate::rust_items::{Field, Item, Kind, RustItems, Type, Value};
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Language {
+    Wgsl,
+    Glsl,
+    Slang,
+}
+
+impl Language {
+    pub const ALL: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Slang];
+
+    /// The directory under `shaders/` and the file extension.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Language::Wgsl => "wgsl",
+            Language::Glsl => "glsl",
+            Language::Slang => "slang",
+        }
+    }
+
+    /// The marker of a documentation comment before a declaration.
+    fn doc_marker(self) -> &'static str {
+        match self {
+            Language::Slang => "/// ",
+            Language::Wgsl | Language::Glsl => "// ",
+        }
+    }
+
+    /// Declaration keywords before a constant's type (GLSL, Slang) or name (WGSL).
+    fn const_keywords(self) -> &'static str {
+        match self {
+            Language::Wgsl | Language::Glsl => "const",
+            Language::Slang => "public static const",
+        }
+    }
+
+    fn type_name(self, ty: &Type) -> String {
+        let name = match (self, ty) {
+            (Language::Wgsl, Type::F32) => "f32",
+            (Language::Wgsl, Type::F64) => "f64",
+            (Language::Wgsl, Type::I32) => "i32",
+            (Language::Wgsl, Type::U32) => "u32",
+            (Language::Glsl | Language::Slang, Type::F32) => "float",
+            (Language::Glsl | Language::Slang, Type::F64) => "double",
+            (Language::Glsl | Language::Slang, Type::I32) => "int",
+            (Language::Glsl | Language::Slang, Type::U32) => "uint",
+            (_, Type::Bool) => "bool",
+            (_, Type::Vector(components)) => return self.vector_type(*components),
+            (_, Type::Struct(name)) => return format!("Rf{name}"),
+        };
+        name.to_string()
+    }
+
+    fn vector_type(self, components: usize) -> String {
+        match self {
+            Language::Wgsl => format!("vec{components}<f32>"),
+            Language::Glsl => format!("vec{components}"),
+            Language::Slang => format!("float{components}"),
+        }
+    }
+
+    /// A value of type `ty` in this language's syntax, with the exact value of the Rust literal.
+    fn value(self, ty: &Type, value: &Value) -> Result<String, String> {
+        match (ty, value) {
+            (Type::Bool, Value::Bool(flag)) => Ok(flag.to_string()),
+            (Type::F32, Value::Number(digits)) => float(digits),
+            (Type::F64, Value::Number(digits)) => self.double(digits),
+            (Type::I32, Value::Number(digits)) => integer(digits),
+            (Type::U32, Value::Number(digits)) => Ok(format!("{}u", integer(digits)?)),
+            (Type::Vector(components), Value::Vector(values)) if values.len() == *components => {
+                let values: Vec<String> = values.iter().map(|v| float(v)).collect::<Result<_, _>>()?;
+                Ok(format!(
+                    "{}({})",
+                    self.vector_type(*components),
+                    values.join(", ")
+                ))
+            }
+            _ => Err(format!("a value {value:?} that does not fit the type {ty:?}")),
+        }
+    }
+
+    /// A double constant as a float literal widened to double: WGSL implementations and glslang
+    /// disagreed on double literals, every compiler widens a float the same way. Only exact when
+    /// the value is a float, which is checked.
+    fn double(self, digits: &str) -> Result<String, String> {
+        let value: f64 = digits.parse().map_err(|e| format!("{digits}: {e}"))?;
+        if f64::from(value as f32) != value {
+            return Err(format!(
+                "the double {digits} is not a float value; a double constant must be one (it is written as a widened float literal)"
+            ));
+        }
+        let literal = float(digits)?;
+        Ok(match self {
+            Language::Wgsl => format!("f64({literal}f)"),
+            Language::Glsl => format!("double({literal})"),
+            Language::Slang => format!("double({literal}f)"),
+        })
+    }
+
+    /// One item: its doc comment and declaration.
+    pub fn item(self, item: &Item, names: &RustItems) -> Result<Vec<String>, String> {
+        let mut lines = comment::lines(&item.docs, self.doc_marker(), names);
+        let at = |error: String| format!("{}: `{}`: {error}", item.file, item.name);
+        match &item.kind {
+            Kind::Const { ty, value } => {
+                let value = self.value(ty, value).map_err(at)?;
+                lines.push(self.constant(&item.name, &self.type_name(ty), &value));
+            }
+            Kind::Preset { ty, values } => {
+                let Kind::Struct { fields, .. } = &names.get(ty)?.kind else {
+                    return Err(at(format!("`{ty}` is not a struct")));
+                };
+                let values: Vec<String> = fields
+                    .iter()
+                    .zip(values)
+                    .map(|(field, value)| self.value(&field.ty, value))
+                    .collect::<Result<_, _>>()
+                    .map_err(at)?;
+                let struct_name = format!("Rf{ty}");
+                let value = format!("{struct_name}({})", values.join(", "));
+                lines.push(self.constant(&item.name, &struct_name, &value));
+            }
+            Kind::Struct { fields, .. } => lines.extend(self.structure(&item.name, fields, names)),
+            Kind::Unreadable(reason) => return Err(at(reason.clone())),
+        }
+        Ok(lines)
+    }
+
+    fn constant(self, name: &str, ty: &str, value: &str) -> String {
+        let keywords = self.const_keywords();
+        match self {
+            Language::Wgsl => format!("{keywords} RF_{name}: {ty} = {value};"),
+            Language::Glsl | Language::Slang => format!("{keywords} {ty} RF_{name} = {value};"),
+        }
+    }
+
+    fn structure(self, name: &str, fields: &[Field], names: &RustItems) -> Vec<String> {
+        let public = if self == Language::Slang { "public " } else { "" };
+        let mut lines = vec![format!("{public}struct Rf{name} {{")];
+        for field in fields {
+            let prefix = format!("    {}", self.doc_marker());
+            lines.extend(comment::lines(&field.docs, &prefix, names));
+            let ty = self.type_name(&field.ty);
+            lines.push(match self {
+                Language::Wgsl => format!("    {}: {ty},", field.name),
+                Language::Glsl | Language::Slang => format!("    {public}{ty} {};", field.name),
+            });
+        }
+        lines.push(match self {
+            Language::Wgsl => "}".to_string(),
+            Language::Glsl | Language::Slang => "};".to_string(),
+        });
+        lines
+    }
+}
+
+/// A float literal: the Rust digits, with `.0` added to a whole number.
+fn float(digits: &str) -> Result<String, String> {
+    digits.parse::<f64>().map_err(|e| format!("{digits}: {e}"))?;
+    if digits.contains(['.', 'e', 'E']) {
+        Ok(digits.to_string())
+    } else {
+        Ok(format!("{digits}.0"))
+    }
+}
+
+fn integer(digits: &str) -> Result<String, String> {
+    digits.parse::<i64>().map_err(|e| format!("{digits}: {e}"))?;
+    Ok(digits.to_string())
+}
