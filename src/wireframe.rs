@@ -31,7 +31,9 @@ pub const MAX_LINE_THICKNESS: f32 = 1.0e6;
 /// (smoothing 0, or a zero delta) are a hard step. A normal float, so no device flushes it to zero.
 pub const MIN_LINE_RAMP: f32 = 1.0e-30;
 
-/// How a wireframe is drawn; the shader-side struct `RfWireframeSettings`, with real `bool`s.
+/// How a wireframe is drawn; the shader-side struct `RfWireframeSettings`, with real `bool`s. Never
+/// in a uniform, storage or push-constant block (a `bool` has no host layout: 4 bytes in a GLSL block,
+/// 1 in Rust, forbidden in WGSL): upload an `RfWireframeSettingsIo` and unpack it.
 ///
 /// Meaning of the fields after the wireframe tutorial's settings. In WGSL this
 /// struct can only be a function value or a constant: WGSL forbids `bool` in host-shareable memory

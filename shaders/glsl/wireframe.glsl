@@ -22,7 +22,9 @@ const float RF_MAX_LINE_THICKNESS = 1.0e6;
 // zero.
 const float RF_MIN_LINE_RAMP = 1.0e-30;
 
-// How a wireframe is drawn; the shader-side struct RfWireframeSettings, with real bools.
+// How a wireframe is drawn; the shader-side struct RfWireframeSettings, with real bools. Never in a
+// uniform, storage or push-constant block (a bool has no host layout: 4 bytes in a GLSL block, 1 in
+// Rust, forbidden in WGSL): upload an RfWireframeSettingsIo and unpack it.
 struct RfWireframeSettings {
     // Thickness factors along an edge: x at the edge middle, y at the vertices.
     vec2 thickness_var;
