@@ -438,11 +438,6 @@ impl Camera {
         }
     }
 
-    /// The viewing direction (unit).
-    pub fn view_axis(&self) -> Vec3 {
-        self.basis().0
-    }
-
     /// The orthonormal basis: forward (viewing direction), right (= forward x +y) and up.
     fn basis(&self) -> (Vec3, Vec3, Vec3) {
         let forward = (self.target - self.eye).normalize();
