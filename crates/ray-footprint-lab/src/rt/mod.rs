@@ -3,7 +3,7 @@
 //! shader, on a shader-proptest device with the validation layer on.
 //!
 //! A [`Renderer`] uploads a [`Scene`] built in code (a large textured ground plane, a mirror sphere,
-//! a dense torus), builds one bottom-level acceleration structure per mesh and a top-level one,
+//! a dense torus; or glass and rough mirror spheres over the plane, [`Scene::materials`]), builds one bottom-level acceleration structure per mesh and a top-level one,
 //! makes a checker texture and a mip-colour texture with full mip chains, a trilinear sampler with
 //! `maxLod = VK_LOD_CLAMP_NONE` (anisotropic where the device allows), and its pipelines:
 //!
@@ -13,7 +13,9 @@
 //!   beside it (the renderer's payload), read `RfRayConePushConstants` inside the renderer's push
 //!   constants and the inverse camera matrices and `RfWireframePushConstants` from a uniform buffer
 //!   ([`RtUniforms`]); on a primary hit the closest-hit shader measures every ray-cone value, the
-//!   ray differentials, the re-intersected barycentric offsets and the wireframe coverage, and it
+//!   ray differentials, the re-intersected barycentric offsets, the wireframe coverage, the
+//!   material's values (a mirror's roughness spread, glass's refracted cone) and the anisotropic
+//!   cone gradients, and it
 //!   shades in the chosen [`Mode`] with the functions of `rt_common.glsl` that the colour-only
 //!   pipelines ([`ColourPipeline`]) share;
 //! - Slang (`shaders/closest_hit.slang`, compiled with slangc with the library's Slang directory

@@ -126,8 +126,8 @@ impl Mode {
     /// What the payload of the mode's colour-only shaders carries beyond the colour and the bounce
     /// depth: the ray cone in the modes that read it (every mode but mip 0 and the ray-differential
     /// modes: the level of detail, or in the gradient modes that of what the mirror reflects), and
-    /// the ray differential in the ray-differential modes, which carry it through the mirror and
-    /// never read the cone.
+    /// the ray differential in the ray-differential modes, which carry it through mirrors and
+    /// glass and never read the cone.
     pub fn payload(self) -> Payload {
         let differential = matches!(self, Mode::RayDiff | Mode::RayDiffIsotropic);
         Payload {

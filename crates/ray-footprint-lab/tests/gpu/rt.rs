@@ -2,7 +2,9 @@
 //!
 //! The GLSL and the Slang closest-hit shaders and the WGSL ray-query shader record, per pixel, the primary hit
 //! (distance, normal, barycentrics, instance, triangle), every ray-cone value they computed
-//! there, and the ray-differential, re-intersection and wireframe values. The Rust mirror
+//! there, the ray-differential, re-intersection and wireframe values, the material's values (a
+//! mirror's roughness spread; on glass the index ratio, the normal's spread and the refracted cone)
+//! and the anisotropic cone gradients, on the gallery and on the materials scene. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
 //! uniforms; each function is given exactly the inputs the shader gave it, so each comparison
 //! measures one library function, within the tolerance derived for it in `src/checks/`
