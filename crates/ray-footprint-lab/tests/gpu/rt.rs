@@ -340,7 +340,8 @@ fn gallery_views() -> Vec<View> {
     views
 }
 
-/// The materials scene's views: the glass close-up and both spheres over the ground plane.
+/// The materials scene's views: the glass close-up, both spheres over the ground plane, and the
+/// glass sphere from inside ([`inside_glass`]).
 fn material_views() -> Vec<View> {
     let (small, default) = ((WIDTH, HEIGHT), WireframeSettings::default());
     vec![
@@ -352,7 +353,20 @@ fn material_views() -> Vec<View> {
             small,
             PIXEL_OFFSET,
         ),
+        (inside_glass(), Mode::ConeRefraction, default, small, Vec2::ZERO),
     ]
+}
+
+/// An eye inside the glass sphere of [`Scene::materials`] (centre (-1.3, 1, -1.5), radius 1), 0.7
+/// off its centre, looking along -z: every primary ray meets the sphere from inside, where the
+/// index ratio is the index itself, and those meeting it more than asin(1 / 1.5) = 41.8 degrees
+/// off its normal (the view's centre among them: sin i = 0.7) are totally internally reflected.
+fn inside_glass() -> Camera {
+    Camera {
+        eye: Vec3::new(-0.6, 1.0, -1.5),
+        target: Vec3::new(-0.6, 1.0, -3.0),
+        fov_y: 60f32.to_radians(),
+    }
 }
 
 /// What a frame was traced with: the push constants and the uniforms.
@@ -382,7 +396,15 @@ fn agree(
         trace_views(&renderer, &views, &trace, &mut stats);
     }
     print!("{}", stats.table());
+    println!(
+        "glass hits totally internally reflected: {}",
+        stats.total_internal_reflections
+    );
     assert!(stats.misses > 0, "some pixels must see the sky");
+    assert!(
+        stats.total_internal_reflections > 0,
+        "the view from inside the glass must reflect totally"
+    );
     assert!(
         stats.failures.is_empty(),
         "{} value(s) out of tolerance:\n{}",
@@ -443,6 +465,8 @@ struct Stat {
 struct Stats {
     values: Vec<(&'static str, Stat)>,
     misses: usize,
+    /// Glass hits whose record says total internal reflection.
+    total_internal_reflections: usize,
     failures: Vec<String>,
 }
 
@@ -949,6 +973,7 @@ fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mu
         total_internal_reflection: r.total_internal_reflection == 1,
     };
     assert!(r.total_internal_reflection <= 1, "a flag: {r:?}");
+    stats.total_internal_reflections += r.total_internal_reflection as usize;
     let check = suite::ray_cone::refract_ray_cone();
     compare_with(stats, "refracted cone", check, (args, refracted), r);
 }
