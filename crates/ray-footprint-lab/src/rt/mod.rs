@@ -91,6 +91,9 @@ pub enum Error {
     NotSupported(String),
     /// A texture given to [`Renderer::with_texture`] is not a full square mip chain: what is wrong.
     InvalidTexture(String),
+    /// A mesh's material has a parameter the shaders cannot take: the mesh and what is wrong
+    /// ([`Material::validate`]).
+    InvalidMaterial(String),
 }
 
 impl fmt::Display for Error {
@@ -107,6 +110,7 @@ impl fmt::Display for Error {
             }
             Error::NotSupported(reason) => write!(f, "not supported: {reason}"),
             Error::InvalidTexture(reason) => write!(f, "invalid texture: {reason}"),
+            Error::InvalidMaterial(reason) => write!(f, "invalid material: {reason}"),
         }
     }
 }

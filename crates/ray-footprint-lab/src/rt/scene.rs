@@ -69,6 +69,25 @@ impl Material {
             Material::Glass { index_of_refraction } => index_of_refraction,
         }
     }
+
+    /// Whether the parameter is one the shaders take: a mirror's roughness finite in `[0, 1]`,
+    /// glass's index of refraction finite and above 0 (the shaders divide by it); the field and
+    /// its value where it is not.
+    pub fn validate(self) -> Result<(), String> {
+        match self {
+            Material::Mirror { roughness } if !(0.0..=1.0).contains(&roughness) => {
+                Err(format!("roughness {roughness} is not in [0, 1]"))
+            }
+            Material::Glass { index_of_refraction }
+                if !(index_of_refraction.is_finite() && index_of_refraction > 0.0) =>
+            {
+                Err(format!(
+                    "index_of_refraction {index_of_refraction} is not a finite number above 0"
+                ))
+            }
+            _ => Ok(()),
+        }
+    }
 }
 
 /// Words per mesh in the shaders' mesh table ([`Scene::mesh_table`]).
@@ -359,6 +378,45 @@ pub const GLASS_INDEX: f32 = 1.5;
 /// Roughness of the rough sphere of [`Scene::materials`]: a glossy reflection about 15 degrees
 /// wide (`2 * rf_roughness_spread_angle(0.3)` = 0.256 rad).
 pub const ROUGHNESS: f32 = 0.3;
+
+#[cfg(test)]
+mod tests {
+    use super::Material;
+
+    #[test]
+    fn materials_out_of_range_name_the_field_and_value() {
+        let bad = [
+            (Material::Mirror { roughness: f32::NAN }, "roughness NaN"),
+            (Material::Mirror { roughness: -0.1 }, "roughness -0.1"),
+            (Material::Mirror { roughness: 1.5 }, "roughness 1.5"),
+            (
+                Material::Glass {
+                    index_of_refraction: 0.0,
+                },
+                "index_of_refraction 0",
+            ),
+            (
+                Material::Glass {
+                    index_of_refraction: f32::INFINITY,
+                },
+                "index_of_refraction inf",
+            ),
+        ];
+        for (material, start) in bad {
+            let message = material.validate().expect_err("out of range");
+            assert!(message.starts_with(start), "{material:?}: {message}");
+        }
+        let good = [
+            Material::Textured,
+            Material::MIRROR,
+            Material::Mirror { roughness: 1.0 },
+            Material::Glass {
+                index_of_refraction: 1.5,
+            },
+        ];
+        assert!(good.iter().all(|material| material.validate().is_ok()));
+    }
+}
 
 /// Colour of the wireframe lines (RGBA): orange, visible on both checker colours.
 pub const WIRE_COLOUR: Vec4 = Vec4::new(1.0, 0.45, 0.05, 1.0);

@@ -28,7 +28,7 @@ const uint RT_MODE_CONE_REFRACTION = 9u;
 const uint RT_MODE_CONE_ROUGHNESS = 10u;
 const uint RT_MODE_CONE_ANISOTROPIC = 11u;
 
-// Materials: the discriminants of Material in src/rt/scene.rs.
+// Materials: Material::id in src/rt/scene.rs.
 const uint RT_MATERIAL_TEXTURED = 0u;
 const uint RT_MATERIAL_MIRROR = 1u;
 const uint RT_MATERIAL_GLASS = 2u;
