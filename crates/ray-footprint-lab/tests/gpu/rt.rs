@@ -890,6 +890,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     let r = record;
     match material {
         Material::Mirror { roughness } => {
+            // roughness_spread_angle: the suite's own tolerance, on the mesh's roughness.
             let check = suite::ray_cone::roughness_spread_angle();
             compare_with(
                 stats,
@@ -912,6 +913,8 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
             );
         }
     }
+    // anisotropic_cone_gradients: the suite's own tolerance, on the shader's width and direction
+    // and the triangle's vertices.
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let gradient_args = (r.width, r.direction, p[0], p[1], p[2], uv[0], uv[1], uv[2]);
     let gradients = Derivatives2::new(r.cone_uv_dx, r.cone_uv_dy);
