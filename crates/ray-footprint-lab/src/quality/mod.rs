@@ -15,8 +15,11 @@
 //! is rendered at one sample per pixel over K frames of a sub-pixel drift of the image, and scored
 //! ([`metrics`]): PSNR over the whole image and over the scene's mask, SSIM, FLIP, the share of
 //! the truth's fine detail kept, the mean change from frame to frame minus the truth's (shimmer),
-//! and the time per frame. [`report`] writes the tables, the goals, the images and the plots.
+//! and the time per frame. On the texture scenes [`footprint`] also measures how far the isotropic
+//! and the anisotropic cone's footprints are from the ray differential's, on the per-pixel records.
+//! [`report`] writes the tables, the goals, the images and the plots.
 
+pub mod footprint;
 pub mod image;
 mod lab;
 pub mod metrics;
