@@ -193,6 +193,41 @@ fn wgsl_ray_query_agrees_with_the_mirror() {
     });
 }
 
+/// [`FLAG_GLOSSY_LOBE`] changes what the rough mirror of the materials scene shows, at most of its
+/// pixels, and nothing else: every pixel whose primary ray hits another mesh or nothing keeps its
+/// colour (the flag turns only the mirrors' reflections, and the rough sphere is the only mirror).
+#[test]
+fn glossy_lobe_changes_only_the_rough_mirror() {
+    const ROUGH_SPHERE: u32 = 2;
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::materials()).unwrap_or_else(|e| panic!("{e}"));
+    let camera = Camera::materials();
+    let mut push = renderer.push_constants(&camera, Mode::Mip0, 1.0, WIDTH, HEIGHT);
+    let uniforms = camera.uniforms((WIDTH, HEIGHT), WireframeSettings::default());
+    let mirrored = renderer
+        .render(&push, &uniforms)
+        .unwrap_or_else(|e| panic!("{e}"));
+    push.flags = FLAG_GLOSSY_LOBE;
+    let glossy = renderer
+        .render(&push, &uniforms)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (mut rough, mut rough_changed, mut other_changed) = (0, 0, 0);
+    for ((record, a), b) in mirrored.records.iter().zip(&mirrored.pixels).zip(&glossy.pixels) {
+        if record.hit == 1 && record.instance == ROUGH_SPHERE {
+            rough += 1;
+            rough_changed += usize::from(a != b);
+        } else {
+            other_changed += usize::from(a != b);
+        }
+    }
+    println!("rough sphere: {rough_changed} of {rough} pixels changed; elsewhere {other_changed}");
+    assert!(
+        2 * rough_changed > rough,
+        "the lobe changes most of the rough mirror"
+    );
+    assert_eq!(other_changed, 0, "the lobe changes nothing else");
+}
+
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
 /// nothing, renders exactly the pixels of the recording pipeline in that mode in every
 /// [`colour_views`] view.
