@@ -276,8 +276,9 @@ type ColourView = (&'static str, Camera, Vec2, u32);
 
 /// The views the colour comparisons render, per scene: on the gallery the ground view, through the
 /// pixel centres and through points off them ([`PIXEL_OFFSET`]), the mirror close-up and the torus
-/// close-up; on the materials scene the glass close-up, and both spheres with the rough mirror
-/// reflecting about the shading normal and about GGX-drawn normals ([`FLAG_GLOSSY_LOBE`]).
+/// close-up; on the materials scene the glass close-up, the glass from inside ([`inside_glass`],
+/// where rays reflect totally), and both spheres with the rough mirror reflecting about the
+/// shading normal and about GGX-drawn normals ([`FLAG_GLOSSY_LOBE`]).
 fn colour_views() -> [(Scene, Vec<ColourView>); 2] {
     let gallery = vec![
         ("ground", Camera::ground(), Vec2::ZERO, 0),
@@ -287,6 +288,7 @@ fn colour_views() -> [(Scene, Vec<ColourView>); 2] {
     ];
     let materials = vec![
         ("glass", Camera::glass(), Vec2::ZERO, 0),
+        ("inside glass", inside_glass(), Vec2::ZERO, 0),
         ("materials", Camera::materials(), Vec2::ZERO, 0),
         (
             "materials glossy",
