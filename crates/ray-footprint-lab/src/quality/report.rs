@@ -302,7 +302,8 @@ fn json_number(value: f64) -> String {
     }
 }
 
-/// The run as JSON: the setup, every row, the goals, and the convergence rows if given.
+/// The run as JSON: the setup, every row, the footprints, the goals, and the convergence rows if
+/// given.
 pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String {
     let s = &run.settings;
     let mut rows = Vec::new();
@@ -342,6 +343,23 @@ pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String
             )
         })
         .collect();
+    let footprints: Vec<String> = run
+        .scenes
+        .iter()
+        .filter_map(|scene| scene.footprints.map(|f| (scene.scene.name, f)))
+        .map(|(name, f)| {
+            format!(
+                "    {{\"scene\": {}, \"pixels\": {}, \"differential_anisotropy\": {}, \"cone_major_levels\": {}, \"cone_minor_levels\": {}, \"anisotropic_major_levels\": {}, \"anisotropic_minor_levels\": {}}}",
+                json_string(name),
+                f.pixels,
+                json_number(f.anisotropy),
+                json_number(f.cone_major),
+                json_number(f.cone_minor),
+                json_number(f.anisotropic_major),
+                json_number(f.anisotropic_minor)
+            )
+        })
+        .collect();
     let convergence: Vec<String> = convergence
         .iter()
         .map(|c| {
@@ -358,13 +376,14 @@ pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String
         .collect();
     format!(
         "{{\n  \"device\": {},\n  \"width\": {},\n  \"height\": {},\n  \"samples_per_axis\": {},\n  \"frames\": {},\n  \
-         \"rows\": [\n{}\n  ],\n  \"goals\": [\n{}\n  ],\n  \"convergence\": [\n{}\n  ]\n}}\n",
+         \"rows\": [\n{}\n  ],\n  \"footprints\": [\n{}\n  ],\n  \"goals\": [\n{}\n  ],\n  \"convergence\": [\n{}\n  ]\n}}\n",
         json_string(&run.device),
         s.size.0,
         s.size.1,
         s.truth.samples_per_axis,
         s.truth.frames,
         rows.join(",\n"),
+        footprints.join(",\n"),
         goals.join(",\n"),
         convergence.join(",\n")
     )
