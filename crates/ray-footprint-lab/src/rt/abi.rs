@@ -55,7 +55,11 @@ pub struct RtPushConstants {
 /// their roughness (Walter, Marschner, Li, Torrance 2007, Eq. 35-36), one per ray, from a hash of
 /// the pixel and `pixel_offset`, instead of about the shading normal: the glossy reflection a
 /// supersampled ground truth integrates, which the ray-cone modes' roughness spread stands in for.
-/// The rays' cones and differentials are those of the shading normal's reflection.
+/// The rays' cones and differentials are those of the shading normal's reflection. Each reflected
+/// ray keeps the mirror's reflectance: the directions follow the microfacet normals' distribution
+/// `D(m) |m.n|`, without the weight `G |i.m| / (|i.n| |m.n|)` of a full GGX estimator
+/// (shadowing-masking and the reflection's change of variables; 1 at normal incidence), and a
+/// normal whose reflection would leave below the surface gives the shading normal's reflection.
 pub const FLAG_GLOSSY_LOBE: u32 = 1;
 
 /// What the renderer measured at a pixel's primary hit (`RtPixelRecord`, declared by the
