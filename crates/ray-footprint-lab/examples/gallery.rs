@@ -2,14 +2,17 @@
 //! GLSL ray-tracing pipeline, on the local Vulkan device (lavapipe unless `SHADER_PROPTEST_DEVICE`
 //! names another), validation layer on, into a folder of PNGs.
 //!
-//! For each mode: the ground plane at grazing angles (`ground_<mode>.png`) and a close-up of the
-//! mirror sphere (`reflection_<mode>.png`). With the wireframe mode, also a close-up of the dense
+//! For each mode: the ground plane at grazing angles (`ground_<mode>.png`), a close-up of the
+//! mirror sphere (`reflection_<mode>.png`) and the glass and rough mirror spheres of the materials
+//! scene (`materials_<mode>.png`). With the wireframe mode, also a close-up of the dense
 //! torus under each wireframe preset (`wireframe_<preset>.png`) and all of them side by side
 //! (`wireframe_presets.png`). With `--mode all` (the default) also side-by-side strips: every mode
 //! on the ground plane (`ground_modes.png`, in the order of `--help`), the isotropic and the
 //! anisotropic ways to pick a level of detail (`ground_gradients.png`: mip0, cone, ray_diff,
-//! bary_gradients), the reflection without and with curvature (`reflection_curvature.png`), and
-//! `tex_grad_scale` 0, 1 and 3 (`tex_grad_scale.png`). Every panel of a strip is captioned with
+//! bary_gradients), the reflection without and with curvature (`reflection_curvature.png`), the
+//! materials scene with and without the refracted and the rough cones (`materials_modes.png`:
+//! cone_curvature, cone_refraction, cone_roughness, ray_diff), and `tex_grad_scale` 0, 1 and 3
+//! (`tex_grad_scale.png`). Every panel of a strip is captioned with
 //! its mode and what it was rendered with (the preset, the scale), in DejaVu Sans.
 //!
 //! `cargo run --release -p ray-footprint-lab --example gallery -- [--width N] [--height N] [--mode NAME|all] [--out DIR]`
@@ -116,6 +119,7 @@ fn main() -> ExitCode {
 fn run(options: &Options) -> Result<(), String> {
     let gpu = open_device().map_err(|e| e.to_string())?;
     let renderer = Renderer::new(&gpu, Scene::gallery()).map_err(|e| e.to_string())?;
+    let materials = Renderer::new(&gpu, Scene::materials()).map_err(|e| e.to_string())?;
     let triangles: usize = renderer.scene().meshes.iter().map(|m| m.triangle_count()).sum();
     println!("device: {}", gpu.name());
     println!(
@@ -128,12 +132,17 @@ fn run(options: &Options) -> Result<(), String> {
     }
     let mut gallery = Gallery {
         renderer: &renderer,
+        materials: &materials,
         options,
         written: Vec::new(),
         timings: Vec::new(),
     };
     gallery.warm_up().map_err(|e| e.to_string())?;
-    let views = [("ground", Camera::ground()), ("reflection", Camera::reflection())];
+    let views = [
+        ("ground", Camera::ground()),
+        ("reflection", Camera::reflection()),
+        ("materials", Camera::materials()),
+    ];
     let mut frames = Vec::new();
     for (index, &mode) in options.modes.iter().enumerate() {
         for (view, camera) in &views {
@@ -190,23 +199,31 @@ fn scale_of(mode: Mode) -> f32 {
 }
 
 struct Gallery<'a, 'g> {
+    /// The gallery scene's renderer.
     renderer: &'a Renderer<'g>,
+    /// The materials scene's renderer (the `materials` view).
+    materials: &'a Renderer<'g>,
     options: &'a Options,
     written: Vec<PathBuf>,
     timings: Vec<(String, f64)>,
 }
 
 impl Gallery<'_, '_> {
-    /// One untimed frame, so the first timing does not include the driver's shader compilation.
+    /// One untimed frame per renderer, so the first timing does not include the driver's shader
+    /// compilation.
     fn warm_up(&self) -> Result<(), Error> {
         println!("warming up (first frame compiles the pipeline) ...");
         let camera = Camera::ground();
-        let push = self.renderer.push_constants(&camera, Mode::Cone, 1.0, 16, 16);
         let uniforms = camera.uniforms((16, 16), WireframeSettings::default());
-        self.renderer.render(&push, &uniforms).map(|_| ())
+        for renderer in [self.renderer, self.materials] {
+            let push = renderer.push_constants(&camera, Mode::Cone, 1.0, 16, 16);
+            renderer.render(&push, &uniforms)?;
+        }
+        Ok(())
     }
 
-    /// Traces one frame of `camera` in `mode`, timed; the wireframe mode draws `preset`.
+    /// Traces one frame of `camera` in `mode`, timed, in the materials scene for the `materials`
+    /// view and in the gallery scene otherwise; the wireframe mode draws `preset`.
     fn render(
         &mut self,
         view: &str,
@@ -216,11 +233,14 @@ impl Gallery<'_, '_> {
         (preset, settings): Preset,
     ) -> Result<Frame, Error> {
         let (width, height) = (self.options.width, self.options.height);
-        let push = self
-            .renderer
-            .push_constants(camera, mode, tex_grad_scale, width, height);
+        let renderer = if view == "materials" {
+            self.materials
+        } else {
+            self.renderer
+        };
+        let push = renderer.push_constants(camera, mode, tex_grad_scale, width, height);
         let uniforms = camera.uniforms((width, height), settings);
-        let frame = self.renderer.render(&push, &uniforms)?;
+        let frame = renderer.render(&push, &uniforms)?;
         let ms = frame.trace_time.as_secs_f64() * 1e3;
         println!("    {ms:.1} ms per frame");
         let setting = if mode == Mode::Wireframe {
@@ -253,8 +273,9 @@ impl Gallery<'_, '_> {
         self.save_strip("wireframe_presets.png", &panels)
     }
 
-    /// The strips: every mode on the ground, the reflection without and with curvature, and
-    /// tex_grad_scale 0, 1 and 3.
+    /// The strips: every mode on the ground, the reflection without and with curvature, the
+    /// materials scene with and without the refracted and rough cones, and tex_grad_scale 0, 1
+    /// and 3.
     fn strips(&mut self, frames: &[((&str, Mode), Frame)]) -> Result<(), String> {
         let find = |view: &str, mode: Mode| {
             frames
@@ -277,6 +298,16 @@ impl Gallery<'_, '_> {
             panel("reflection", Mode::ConeCurvature),
         ];
         self.save_strip("reflection_curvature.png", &reflection)?;
+        let materials = [
+            Mode::ConeCurvature,
+            Mode::ConeRefraction,
+            Mode::ConeRoughness,
+            Mode::RayDiff,
+        ];
+        self.save_strip(
+            "materials_modes.png",
+            &materials.map(|mode| panel("materials", mode)),
+        )?;
         println!("[strip] ground view, tex_grad_scale 0 and 1 ...");
         let mut scaled = Vec::new();
         for scale in [0.0, 1.0] {

@@ -157,7 +157,7 @@ fn main() -> ExitCode {
     }
 }
 
-/// Runs the lab, prints the setup, the table, the goals (and the convergence table) and the
+/// Runs the lab, prints the setup, the table, the footprints, the goals (and the convergence table) and the
 /// files written, and writes the folder.
 fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let started = Instant::now();
@@ -190,6 +190,11 @@ fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let goals = report::goals(&lab_run);
     println!("\n{}", report::setup_markdown(&lab_run));
     println!("{}", report::table_markdown(&lab_run));
+    println!(
+        "{}{}",
+        report::FOOTPRINTS_CAPTION,
+        report::footprints_markdown(&lab_run)
+    );
     let met = goals.iter().filter(|g| g.met).count();
     println!(
         "goals ({met} of {} met):\n{}",

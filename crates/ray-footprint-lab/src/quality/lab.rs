@@ -1,9 +1,10 @@
 //! A run of the lab: the ground truths (from the cache or rendered), every method's drift
 //! frames, and every metric per scene and method.
 
+use super::footprint::{self, Footprints};
 use super::image::Image;
 use super::metrics::{self, FlipMap};
-use super::scenes::{LabScene, Method};
+use super::scenes::{LabScene, Measure, Method};
 use super::truth::{self, Truth, TruthSettings};
 use super::LabError;
 use crate::rt::{Frame, Renderer};
@@ -86,6 +87,10 @@ pub struct SceneResult {
     pub truth_time: Duration,
     /// Per pixel: whether it is in the scene's mask.
     pub mask: Vec<bool>,
+    /// On a texture scene, the cones' footprints against the ray differential's over the mask
+    /// (still frame's records); `None` on the wireframe scene, or where no pixel could be
+    /// compared.
+    pub footprints: Option<Footprints>,
     /// The methods, the baseline first.
     pub methods: Vec<MethodResult>,
 }
@@ -226,12 +231,16 @@ fn run_scene(
     let truth_change = metrics::mean_change(&truth.frames)?;
     let still = &truth.frames[0];
     let mut mask = Vec::new();
+    let mut footprints = None;
     let mut methods = Vec::new();
     for method in lab.methods() {
         progress.stage(&format!("{}: {}", lab.name, method.name));
         let frames = drift_frames(&renderer, &lab, &method, settings, progress)?;
         if mask.is_empty() {
             mask = frames[0].records.iter().map(|r| lab.mask.contains(r)).collect();
+            if lab.measure == Measure::Texture {
+                footprints = footprint::footprints(&frames[0].records, &mask);
+            }
         }
         methods.push(score(method, still, &frames, &mask, truth_change)?);
     }
@@ -242,6 +251,7 @@ fn run_scene(
         truth_cached,
         truth_time,
         mask,
+        footprints,
         methods,
     })
 }

@@ -1,20 +1,25 @@
 //! The quality lab: what each level-of-detail method buys, measured against a supersampled
 //! ground truth rendered through the same ray-tracing pipeline.
 //!
-//! Five scenes built in code ([`LabScene::all`]): the ground plane at grazing angles under a
+//! Seven scenes built in code ([`LabScene::all`]): the ground plane at grazing angles under a
 //! high-frequency checker, the same plane under a 100-degree view measured in the image's corners
 //! (where each primary ray's own cone matters), a mirror hyperbolic paraboloid in a textured room (the saddle reflector
-//! of Ray Tracing Gems ch. 20, Fig. 20-10 and 20-11), the gallery's mirror sphere, and the dense
-//! torus under the wireframe. Each has a ground truth: its truth method (mip 0; for the wireframe
-//! the same lines drawn hard) with N x N stratified sub-pixel samples per pixel, averaged in
+//! of Ray Tracing Gems ch. 20, Fig. 20-10 and 20-11), the gallery's mirror sphere, a glass sphere
+//! showing the plane through it, a rough mirror sphere, and the dense torus under the wireframe.
+//! Each has a ground truth: its truth method (mip 0, on the rough mirror reflecting about normals
+//! drawn from its GGX lobe; for the wireframe the same lines drawn hard) with N x N stratified
+//! sub-pixel samples per pixel, averaged in
 //! linear light (a box filter), cached on disk under a hash of everything it depends on
 //! ([`truth::truth_key`]). Every method ([`LabScene::methods`]: every texture-filtering mode of
 //! [`Mode::ALL`](crate::rt::Mode::ALL), or the wireframe's lines with and without anti-aliasing)
 //! is rendered at one sample per pixel over K frames of a sub-pixel drift of the image, and scored
 //! ([`metrics`]): PSNR over the whole image and over the scene's mask, SSIM, FLIP, the share of
 //! the truth's fine detail kept, the mean change from frame to frame minus the truth's (shimmer),
-//! and the time per frame. [`report`] writes the tables, the goals, the images and the plots.
+//! and the time per frame. On the texture scenes [`footprint`] also measures how far the isotropic
+//! and the anisotropic cone's footprints are from the ray differential's, on the per-pixel records.
+//! [`report`] writes the tables, the goals, the images and the plots.
 
+pub mod footprint;
 pub mod image;
 mod lab;
 pub mod metrics;

@@ -1,6 +1,7 @@
 //! What a run publishes: the goals, the table as Markdown, CSV and JSON, and the images (every
 //! frame, the FLIP error maps, captioned crops side by side) and plots in an output folder.
 
+use super::footprint::Footprints;
 use super::lab::{Convergence, LabRun, SceneResult};
 use super::{plots, LabError};
 use crate::figure::{self, Panel, RgbaImage};
@@ -12,6 +13,10 @@ use std::path::{Path, PathBuf};
 pub const RAY_DIFF_MARGIN_DB: f64 = 6.0;
 /// PSNR margin over mip 0 that the cone with curvature must reach on the reflector, dB.
 pub const CURVATURE_MARGIN_DB: f64 = 3.0;
+/// What the footprint table shows, above it.
+pub const FOOTPRINTS_CAPTION: &str = "Mean distance in mip levels, |log2(cone / s)|, between each cone's \
+    footprint and the axes s1 >= s2 of the ray differential's at the primary hits in the mask (the \
+    per-pixel records, whatever the sampler does).\n\n";
 /// Panels per row in the side-by-side crops.
 const PANELS_PER_ROW: usize = 4;
 /// Magnification of the crops (nearest neighbour).
@@ -30,13 +35,40 @@ pub struct Goal {
     pub met: bool,
 }
 
+/// Per scene, the method that stands for what a mode adds and the method without it, whose
+/// masked PSNR it must beat: the refracted cone on the glass sphere and the roughness spread on
+/// the rough mirror, both against the cone with curvature (which carries the cone through glass
+/// as if it were not there, and reflects it off the rough mirror as off a smooth one); the
+/// anisotropic cone at the plane's grazing angles and in the wide view's corners, against the
+/// isotropic cone.
+pub const IMPROVEMENTS: [(&str, &str, &str); 4] = [
+    ("glass", "cone_refraction", "cone_curvature"),
+    ("rough", "cone_roughness", "cone_curvature"),
+    ("plane", "cone_anisotropic", "cone"),
+    ("corners", "cone_anisotropic", "cone"),
+];
+
+/// The scenes at grazing angles, where the anisotropic cone's footprint must be nearer the ray
+/// differential's than the isotropic cone's along the minor axis (the [`Footprints`] of the
+/// records, whatever the device's filtering).
+pub const GRAZING_SCENES: [&str; 2] = ["plane", "corners"];
+
 /// The goals: on the paraboloid, ray differentials (isotropic and anisotropic) at least
 /// [`RAY_DIFF_MARGIN_DB`] and the cone with curvature at least [`CURVATURE_MARGIN_DB`] above mip 0
-/// in PSNR over the reflector; on every scene, every method beats the baseline in mean FLIP and
-/// in shimmer.
+/// in PSNR over the reflector; every [`IMPROVEMENTS`] pair, the mode above the method without
+/// what it adds in PSNR over the mask; on the [`GRAZING_SCENES`], the anisotropic cone's minor
+/// axis nearer the ray differential's than the isotropic cone; on every scene, every method beats
+/// the baseline in mean FLIP and in shimmer.
 pub fn goals(run: &LabRun) -> Vec<Goal> {
     let mut goals = Vec::new();
     for scene in &run.scenes {
+        let improvements = IMPROVEMENTS.iter().filter(|(name, ..)| *name == scene.scene.name);
+        goals.extend(
+            improvements.filter_map(|&(_, method, reference)| improvement_goal(scene, method, reference)),
+        );
+        if GRAZING_SCENES.contains(&scene.scene.name) {
+            goals.extend(scene.footprints.map(|f| footprint_goal(scene.scene.name, f)));
+        }
         if scene.scene.name == "paraboloid" {
             let margins = [
                 ("ray_diff", RAY_DIFF_MARGIN_DB),
@@ -71,6 +103,61 @@ fn margin_goal(scene: &SceneResult, name: &str, margin: f64) -> Option<Goal> {
         ),
         met: gain >= margin,
     })
+}
+
+/// `name`'s masked PSNR above `reference`'s, if the scene has both.
+fn improvement_goal(scene: &SceneResult, name: &str, reference: &str) -> Option<Goal> {
+    let method = scene.method(name)?;
+    let other = scene.method(reference)?;
+    let gain = method.psnr_mask - other.psnr_mask;
+    Some(Goal {
+        scene: scene.scene.name.to_string(),
+        statement: format!("{name} PSNR over the mask > {reference}"),
+        measured: format!(
+            "{:+.2} dB ({:.2} vs {:.2} dB)",
+            gain, method.psnr_mask, other.psnr_mask
+        ),
+        met: gain > 0.0,
+    })
+}
+
+/// The anisotropic cone's minor axis nearer the ray differential's than the isotropic cone.
+fn footprint_goal(scene: &str, footprints: Footprints) -> Goal {
+    Goal {
+        scene: scene.to_string(),
+        statement: String::from(
+            "cone_anisotropic's minor axis nearer the ray differential's than cone's (mip levels)",
+        ),
+        measured: format!(
+            "{:.3} vs {:.3} levels",
+            footprints.anisotropic_minor, footprints.cone_minor
+        ),
+        met: footprints.anisotropic_minor < footprints.cone_minor,
+    }
+}
+
+/// The cones' footprints against the ray differential's per texture scene, in Markdown.
+pub fn footprints_markdown(run: &LabRun) -> String {
+    let mut table = String::from(
+        "| scene | pixels | differential s1/s2 (median) | cone vs s1 | cone vs s2 | anisotropic cone vs s1 | \
+         anisotropic cone vs s2 |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for scene in &run.scenes {
+        if let Some(f) = scene.footprints {
+            let _ = writeln!(
+                table,
+                "| {} | {} | {:.2} | {:.3} | {:.3} | {:.3} | {:.3} |",
+                scene.scene.name,
+                f.pixels,
+                f.anisotropy,
+                f.cone_major,
+                f.cone_minor,
+                f.anisotropic_major,
+                f.anisotropic_minor
+            );
+        }
+    }
+    table
 }
 
 /// Every method but the baseline: lower mean FLIP and lower shimmer than the baseline.
@@ -215,7 +302,8 @@ fn json_number(value: f64) -> String {
     }
 }
 
-/// The run as JSON: the setup, every row, the goals, and the convergence rows if given.
+/// The run as JSON: the setup, every row, the footprints, the goals, and the convergence rows if
+/// given.
 pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String {
     let s = &run.settings;
     let mut rows = Vec::new();
@@ -255,6 +343,23 @@ pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String
             )
         })
         .collect();
+    let footprints: Vec<String> = run
+        .scenes
+        .iter()
+        .filter_map(|scene| scene.footprints.map(|f| (scene.scene.name, f)))
+        .map(|(name, f)| {
+            format!(
+                "    {{\"scene\": {}, \"pixels\": {}, \"differential_anisotropy\": {}, \"cone_major_levels\": {}, \"cone_minor_levels\": {}, \"anisotropic_major_levels\": {}, \"anisotropic_minor_levels\": {}}}",
+                json_string(name),
+                f.pixels,
+                json_number(f.anisotropy),
+                json_number(f.cone_major),
+                json_number(f.cone_minor),
+                json_number(f.anisotropic_major),
+                json_number(f.anisotropic_minor)
+            )
+        })
+        .collect();
     let convergence: Vec<String> = convergence
         .iter()
         .map(|c| {
@@ -271,13 +376,14 @@ pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String
         .collect();
     format!(
         "{{\n  \"device\": {},\n  \"width\": {},\n  \"height\": {},\n  \"samples_per_axis\": {},\n  \"frames\": {},\n  \
-         \"rows\": [\n{}\n  ],\n  \"goals\": [\n{}\n  ],\n  \"convergence\": [\n{}\n  ]\n}}\n",
+         \"rows\": [\n{}\n  ],\n  \"footprints\": [\n{}\n  ],\n  \"goals\": [\n{}\n  ],\n  \"convergence\": [\n{}\n  ]\n}}\n",
         json_string(&run.device),
         s.size.0,
         s.size.1,
         s.truth.samples_per_axis,
         s.truth.frames,
         rows.join(",\n"),
+        footprints.join(",\n"),
         goals.join(",\n"),
         convergence.join(",\n")
     )
@@ -408,9 +514,11 @@ pub fn write(
     }
     let n = run.settings.truth.samples_per_axis;
     let mut markdown = format!(
-        "# Quality lab\n\n{}\n{}\n## Goals\n\n{}",
+        "# Quality lab\n\n{}\n{}\n## Footprints against the ray differential\n\n{}{}\n## Goals\n\n{}",
         setup_markdown(run),
         table_markdown(run),
+        FOOTPRINTS_CAPTION,
+        footprints_markdown(run),
         goals_markdown(goals)
     );
     if !convergence.is_empty() {

@@ -1,6 +1,6 @@
 //! The lab's scenes, built in code, and the methods each is rendered with.
 
-use crate::rt::abi::RtPixelRecord;
+use crate::rt::abi::{RtPixelRecord, FLAG_GLOSSY_LOBE};
 use crate::rt::{checker, two_scale_checker, Camera, MipChain, Mode, Scene, CHECKER_SQUARE, TEXTURE_SIZE};
 use glam::Vec3;
 use ray_footprint::wireframe::WireframeSettings;
@@ -104,6 +104,9 @@ pub struct LabScene {
     /// The part shown in the side-by-side crops: left, top, width and height as fractions of
     /// the image.
     pub crop: [f32; 4],
+    /// The push constants' flags of the ground truth's samples: [`FLAG_GLOSSY_LOBE`] on the rough
+    /// reflector, whose ground truth integrates the mirror's glossy lobe; 0 elsewhere.
+    pub truth_flags: u32,
 }
 
 impl LabScene {
@@ -123,6 +126,7 @@ impl LabScene {
             },
             measure: Measure::Texture,
             crop: [0.0, 0.48, 0.5, 0.4],
+            truth_flags: 0,
         }
     }
 
@@ -148,6 +152,7 @@ impl LabScene {
             },
             measure: Measure::Texture,
             crop: [0.0, 0.6, 0.4, 0.4],
+            truth_flags: 0,
         }
     }
 
@@ -163,6 +168,7 @@ impl LabScene {
             mask: Mask::Mesh(1),
             measure: Measure::Texture,
             crop: [0.25, 0.25, 0.5, 0.5],
+            truth_flags: 0,
         }
     }
 
@@ -178,6 +184,41 @@ impl LabScene {
             mask: Mask::Mesh(1),
             measure: Measure::Texture,
             crop: [0.25, 0.35, 0.5, 0.5],
+            truth_flags: 0,
+        }
+    }
+
+    /// The glass sphere of [`Scene::materials`] close up, the ground plane seen through it upside
+    /// down: what the refracted texture's level of detail does; mask: the glass sphere.
+    pub fn glass() -> LabScene {
+        LabScene {
+            name: "glass",
+            description: "glass sphere (index 1.5) showing the ground plane through it",
+            scene: Scene::materials(),
+            texture: checker(TEXTURE_SIZE, CHECKER_SQUARE),
+            camera: Camera::glass(),
+            mask: Mask::Mesh(1),
+            measure: Measure::Texture,
+            crop: [0.25, 0.35, 0.5, 0.5],
+            truth_flags: 0,
+        }
+    }
+
+    /// The rough mirror sphere of [`Scene::materials`] close up (where the gallery's mirror
+    /// stands, seen as the sphere scene sees that), reflecting the ground plane; its ground truth
+    /// integrates the mirror's GGX lobe ([`FLAG_GLOSSY_LOBE`]), the methods reflect about the
+    /// shading normal; mask: the rough sphere.
+    pub fn rough() -> LabScene {
+        LabScene {
+            name: "rough",
+            description: "rough mirror sphere (roughness 0.3) reflecting the ground plane",
+            scene: Scene::materials(),
+            texture: checker(TEXTURE_SIZE, CHECKER_SQUARE),
+            camera: Camera::reflection(),
+            mask: Mask::Mesh(2),
+            measure: Measure::Texture,
+            crop: [0.25, 0.35, 0.5, 0.5],
+            truth_flags: FLAG_GLOSSY_LOBE,
         }
     }
 
@@ -195,6 +236,7 @@ impl LabScene {
                 settings: WireframeSettings::PRESETS[0].1,
             },
             crop: [0.25, 0.25, 0.5, 0.5],
+            truth_flags: 0,
         }
     }
 
@@ -205,6 +247,8 @@ impl LabScene {
             LabScene::corners(),
             LabScene::paraboloid(),
             LabScene::sphere(),
+            LabScene::glass(),
+            LabScene::rough(),
             LabScene::torus(),
         ]
     }
@@ -228,20 +272,26 @@ impl LabScene {
                     name: String::from("wireframe_hard"),
                     mode: Mode::Wireframe,
                     settings: hard_lines(settings),
+                    flags: 0,
                 },
                 Method {
                     name: String::from("wireframe"),
                     mode: Mode::Wireframe,
                     settings,
+                    flags: 0,
                 },
             ],
         }
     }
 
-    /// How the ground truth renders each of its samples: mip 0; for the wireframe, the hard lines.
+    /// How the ground truth renders each of its samples: mip 0 under the scene's
+    /// [`LabScene::truth_flags`]; for the wireframe, the hard lines.
     pub fn truth_method(&self) -> Method {
         match self.measure {
-            Measure::Texture => Method::texture(Mode::Mip0),
+            Measure::Texture => Method {
+                flags: self.truth_flags,
+                ..Method::texture(Mode::Mip0)
+            },
             Measure::Wireframe { .. } => self.methods().swap_remove(0),
         }
     }
@@ -283,15 +333,20 @@ pub struct Method {
     pub mode: Mode,
     /// The wireframe settings (drawn in the wireframe mode only).
     pub settings: WireframeSettings,
+    /// The push constants' flags (`FLAG_*`): 0 for every method, [`LabScene::truth_flags`] for
+    /// a ground truth.
+    pub flags: u32,
 }
 
 impl Method {
-    /// `mode` on the texture, under the default wireframe settings (drawn in no texture mode).
+    /// `mode` on the texture, under the default wireframe settings (drawn in no texture mode),
+    /// without flags.
     pub fn texture(mode: Mode) -> Method {
         Method {
             name: mode.name().to_string(),
             mode,
             settings: WireframeSettings::default(),
+            flags: 0,
         }
     }
 }

@@ -78,6 +78,7 @@ pub fn render(
 ) -> Result<crate::rt::Frame, LabError> {
     let mut push = renderer.push_constants(&lab.camera, method.mode, 1.0, width, height);
     push.pixel_offset = offset;
+    push.flags = method.flags;
     let uniforms = lab.camera.uniforms((width, height), method.settings);
     Ok(renderer.render(&push, &uniforms)?)
 }
@@ -149,7 +150,7 @@ fn directory_text(dir: &str) -> Result<Vec<(String, Vec<u8>)>, LabError> {
 }
 
 /// What a ground truth depends on, hashed: the scene as built (vertices, indices, materials,
-/// texture, camera), the truth method (mode and wireframe settings), the image size, N and K,
+/// texture, camera), the truth method (mode, flags and wireframe settings), the image size, N and K,
 /// the device, every shader the renderer compiles (its own and the library's GLSL), and the source
 /// of the sampling and the averaging (this file and `image.rs`).
 pub fn truth_key(
@@ -173,6 +174,7 @@ pub fn truth_key(
     hash.bytes(&lab.camera.fov_y.to_le_bytes());
     let method = lab.truth_method();
     hash.bytes(&method.mode.id().to_le_bytes());
+    hash.bytes(&method.flags.to_le_bytes());
     hash.bytes(bytemuck::bytes_of(&method.settings.pack()));
     for value in [size.0, size.1, settings.samples_per_axis, settings.frames] {
         hash.bytes(&value.to_le_bytes());

@@ -45,14 +45,28 @@ pub struct RtPushConstants {
     /// through the centres; sub-pixel offsets supersample a frame, or move the image by less
     /// than a pixel.
     pub pixel_offset: glam::Vec2,
+    /// What the frame renders besides its mode: a sum of the `FLAG_*` constants, 0 for none.
+    pub flags: u32,
     /// Always 0.
-    pub pad: [u32; 2],
+    pub pad: u32,
 }
 
+/// [`RtPushConstants::flags`]: the mirrors reflect about a normal drawn from the GGX distribution of
+/// their roughness (Walter, Marschner, Li, Torrance 2007, Eq. 35-36), one per ray, from a hash of
+/// the pixel and `pixel_offset`, instead of about the shading normal: the glossy reflection a
+/// supersampled ground truth integrates, which the ray-cone modes' roughness spread stands in for.
+/// The rays' cones and differentials are those of the shading normal's reflection. Each reflected
+/// ray keeps the mirror's reflectance: the directions follow the microfacet normals' distribution
+/// `D(m) |m.n|`, without the weight `G |i.m| / (|i.n| |m.n|)` of a full GGX estimator
+/// (shadowing-masking and the reflection's change of variables; 1 at normal incidence), and a
+/// normal whose reflection would leave below the surface gives the shading normal's reflection.
+pub const FLAG_GLOSSY_LOBE: u32 = 1;
+
 /// What the renderer measured at a pixel's primary hit (`RtPixelRecord`, declared by the
-/// renderer's shaders): the hit data, every ray-cone value the shader computed from it, and the
-/// ray-differential and wireframe values ([`RtDiffRecord`]). 272 bytes, 16-byte aligned. A miss
-/// has `hit == 0` and zeros elsewhere.
+/// renderer's shaders): the hit data, every ray-cone value the shader computed from it, the
+/// ray-differential and wireframe values ([`RtDiffRecord`]), and the values of the hit's material
+/// (the roughness spread of a mirror, the refraction of a glass surface) and the anisotropic cone
+/// footprint. 320 bytes, 16-byte aligned. A miss has `hit == 0` and zeros elsewhere.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct RtPixelRecord {
@@ -88,10 +102,35 @@ pub struct RtPixelRecord {
     pub curvature: f32,
     /// `rf_curvature_spread_angle(curvature, width, normal, direction)`.
     pub curvature_spread: f32,
-    /// `rf_propagate(cone, t, curvature_spread)`: the cone a reflection leaves with.
+    /// `rf_propagate(cone, t, curvature_spread + 2 * roughness_spread)`: the cone a reflection
+    /// leaves with in the `cone_roughness` mode (on a smooth mirror, in `cone_curvature` too).
     pub reflected: RayCone,
     /// The ray-differential, re-intersection and wireframe values.
     pub diff: RtDiffRecord,
+    /// `rf_roughness_spread_angle(roughness)` of a mirror ([`crate::rt::Material::Mirror`]); 0 on
+    /// other materials.
+    pub roughness_spread: f32,
+    /// On glass ([`crate::rt::Material::Glass`]), the index ratio at the hit,
+    /// `n_incident / n_transmitted`: `1 / index_of_refraction` entering (the ray meets the side the
+    /// stored normal points to, `dot(normal, direction) < 0`), `index_of_refraction` leaving; 0 on
+    /// other materials.
+    pub eta: f32,
+    /// On glass, the normal's turn across the footprint that `rf_refract_ray_cone` takes,
+    /// `curvature * footprint` (relative to the stored normal, as that function and
+    /// `rf_curvature_spread_angle` take it); 0 elsewhere.
+    pub normal_spread: f32,
+    /// On glass, 1 where `rf_refract_ray_cone` reports total internal reflection; 0 elsewhere.
+    pub total_internal_reflection: u32,
+    /// On glass, `rf_refract_ray_cone((width, cone.spread_angle), normal, direction, normal_spread,
+    /// eta)`: the cone leaving the hit in the `cone_refraction` mode; 0 elsewhere.
+    pub refracted: RayCone,
+    /// `rf_anisotropic_cone_gradients(width, direction, p0, p1, p2, uv0, uv1, uv2).dx`: the major
+    /// axis of the cone's elliptical footprint in UV units.
+    pub cone_uv_dx: glam::Vec2,
+    /// `.dy` of the same call: the minor axis.
+    pub cone_uv_dy: glam::Vec2,
+    /// Always 0.
+    pub pad: [u32; 2],
 }
 
 /// What the renderer measured at a pixel's primary hit with the `ray_diff` and `wireframe`
@@ -171,4 +210,4 @@ pub struct RtUniforms {
 const _: () = assert!(std::mem::size_of::<RtPushConstants>() == 96);
 const _: () = assert!(std::mem::size_of::<RtPushConstants>() <= PUSH_CONSTANT_LIMIT);
 const _: () =
-    assert!(std::mem::size_of::<RtPixelRecord>() == 272 && std::mem::size_of::<RtUniforms>() == 176);
+    assert!(std::mem::size_of::<RtPixelRecord>() == 320 && std::mem::size_of::<RtUniforms>() == 176);

@@ -1,7 +1,7 @@
 //! Acceleration structures: one bottom-level structure per mesh, one top-level structure with an
 //! identity-transform instance per mesh (instance custom index = mesh index).
 
-use super::scene::{Scene, VERTEX_FLOATS};
+use super::scene::{Scene, MESH_TABLE_WORDS, VERTEX_FLOATS};
 use ash::vk;
 use shader_proptest::{vulkan, Buffer, Error, Location, Object, Owner};
 
@@ -119,7 +119,7 @@ fn mesh_geometries(
     scene
         .meshes
         .iter()
-        .zip(table.chunks_exact(3))
+        .zip(table.chunks_exact(MESH_TABLE_WORDS))
         .map(|(mesh, entry)| {
             let triangles = vk::AccelerationStructureGeometryTrianglesDataKHR::default()
                 .vertex_format(vk::Format::R32G32B32_SFLOAT)

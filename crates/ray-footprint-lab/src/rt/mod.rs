@@ -3,7 +3,7 @@
 //! shader, on a shader-proptest device with the validation layer on.
 //!
 //! A [`Renderer`] uploads a [`Scene`] built in code (a large textured ground plane, a mirror sphere,
-//! a dense torus), builds one bottom-level acceleration structure per mesh and a top-level one,
+//! a dense torus; or glass and rough mirror spheres over the plane, [`Scene::materials`]), builds one bottom-level acceleration structure per mesh and a top-level one,
 //! makes a checker texture and a mip-colour texture with full mip chains, a trilinear sampler with
 //! `maxLod = VK_LOD_CLAMP_NONE` (anisotropic where the device allows), and its pipelines:
 //!
@@ -13,7 +13,9 @@
 //!   beside it (the renderer's payload), read `RfRayConePushConstants` inside the renderer's push
 //!   constants and the inverse camera matrices and `RfWireframePushConstants` from a uniform buffer
 //!   ([`RtUniforms`]); on a primary hit the closest-hit shader measures every ray-cone value, the
-//!   ray differentials, the re-intersected barycentric offsets and the wireframe coverage, and it
+//!   ray differentials, the re-intersected barycentric offsets, the wireframe coverage, the
+//!   material's values (a mirror's roughness spread, glass's refracted cone) and the anisotropic
+//!   cone gradients, and it
 //!   shades in the chosen [`Mode`] with the functions of `rt_common.glsl` that the colour-only
 //!   pipelines ([`ColourPipeline`]) share;
 //! - Slang (`shaders/closest_hit.slang`, compiled with slangc with the library's Slang directory
@@ -58,7 +60,7 @@ pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
 pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex,
-    VERTEX_FLOATS, WIRE_COLOUR,
+    GLASS_INDEX, MESH_TABLE_WORDS, ROUGHNESS, VERTEX_FLOATS, WIRE_COLOUR,
 };
 pub use texture::{
     checker, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,
@@ -89,6 +91,9 @@ pub enum Error {
     NotSupported(String),
     /// A texture given to [`Renderer::with_texture`] is not a full square mip chain: what is wrong.
     InvalidTexture(String),
+    /// A mesh's material has a parameter the shaders cannot take: the mesh and what is wrong
+    /// ([`Material::validate`]).
+    InvalidMaterial(String),
 }
 
 impl fmt::Display for Error {
@@ -105,6 +110,7 @@ impl fmt::Display for Error {
             }
             Error::NotSupported(reason) => write!(f, "not supported: {reason}"),
             Error::InvalidTexture(reason) => write!(f, "invalid texture: {reason}"),
+            Error::InvalidMaterial(reason) => write!(f, "invalid material: {reason}"),
         }
     }
 }

@@ -7,11 +7,13 @@ use std::fmt;
 ///
 /// Every mode traces the same rays and records the same per-pixel values
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
-/// reflection off a mirror widens its cone by the surface curvature, whether a reflected ray
-/// carries a ray differential, and whether the wireframe is drawn. The ray-differential modes
-/// carry the differential through the mirror (Igehy's reflection); the re-intersection of
-/// `BaryGradients` needs a primary hit: what the mirror reflects is sampled at the ray-cone LOD in
-/// it.
+/// reflection off a mirror widens its cone by the surface curvature and roughness, whether glass
+/// refracts the cone, whether a reflected or refracted ray carries a ray differential, and whether
+/// the wireframe is drawn. Every mode reflects and refracts the same rays. The ray-differential
+/// modes carry the differential through mirrors and glass (Igehy's reflection and refraction); the
+/// re-intersection of `BaryGradients` needs a primary hit: what the mirror reflects is sampled at
+/// the ray-cone LOD in it. The cone modes other than `ConeRefraction` carry the cone through glass
+/// as if the glass were not there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u32)]
 pub enum Mode {
@@ -37,11 +39,22 @@ pub enum Mode {
     /// `textureLod` at the isotropic LOD of the ray-differential texel gradients (RTG Eq. 1-2:
     /// the chapter's RayDiffs); reflections carry the differential.
     RayDiffIsotropic = 8,
+    /// Ray-cone LOD as `ConeCurvature`; glass refracts the cone (`rf_refract_ray_cone`, RTG II
+    /// ch. 10), the normal's turn across the footprint from the curvature; total internal
+    /// reflection gives the reflected cone.
+    ConeRefraction = 9,
+    /// Ray-cone LOD as `ConeCurvature`; a rough mirror widens the reflected cone by twice
+    /// `rf_roughness_spread_angle` of its roughness (JCGT 2021).
+    ConeRoughness = 10,
+    /// `textureGrad` with the gradients of the cone's elliptical footprint
+    /// (`rf_anisotropic_cone_gradients`, JCGT 2021), times `tex_grad_scale`; reflections as
+    /// `Cone`.
+    ConeAnisotropic = 11,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 9] = [
+    pub const ALL: [Mode; 12] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
@@ -51,6 +64,9 @@ impl Mode {
         Mode::RayDiffIsotropic,
         Mode::BaryGradients,
         Mode::Wireframe,
+        Mode::ConeRefraction,
+        Mode::ConeRoughness,
+        Mode::ConeAnisotropic,
     ];
 
     /// The value the shaders compare with `RT_MODE_*`.
@@ -70,6 +86,9 @@ impl Mode {
             Mode::BaryGradients => "bary_gradients",
             Mode::Wireframe => "wireframe",
             Mode::RayDiffIsotropic => "ray_diff_isotropic",
+            Mode::ConeRefraction => "cone_refraction",
+            Mode::ConeRoughness => "cone_roughness",
+            Mode::ConeAnisotropic => "cone_anisotropic",
         }
     }
 
@@ -85,6 +104,9 @@ impl Mode {
             Mode::BaryGradients => "textureGrad with gradients from re-intersected neighbour rays",
             Mode::Wireframe => "ray-cone LOD under an anti-aliased wireframe",
             Mode::RayDiffIsotropic => "textureLod at the isotropic ray-differential LOD",
+            Mode::ConeRefraction => "as cone_curvature, glass refracting the cone",
+            Mode::ConeRoughness => "as cone_curvature, rough mirrors widening the reflected cone",
+            Mode::ConeAnisotropic => "textureGrad with the cone's elliptical footprint",
         }
     }
 
@@ -104,8 +126,8 @@ impl Mode {
     /// What the payload of the mode's colour-only shaders carries beyond the colour and the bounce
     /// depth: the ray cone in the modes that read it (every mode but mip 0 and the ray-differential
     /// modes: the level of detail, or in the gradient modes that of what the mirror reflects), and
-    /// the ray differential in the ray-differential modes, which carry it through the mirror and
-    /// never read the cone.
+    /// the ray differential in the ray-differential modes, which carry it through mirrors and
+    /// glass and never read the cone.
     pub fn payload(self) -> Payload {
         let differential = matches!(self, Mode::RayDiff | Mode::RayDiffIsotropic);
         Payload {

@@ -167,17 +167,24 @@ pub(super) fn compile_stages(files: [&str; 3], defines: &[(&str, String)]) -> Re
         .collect()
 }
 
+/// The ray-tracing pipelines' recursion depth: the primary ray's trace and one per bounce, up to
+/// `RT_MAX_DEPTH` (3, `rt_common.glsl`): a reflection, or a refraction into glass, out of it and
+/// once more (a total internal reflection inside).
+const RECURSION_DEPTH: u32 = 4;
+
 /// The compiled ray-generation, miss and closest-hit shaders `spirv` in one pipeline (groups: 0
-/// ray generation, 1 miss, 2 triangle hit group), recursion depth 2 (the mirror's reflection).
+/// ray generation, 1 miss, 2 triangle hit group), recursion depth [`RECURSION_DEPTH`].
 pub(super) fn ray_tracing_pipeline(
     owner: &mut Owner<'_>,
     layout: vk::PipelineLayout,
     spirv: &[Vec<u32>],
 ) -> Result<RayTracing, Error> {
     let properties = ray_tracing_properties(owner);
-    if properties.max_ray_recursion_depth < 2 {
-        return Err(Error::Setup(String::from(
-            "the device's maxRayRecursionDepth is below 2 (the renderer traces reflections)",
+    if properties.max_ray_recursion_depth < RECURSION_DEPTH {
+        return Err(Error::Setup(format!(
+            "the device's maxRayRecursionDepth is {}, below {RECURSION_DEPTH} (the renderer traces \
+             reflections and refractions through glass)",
+            properties.max_ray_recursion_depth
         )));
     }
     let modules = spirv
@@ -212,7 +219,7 @@ pub(super) fn ray_tracing_pipeline(
     let info = vk::RayTracingPipelineCreateInfoKHR::default()
         .stages(&stage_infos)
         .groups(&groups)
-        .max_pipeline_ray_recursion_depth(2)
+        .max_pipeline_ray_recursion_depth(RECURSION_DEPTH)
         .layout(layout);
     let loader = ash::khr::ray_tracing_pipeline::Device::new(owner.gpu.instance(), owner.gpu.device());
     // SAFETY: a valid create-info; the modules are no longer needed once the pipeline exists.

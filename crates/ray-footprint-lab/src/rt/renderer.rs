@@ -99,7 +99,9 @@ impl<'g> Renderer<'g> {
 
     /// [`Renderer::new`] with `texture` on every textured mesh instead of the checker; the
     /// mip-colour texture takes its size. Fails with [`Error::InvalidTexture`] unless `texture`
-    /// is square, a power of two wide, with every level down to 1 x 1.
+    /// is square, a power of two wide, with every level down to 1 x 1, and with
+    /// [`Error::InvalidMaterial`] unless every mesh's material is valid
+    /// ([`Material::validate`](crate::rt::Material::validate)).
     pub fn with_texture(gpu: &'g Gpu, scene: Scene, texture: MipChain) -> Result<Renderer<'g>, Error> {
         Renderer::build(gpu, scene, texture, ClosestHit::Glsl)
     }
@@ -112,6 +114,11 @@ impl<'g> Renderer<'g> {
         closest_hit: ClosestHit,
     ) -> Result<Renderer<'g>, Error> {
         texture.validate().map_err(Error::InvalidTexture)?;
+        for mesh in &scene.meshes {
+            mesh.material
+                .validate()
+                .map_err(|reason| Error::InvalidMaterial(format!("mesh '{}': {reason}", mesh.name)))?;
+        }
         let mut owner = Owner::new(gpu);
         let input = vk::BufferUsageFlags::STORAGE_BUFFER
             | vk::BufferUsageFlags::ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_KHR;

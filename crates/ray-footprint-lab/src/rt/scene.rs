@@ -1,4 +1,5 @@
-//! The scene, built in code: a large textured ground plane, a mirror sphere and a dense torus.
+//! The scenes, built in code: a large textured ground plane, a mirror sphere and a dense torus
+//! (the gallery); a mirror saddle in a room; glass and rough spheres over the plane.
 //!
 //! Meshes are in world space (every instance transform is the identity), so the Rust side can
 //! look up the exact vertices a hit refers to and recompute what the shaders computed.
@@ -24,15 +25,73 @@ pub struct Vertex {
     pub uv: Vec2,
 }
 
-/// How a mesh is shaded. The discriminant is the `RT_MATERIAL_*` constant of the shaders.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u32)]
+/// How a mesh is shaded. [`Material::id`] is the `RT_MATERIAL_*` constant of the shaders.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Material {
     /// Samples the texture at the mode's level of detail.
-    Textured = 0,
-    /// A mirror: traces a reflected ray carrying the propagated cone.
-    Mirror = 1,
+    Textured,
+    /// A mirror: reflects primary rays (what it reflects is shaded as textured), carrying the
+    /// propagated cone; reflects 90% of the light.
+    Mirror {
+        /// Perceptual roughness in `[0, 1]` (0: a perfect mirror). The `cone_roughness` mode widens
+        /// the reflected cone by `2 * rf_roughness_spread_angle(roughness)`; under
+        /// [`FLAG_GLOSSY_LOBE`](crate::rt::abi::FLAG_GLOSSY_LOBE) the reflection samples the GGX
+        /// lobe of `alpha = roughness^2`.
+        roughness: f32,
+    },
+    /// Clear glass: refracts every ray that reaches it up to the renderer's bounce limit (total
+    /// internal reflection reflects it), passing all of the light on.
+    Glass {
+        /// Index of refraction (the medium outside is 1).
+        index_of_refraction: f32,
+    },
 }
+
+impl Material {
+    /// A perfect mirror.
+    pub const MIRROR: Material = Material::Mirror { roughness: 0.0 };
+
+    /// The `RT_MATERIAL_*` constant of the shaders.
+    pub fn id(self) -> u32 {
+        match self {
+            Material::Textured => 0,
+            Material::Mirror { .. } => 1,
+            Material::Glass { .. } => 2,
+        }
+    }
+
+    /// The material's parameter as the shaders read it: the roughness of a mirror, the index of
+    /// refraction of glass, 0 for a textured surface.
+    pub fn parameter(self) -> f32 {
+        match self {
+            Material::Textured => 0.0,
+            Material::Mirror { roughness } => roughness,
+            Material::Glass { index_of_refraction } => index_of_refraction,
+        }
+    }
+
+    /// Whether the parameter is one the shaders take: a mirror's roughness finite in `[0, 1]`,
+    /// glass's index of refraction finite and above 0 (the shaders divide by it); the field and
+    /// its value where it is not.
+    pub fn validate(self) -> Result<(), String> {
+        match self {
+            Material::Mirror { roughness } if !(0.0..=1.0).contains(&roughness) => {
+                Err(format!("roughness {roughness} is not in [0, 1]"))
+            }
+            Material::Glass { index_of_refraction }
+                if !(index_of_refraction.is_finite() && index_of_refraction > 0.0) =>
+            {
+                Err(format!(
+                    "index_of_refraction {index_of_refraction} is not a finite number above 0"
+                ))
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Words per mesh in the shaders' mesh table ([`Scene::mesh_table`]).
+pub const MESH_TABLE_WORDS: usize = 4;
 
 /// An indexed triangle mesh.
 #[derive(Clone, Debug)]
@@ -125,7 +184,7 @@ pub fn uv_sphere(centre: Vec3, radius: f32, rings: u32, segments: u32) -> Mesh {
         name: "sphere",
         vertices,
         indices: grid_indices(rings, segments, pole),
-        material: Material::Mirror,
+        material: Material::MIRROR,
     }
 }
 
@@ -178,7 +237,7 @@ pub fn hyperbolic_paraboloid(centre: Vec3, half_size: f32, curvature: f32, quads
         name: "hyperbolic paraboloid",
         vertices,
         indices: grid_indices(quads, quads, |_, _| false),
-        material: Material::Mirror,
+        material: Material::MIRROR,
     }
 }
 
@@ -254,6 +313,27 @@ impl Scene {
         }
     }
 
+    /// The materials scene: the gallery's ground plane with a glass sphere of radius 1 (index of
+    /// refraction [`GLASS_INDEX`], 3,968 triangles) standing left of the view axis and a rough
+    /// mirror sphere (roughness [`ROUGHNESS`]) where the gallery's mirror stands.
+    pub fn materials() -> Scene {
+        let glass = Mesh {
+            name: "glass sphere",
+            material: Material::Glass {
+                index_of_refraction: GLASS_INDEX,
+            },
+            ..uv_sphere(Vec3::new(-1.3, 1.0, -1.5), 1.0, 32, 64)
+        };
+        let rough = Mesh {
+            name: "rough sphere",
+            material: Material::Mirror { roughness: ROUGHNESS },
+            ..uv_sphere(Vec3::new(1.3, 1.0, -1.5), 1.0, 32, 64)
+        };
+        Scene {
+            meshes: vec![ground_plane(200.0, 8.0), glass, rough],
+        }
+    }
+
     /// Every vertex of every mesh, [`VERTEX_FLOATS`] floats each, mesh after mesh.
     pub fn vertex_floats(&self) -> Vec<f32> {
         let vertices = self.meshes.iter().flat_map(|mesh| &mesh.vertices);
@@ -273,16 +353,68 @@ impl Scene {
             .collect()
     }
 
-    /// Per mesh: its first index, its first vertex and its [`Material`] (the shaders' mesh table).
+    /// Per mesh, [`MESH_TABLE_WORDS`] words: its first index, its first vertex, its [`Material`]'s
+    /// id and the bits of its parameter (the shaders' mesh table).
     pub fn mesh_table(&self) -> Vec<u32> {
         let (mut first_index, mut first_vertex) = (0, 0);
         let mut table = Vec::new();
         for mesh in &self.meshes {
-            table.extend([first_index, first_vertex, mesh.material as u32]);
+            let material = mesh.material;
+            table.extend([
+                first_index,
+                first_vertex,
+                material.id(),
+                material.parameter().to_bits(),
+            ]);
             first_index += mesh.indices.len() as u32;
             first_vertex += mesh.vertices.len() as u32;
         }
         table
+    }
+}
+
+/// Index of refraction of the glass sphere of [`Scene::materials`]: crown glass.
+pub const GLASS_INDEX: f32 = 1.5;
+/// Roughness of the rough sphere of [`Scene::materials`]: a glossy reflection about 15 degrees
+/// wide (`2 * rf_roughness_spread_angle(0.3)` = 0.256 rad).
+pub const ROUGHNESS: f32 = 0.3;
+
+#[cfg(test)]
+mod tests {
+    use super::Material;
+
+    #[test]
+    fn materials_out_of_range_name_the_field_and_value() {
+        let bad = [
+            (Material::Mirror { roughness: f32::NAN }, "roughness NaN"),
+            (Material::Mirror { roughness: -0.1 }, "roughness -0.1"),
+            (Material::Mirror { roughness: 1.5 }, "roughness 1.5"),
+            (
+                Material::Glass {
+                    index_of_refraction: 0.0,
+                },
+                "index_of_refraction 0",
+            ),
+            (
+                Material::Glass {
+                    index_of_refraction: f32::INFINITY,
+                },
+                "index_of_refraction inf",
+            ),
+        ];
+        for (material, start) in bad {
+            let message = material.validate().expect_err("out of range");
+            assert!(message.starts_with(start), "{material:?}: {message}");
+        }
+        let good = [
+            Material::Textured,
+            Material::MIRROR,
+            Material::Mirror { roughness: 1.0 },
+            Material::Glass {
+                index_of_refraction: 1.5,
+            },
+        ];
+        assert!(good.iter().all(|material| material.validate().is_ok()));
     }
 }
 
@@ -345,6 +477,25 @@ impl Camera {
         }
     }
 
+    /// Close to the glass sphere of [`Scene::materials`], which fills most of the view: through
+    /// it the ground plane behind, upside down.
+    pub fn glass() -> Camera {
+        Camera {
+            eye: Vec3::new(-1.3, 1.35, 1.2),
+            target: Vec3::new(-1.3, 0.95, -1.5),
+            fov_y: 45f32.to_radians(),
+        }
+    }
+
+    /// Both spheres of [`Scene::materials`] side by side over the ground plane.
+    pub fn materials() -> Camera {
+        Camera {
+            eye: Vec3::new(0.0, 1.6, 3.6),
+            target: Vec3::new(0.0, 0.8, -1.5),
+            fov_y: 45f32.to_radians(),
+        }
+    }
+
     /// The orthonormal basis: forward (viewing direction), right (= forward x +y) and up.
     fn basis(&self) -> (Vec3, Vec3, Vec3) {
         let forward = (self.target - self.eye).normalize();
@@ -379,7 +530,8 @@ impl Camera {
             width,
             height,
             pixel_offset: Vec2::ZERO,
-            pad: [0; 2],
+            flags: 0,
+            pad: 0,
         }
     }
 

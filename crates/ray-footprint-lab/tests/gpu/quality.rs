@@ -59,7 +59,8 @@ fn lab_metrics_are_finite_and_the_truth_scores_itself_perfectly() {
 }
 
 /// One row per method, every texture-filtering mode of `Mode::ALL` among them on the texture
-/// scenes, every metric finite, and a mask with pixels in it.
+/// scenes, every metric finite, a mask with pixels in it, and on the texture scenes footprints
+/// compared over some of them (the differential's s1/s2 at least 1, every distance finite).
 fn check_rows(scene: &SceneResult) {
     let name = scene.scene.name;
     assert!(scene.mask.iter().any(|&m| m), "{name}: the mask holds pixels");
@@ -74,6 +75,20 @@ fn check_rows(scene: &SceneResult) {
             );
         }
         assert_eq!(rows[0], Mode::Mip0, "{name}: the baseline comes first");
+        let f = scene
+            .footprints
+            .unwrap_or_else(|| panic!("{name}: footprints measured"));
+        let distances = [
+            f.anisotropy,
+            f.cone_major,
+            f.cone_minor,
+            f.anisotropic_major,
+            f.anisotropic_minor,
+        ];
+        assert!(
+            f.pixels > 0 && f.anisotropy >= 1.0 && distances.iter().all(|v| v.is_finite() && *v >= 0.0),
+            "{name}: footprints {f:?}"
+        );
     }
     for m in &scene.methods {
         let values = [

@@ -2,7 +2,9 @@
 //!
 //! The GLSL and the Slang closest-hit shaders and the WGSL ray-query shader record, per pixel, the primary hit
 //! (distance, normal, barycentrics, instance, triangle), every ray-cone value they computed
-//! there, and the ray-differential, re-intersection and wireframe values. The Rust mirror
+//! there, the ray-differential, re-intersection and wireframe values, the material's values (a
+//! mirror's roughness spread; on glass the index ratio, the normal's spread and the refracted cone)
+//! and the anisotropic cone gradients, on the gallery and on the materials scene. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
 //! uniforms; each function is given exactly the inputs the shader gave it, so each comparison
 //! measures one library function, within the tolerance derived for it in `src/checks/`
@@ -12,16 +14,18 @@
 use super::SETUP_COMMAND;
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::layout::{self, GlslPacking, StructLayout};
-use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, RayCone, RefractedRayCone, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
 use ray_footprint::rust_layout;
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks as suite;
 use ray_footprint_lab::checks::ray_cone::{area_corners, curvature_spread_angle_error, edge_curvature_error};
-use ray_footprint_lab::rt::abi::{RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms};
+use ray_footprint_lab::rt::abi::{
+    RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
+};
 use ray_footprint_lab::rt::{
-    open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Mode, Renderer, Scene, Vertex,
+    open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Material, Mode, Renderer, Scene, Vertex,
     SHADER_DIR,
 };
 use shader_proptest::tolerance::{dot_error, log2_error, ulps};
@@ -64,6 +68,7 @@ fn renderer_structs_have_one_layout() {
             width,
             height,
             pixel_offset,
+            flags,
             pad
         }),
         rust_layout!(RtPixelRecord {
@@ -84,7 +89,15 @@ fn renderer_structs_have_one_layout() {
             curvature,
             curvature_spread,
             reflected,
-            diff
+            diff,
+            roughness_spread,
+            eta,
+            normal_spread,
+            total_internal_reflection,
+            refracted,
+            cone_uv_dx,
+            cone_uv_dy,
+            pad
         }),
         rust_layout!(RtDiffRecord {
             eye_d_direction_dx,
@@ -180,67 +193,128 @@ fn wgsl_ray_query_agrees_with_the_mirror() {
     });
 }
 
+/// [`FLAG_GLOSSY_LOBE`] changes what the rough mirror of the materials scene shows, at most of its
+/// pixels, and nothing else: every pixel whose primary ray hits another mesh or nothing keeps its
+/// colour (the flag turns only the mirrors' reflections, and the rough sphere is the only mirror).
+#[test]
+fn glossy_lobe_changes_only_the_rough_mirror() {
+    const ROUGH_SPHERE: u32 = 2;
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::materials()).unwrap_or_else(|e| panic!("{e}"));
+    let camera = Camera::materials();
+    let mut push = renderer.push_constants(&camera, Mode::Mip0, 1.0, WIDTH, HEIGHT);
+    let uniforms = camera.uniforms((WIDTH, HEIGHT), WireframeSettings::default());
+    let mirrored = renderer
+        .render(&push, &uniforms)
+        .unwrap_or_else(|e| panic!("{e}"));
+    push.flags = FLAG_GLOSSY_LOBE;
+    let glossy = renderer
+        .render(&push, &uniforms)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (mut rough, mut rough_changed, mut other_changed) = (0, 0, 0);
+    for ((record, a), b) in mirrored.records.iter().zip(&mirrored.pixels).zip(&glossy.pixels) {
+        if record.hit == 1 && record.instance == ROUGH_SPHERE {
+            rough += 1;
+            rough_changed += usize::from(a != b);
+        } else {
+            other_changed += usize::from(a != b);
+        }
+    }
+    println!("rough sphere: {rough_changed} of {rough} pixels changed; elsewhere {other_changed}");
+    assert!(
+        2 * rough_changed > rough,
+        "the lobe changes most of the rough mirror"
+    );
+    assert_eq!(other_changed, 0, "the lobe changes nothing else");
+}
+
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
 /// nothing, renders exactly the pixels of the recording pipeline in that mode in every
 /// [`colour_views`] view.
 #[test]
 fn colour_pipelines_render_the_recorded_colours() {
     let gpu = gpu();
-    let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
     println!("device: {}", gpu.name());
-    for mode in Mode::ALL {
-        let colour = renderer
-            .colour_pipeline(mode)
-            .unwrap_or_else(|e| panic!("{mode}: {e}"));
-        let label = format!("payload {:>2} bytes", colour.payload_bytes());
-        compare_colours(&renderer, mode, &label, |push, uniforms| {
-            let rendered = colour.render(push, uniforms)?;
-            assert!(rendered.records.is_empty());
-            Ok(rendered)
-        });
+    for (scene, views) in colour_views() {
+        let renderer = Renderer::new(&gpu, scene).unwrap_or_else(|e| panic!("{e}"));
+        for mode in Mode::ALL {
+            let colour = renderer
+                .colour_pipeline(mode)
+                .unwrap_or_else(|e| panic!("{mode}: {e}"));
+            let label = format!("payload {:>2} bytes", colour.payload_bytes());
+            compare_colours(&renderer, &views, mode, &label, |push, uniforms| {
+                let rendered = colour.render(push, uniforms)?;
+                assert!(rendered.records.is_empty());
+                Ok(rendered)
+            });
+        }
     }
 }
 
 /// The recording pipeline with the Slang closest-hit shader renders exactly the pixels of the one
-/// with the GLSL closest-hit shader, in every mode and [`colour_views`] view: the two shade alike, the mirror's reflected cones and differentials included.
+/// with the GLSL closest-hit shader, in every mode and [`colour_views`] view: the two shade alike,
+/// the mirrors' reflected and the glass' refracted cones and differentials included.
 #[test]
 fn slang_closest_hit_renders_the_glsl_colours() {
     let gpu = gpu();
-    let glsl = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
-    let slang = Renderer::with_closest_hit(&gpu, Scene::gallery(), ClosestHit::Slang)
-        .unwrap_or_else(|e| panic!("{e}"));
     println!("device: {}", gpu.name());
-    for mode in Mode::ALL {
-        compare_colours(&glsl, mode, "Slang closest hit", |push, uniforms| {
-            slang.render(push, uniforms)
-        });
+    for (scene, views) in colour_views() {
+        let slang = Renderer::with_closest_hit(&gpu, scene.clone(), ClosestHit::Slang)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let glsl = Renderer::new(&gpu, scene).unwrap_or_else(|e| panic!("{e}"));
+        for mode in Mode::ALL {
+            compare_colours(&glsl, &views, mode, "Slang closest hit", |push, uniforms| {
+                slang.render(push, uniforms)
+            });
+        }
     }
 }
 
-/// The views the colour comparisons render: the ground view, through the pixel centres and through
-/// points off them ([`PIXEL_OFFSET`]), the mirror close-up and the torus close-up.
-fn colour_views() -> [(&'static str, Camera, Vec2); 4] {
-    [
-        ("ground", Camera::ground(), Vec2::ZERO),
-        ("ground off centre", Camera::ground(), PIXEL_OFFSET),
-        ("reflection", Camera::reflection(), Vec2::ZERO),
-        ("torus", Camera::torus(), Vec2::ZERO),
-    ]
+/// A colour comparison's view: its name, the camera, the primary rays' offset from the pixel
+/// centres and the push constants' flags.
+type ColourView = (&'static str, Camera, Vec2, u32);
+
+/// The views the colour comparisons render, per scene: on the gallery the ground view, through the
+/// pixel centres and through points off them ([`PIXEL_OFFSET`]), the mirror close-up and the torus
+/// close-up; on the materials scene the glass close-up, the glass from inside ([`inside_glass`],
+/// where rays reflect totally), and both spheres with the rough mirror reflecting about the
+/// shading normal and about GGX-drawn normals ([`FLAG_GLOSSY_LOBE`]).
+fn colour_views() -> [(Scene, Vec<ColourView>); 2] {
+    let gallery = vec![
+        ("ground", Camera::ground(), Vec2::ZERO, 0),
+        ("ground off centre", Camera::ground(), PIXEL_OFFSET, 0),
+        ("reflection", Camera::reflection(), Vec2::ZERO, 0),
+        ("torus", Camera::torus(), Vec2::ZERO, 0),
+    ];
+    let materials = vec![
+        ("glass", Camera::glass(), Vec2::ZERO, 0),
+        ("inside glass", inside_glass(), Vec2::ZERO, 0),
+        ("materials", Camera::materials(), Vec2::ZERO, 0),
+        (
+            "materials glossy",
+            Camera::materials(),
+            PIXEL_OFFSET,
+            FLAG_GLOSSY_LOBE,
+        ),
+    ];
+    [(Scene::gallery(), gallery), (Scene::materials(), materials)]
 }
 
-/// Renders every [`colour_views`] view in `mode` with `recording`'s recording pipeline and with
+/// Renders every view of `views` in `mode` with `recording`'s recording pipeline and with
 /// `render`, prints how many pixels differ after `label` and by how much in a channel, and
 /// asserts that none differs.
 fn compare_colours(
     recording: &Renderer<'_>,
+    views: &[ColourView],
     mode: Mode,
     label: &str,
     render: impl Fn(&RtPushConstants, &RtUniforms) -> Result<Frame, Error>,
 ) {
     let (width, height) = (WIDTH, HEIGHT);
-    for (view, camera, offset) in colour_views() {
+    for &(view, camera, offset, flags) in views {
         let mut push = recording.push_constants(&camera, mode, TEX_GRAD_SCALE, width, height);
         push.pixel_offset = offset;
+        push.flags = flags;
         let uniforms = camera.uniforms((width, height), WireframeSettings::default());
         let recorded = recording
             .render(&push, &uniforms)
@@ -271,10 +345,19 @@ fn compare_colours(
 /// pixel centres.
 type View = (Camera, Mode, WireframeSettings, (u32, u32), Vec2);
 
-/// The views every path traces: the ground view, through the pixel centres and through points
-/// off them ([`PIXEL_OFFSET`]), the mirror close-up, and the torus close-up once per wireframe
-/// preset, each with its mode, wireframe settings, image size and pixel offset.
-fn views() -> Vec<View> {
+/// The scenes every path traces, each with its views: the gallery ([`gallery_views`]) and the
+/// materials scene ([`material_views`]).
+fn scenes() -> [(Scene, Vec<View>); 2] {
+    [
+        (Scene::gallery(), gallery_views()),
+        (Scene::materials(), material_views()),
+    ]
+}
+
+/// The gallery's views: the ground view, through the pixel centres and through points off them
+/// ([`PIXEL_OFFSET`]), the mirror close-up, and the torus close-up once per wireframe preset, each
+/// with its mode, wireframe settings, image size and pixel offset.
+fn gallery_views() -> Vec<View> {
     let small = (WIDTH, HEIGHT);
     let default = WireframeSettings::default();
     let mut views = vec![
@@ -301,23 +384,50 @@ fn views() -> Vec<View> {
     views
 }
 
+/// The materials scene's views: the glass close-up, both spheres over the ground plane, and the
+/// glass sphere from inside ([`inside_glass`]).
+fn material_views() -> Vec<View> {
+    let (small, default) = ((WIDTH, HEIGHT), WireframeSettings::default());
+    vec![
+        (Camera::glass(), Mode::ConeRefraction, default, small, Vec2::ZERO),
+        (
+            Camera::materials(),
+            Mode::ConeRoughness,
+            default,
+            small,
+            PIXEL_OFFSET,
+        ),
+        (inside_glass(), Mode::ConeRefraction, default, small, Vec2::ZERO),
+    ]
+}
+
+/// An eye inside the glass sphere of [`Scene::materials`] (centre (-1.3, 1, -1.5), radius 1), 0.7
+/// off its centre, looking along -z: every primary ray meets the sphere from inside, where the
+/// index ratio is the index itself, and those meeting it more than asin(1 / 1.5) = 41.8 degrees
+/// off its normal (the view's centre among them: sin i = 0.7) are totally internally reflected.
+fn inside_glass() -> Camera {
+    Camera {
+        eye: Vec3::new(-0.6, 1.0, -1.5),
+        target: Vec3::new(-0.6, 1.0, -3.0),
+        fov_y: 60f32.to_radians(),
+    }
+}
+
 /// What a frame was traced with: the push constants and the uniforms.
 struct Inputs {
     push: RtPushConstants,
     uniforms: RtUniforms,
 }
 
-/// Traces every view with `trace` on a renderer whose recording pipeline has `closest_hit`, checks
-/// every pixel and prints, per value, the pixels checked and the largest error, and per wireframe
-/// preset how much of the torus view its lines cover.
+/// Traces every view of every scene with `trace` on a renderer whose recording pipeline has
+/// `closest_hit`, checks every pixel and prints, per value, the pixels checked and the largest
+/// error, and per wireframe preset how much of the torus view its lines cover.
 fn agree(
     path: &str,
     closest_hit: ClosestHit,
     trace: impl Fn(&Renderer<'_>, &RtPushConstants, &RtUniforms) -> Result<Frame, Error>,
 ) {
     let gpu = gpu();
-    let renderer =
-        Renderer::with_closest_hit(&gpu, Scene::gallery(), closest_hit).unwrap_or_else(|e| panic!("{e}"));
     println!(
         "device: {}; {path}, {WIDTH} x {HEIGHT} per view, the torus at {} x {}",
         gpu.name(),
@@ -325,21 +435,51 @@ fn agree(
         TORUS_VIEW.1
     );
     let mut stats = Stats::default();
+    for (scene, views) in scenes() {
+        let renderer = Renderer::with_closest_hit(&gpu, scene, closest_hit).unwrap_or_else(|e| panic!("{e}"));
+        trace_views(&renderer, &views, &trace, &mut stats);
+    }
+    print!("{}", stats.table());
+    println!(
+        "glass hits totally internally reflected: {}",
+        stats.total_internal_reflections
+    );
+    assert!(stats.misses > 0, "some pixels must see the sky");
+    assert!(
+        stats.total_internal_reflections > 0,
+        "the view from inside the glass must reflect totally"
+    );
+    assert!(
+        stats.failures.is_empty(),
+        "{} value(s) out of tolerance:\n{}",
+        stats.failures.len(),
+        stats.failures.join("\n")
+    );
+}
+
+/// Traces `views` of `renderer`'s scene with `trace`, checks every pixel into `stats`, prints the
+/// hits per mesh and asserts that every mesh is hit.
+fn trace_views(
+    renderer: &Renderer<'_>,
+    views: &[View],
+    trace: impl Fn(&Renderer<'_>, &RtPushConstants, &RtUniforms) -> Result<Frame, Error>,
+    stats: &mut Stats,
+) {
     let mut hits_per_mesh = vec![0usize; renderer.scene().meshes.len()];
-    for (camera, mode, settings, (width, height), offset) in views() {
+    for &(camera, mode, settings, (width, height), offset) in views {
         let mut push = renderer.push_constants(&camera, mode, TEX_GRAD_SCALE, width, height);
         push.pixel_offset = offset;
         let inputs = Inputs {
             push,
             uniforms: camera.uniforms((width, height), settings),
         };
-        let frame = trace(&renderer, &inputs.push, &inputs.uniforms).unwrap_or_else(|e| panic!("{e}"));
+        let frame = trace(renderer, &inputs.push, &inputs.uniforms).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(frame.records.len(), (width * height) as usize);
         for (index, record) in frame.records.iter().enumerate() {
             let centre = Vec2::new((index as u32 % width) as f32, (index as u32 / width) as f32);
             // The matrix functions take the pixel's coordinates plus the offset.
             let pixel = centre + offset;
-            check_pixel(renderer.scene(), &inputs, pixel, record, &mut stats);
+            check_pixel(renderer.scene(), &inputs, pixel, record, stats);
             if record.hit == 1 {
                 hits_per_mesh[record.instance as usize] += 1;
             }
@@ -350,18 +490,10 @@ fn agree(
     }
     let names: Vec<_> = renderer.scene().meshes.iter().map(|m| m.name).collect();
     println!(
-        "hits per mesh {names:?}: {hits_per_mesh:?}; misses: {}",
+        "hits per mesh {names:?}: {hits_per_mesh:?}; misses so far: {}",
         stats.misses
     );
-    print!("{}", stats.table());
     assert!(hits_per_mesh.iter().all(|&n| n > 0), "every mesh must be hit");
-    assert!(stats.misses > 0, "some pixels must see the sky");
-    assert!(
-        stats.failures.is_empty(),
-        "{} value(s) out of tolerance:\n{}",
-        stats.failures.len(),
-        stats.failures.join("\n")
-    );
 }
 
 /// Largest error and largest error over tolerance of one value, over the pixels checked.
@@ -377,6 +509,8 @@ struct Stat {
 struct Stats {
     values: Vec<(&'static str, Stat)>,
     misses: usize,
+    /// Glass hits whose record says total internal reflection.
+    total_internal_reflections: usize,
     failures: Vec<String>,
 }
 
@@ -471,6 +605,7 @@ fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelReco
     let tri = mesh.triangle(record.primitive);
     check_hit_data(&tri, push, record, stats);
     check_values(&tri, push, record, stats);
+    check_material_values(mesh.material, &tri, record, stats);
     check_differentials(&tri, inputs, pixel, record, stats);
     check_reintersection(&tri, inputs, record, stats);
 }
@@ -772,8 +907,10 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let spread_error = curvature_spread_angle_error(n, d, spread);
     stats.compare("curvature_spread", r.curvature_spread, spread, spread_error, r);
 
-    // propagate: the width as width_at; the spread is one correctly rounded addition.
-    let reflected = rc::propagate(cone, t, r.curvature_spread);
+    // propagate: the width as width_at; the spread is one correctly rounded addition of the
+    // curvature spread and twice the roughness spread (the doubling is exact, so a fused
+    // multiply-add rounds alike), then another.
+    let reflected = rc::propagate(cone, t, r.curvature_spread + 2.0 * r.roughness_spread);
     stats.compare(
         "reflected width",
         r.reflected.width,
@@ -788,4 +925,102 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
         0.0,
         r,
     );
+}
+
+/// The material's values and the anisotropic cone gradients, recomputed by the mirror from the
+/// inputs the shader used: a mirror's roughness spread; on glass the index ratio, the normal's
+/// spread and the refracted cone; zeros where the material has none.
+fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixelRecord, stats: &mut Stats) {
+    let r = record;
+    match material {
+        Material::Mirror { roughness } => {
+            // roughness_spread_angle: the suite's own tolerance, on the mesh's roughness.
+            let check = suite::ray_cone::roughness_spread_angle();
+            compare_with(
+                stats,
+                "roughness spread",
+                check,
+                ((roughness,), r.roughness_spread),
+                r,
+            );
+        }
+        _ => assert_eq!(r.roughness_spread, 0.0, "no roughness spread off a mirror: {r:?}"),
+    }
+    match material {
+        Material::Glass { index_of_refraction } => check_refraction(index_of_refraction, r, stats),
+        _ => {
+            let none = (r.eta, r.normal_spread, r.total_internal_reflection, r.refracted);
+            assert_eq!(
+                none,
+                (0.0, 0.0, 0, RayCone::default()),
+                "no refraction off glass: {r:?}"
+            );
+        }
+    }
+    // anisotropic_cone_gradients: the suite's own tolerance, on the shader's width and direction
+    // and the triangle's vertices.
+    let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
+    let gradient_args = (r.width, r.direction, p[0], p[1], p[2], uv[0], uv[1], uv[2]);
+    let gradients = Derivatives2::new(r.cone_uv_dx, r.cone_uv_dy);
+    let gradient_check = suite::ray_diff::anisotropic_cone_gradients();
+    compare_with(
+        stats,
+        "cone uv gradients",
+        gradient_check,
+        (gradient_args, gradients),
+        r,
+    );
+    assert_eq!(r.pad, [0; 2], "pads are 0");
+}
+
+/// A glass hit's index ratio, the normal's spread across the footprint and the refracted cone,
+/// against the mirror on the shader's inputs.
+fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mut Stats) {
+    let r = record;
+    let (n, d) = (r.normal, r.direction);
+    // The side the ray meets: the sign of the shader's dot(n, d), certain beyond its rounding
+    // (3 ULP of the terms); within it either side's ratio is right. Entering, 1 / index: one
+    // division (2.5 ULP); leaving, the index itself.
+    let cosine = n.dot(d);
+    let sides = if cosine.abs() <= dot_error(n, d) {
+        vec![true, false]
+    } else {
+        vec![cosine < 0.0]
+    };
+    let ratios = sides.into_iter().map(|entering| {
+        if entering {
+            1.0 / index_of_refraction
+        } else {
+            index_of_refraction
+        }
+    });
+    let eta = ratios
+        .min_by(|a, b| (a - r.eta).abs().total_cmp(&(b - r.eta).abs()))
+        .expect("a side");
+    stats.compare("eta", r.eta, eta, ulps(2.5, eta), r);
+    // The curvature times the footprint: one correctly rounded product, the same on both sides
+    // (the denormal floor only).
+    let normal_spread = r.curvature * r.footprint;
+    stats.compare(
+        "normal spread",
+        r.normal_spread,
+        normal_spread,
+        f32::MIN_POSITIVE,
+        r,
+    );
+    // rf_refract_ray_cone of the cone propagated to the hit (the recorded width, the spread plus an
+    // exact 0), with the suite's own tolerance.
+    let at_hit = RayCone {
+        width: r.width,
+        spread_angle: r.cone.spread_angle,
+    };
+    let args = (at_hit, n, d, r.normal_spread, r.eta);
+    let refracted = RefractedRayCone {
+        cone: r.refracted,
+        total_internal_reflection: r.total_internal_reflection == 1,
+    };
+    assert!(r.total_internal_reflection <= 1, "a flag: {r:?}");
+    stats.total_internal_reflections += r.total_internal_reflection as usize;
+    let check = suite::ray_cone::refract_ray_cone();
+    compare_with(stats, "refracted cone", check, (args, refracted), r);
 }

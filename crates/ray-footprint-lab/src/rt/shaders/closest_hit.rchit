@@ -1,8 +1,9 @@
 // Closest hit of the recording shaders: on a primary hit, records every value measured there
 // (rt_measure: the ray-cone values, and the ray-differential, re-intersection and wireframe
-// values); then shades in the push constants' mode with the functions the colour-only shaders share
-// (rt_common.glsl): a mirror traces the reflected ray rt_bounce gives (its cone, and in the
-// ray-differential modes its differential), every other surface is textured as the mode says.
+// values, the material's and the anisotropic cone's); then shades in the push constants' mode with
+// the functions the colour-only shaders share (rt_common.glsl): a mirror or glass traces the ray
+// rt_bounce gives (reflected or refracted, its cone, and in the ray-differential modes its
+// differential), every other surface is textured as the mode says.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "rt_common.glsl"

@@ -11,8 +11,12 @@
 const RT_VERTEX_FLOATS: u32 = 8u;
 // Farthest hit distance.
 const RT_MAX_DISTANCE: f32 = 1.0e4;
+// Materials and the mesh table (the twins of rt_common.glsl's).
+const RT_MATERIAL_MIRROR: u32 = 1u;
+const RT_MATERIAL_GLASS: u32 = 2u;
+const RT_MESH_TABLE_WORDS: u32 = 4u;
 
-// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 96 bytes).
+// Push constants (Rust mirror: ray_footprint_lab::rt::abi::RtPushConstants, 96 bytes).
 struct RtPushConstants {
     eye: vec3<f32>,
     tan_half_fov_y: f32,
@@ -26,11 +30,12 @@ struct RtPushConstants {
     width: u32,
     height: u32,
     pixel_offset: vec2<f32>,
-    pad: vec2<u32>,
+    flags: u32,
+    pad: u32,
 }
 
 // The ray-differential, re-intersection and wireframe values of a primary hit (Rust mirror:
-// ray_footprint::abi::RtDiffRecord, 176 bytes; the field docs are there).
+// ray_footprint_lab::rt::abi::RtDiffRecord, 176 bytes; the field docs are there).
 struct RtDiffRecord {
     eye_d_direction_dx: vec3<f32>,
     lod: f32,
@@ -56,7 +61,7 @@ struct RtDiffRecord {
     pad4: u32,
 }
 
-// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 272 bytes).
+// What a primary hit measured (Rust mirror: ray_footprint_lab::rt::abi::RtPixelRecord, 320 bytes).
 struct RtPixelRecord {
     normal: vec3<f32>,
     t: f32,
@@ -76,9 +81,17 @@ struct RtPixelRecord {
     curvature_spread: f32,
     reflected: RfRayCone,
     diff: RtDiffRecord,
+    roughness_spread: f32,
+    eta: f32,
+    normal_spread: f32,
+    total_internal_reflection: u32,
+    refracted: RfRayCone,
+    cone_uv_dx: vec2<f32>,
+    cone_uv_dy: vec2<f32>,
+    pad: vec2<u32>,
 }
 
-// Per-frame uniforms (Rust mirror: ray_footprint::abi::RtUniforms, 176 bytes): inverse view and
+// Per-frame uniforms (Rust mirror: ray_footprint_lab::rt::abi::RtUniforms, 176 bytes): inverse view and
 // projection matrices, wireframe colour and settings.
 struct RtUniforms {
     view_inv: mat4x4<f32>,
@@ -103,8 +116,8 @@ var<immediate> pc: RtPushConstants;
 
 // Triangle `primitive` of mesh `mesh`, from the vertex, index and mesh-table buffers.
 fn rt_triangle(mesh: u32, primitive: u32) -> RtTriangle {
-    let first_index = rt_meshes[3u * mesh] + 3u * primitive;
-    let first_vertex = rt_meshes[3u * mesh + 1u];
+    let first_index = rt_meshes[RT_MESH_TABLE_WORDS * mesh] + 3u * primitive;
+    let first_vertex = rt_meshes[RT_MESH_TABLE_WORDS * mesh + 1u];
     var tri: RtTriangle;
     for (var k = 0u; k < 3u; k++) {
         let f = (first_vertex + rt_indices[first_index + k]) * RT_VERTEX_FLOATS;
@@ -127,8 +140,11 @@ fn rt_primary_direction(pixel: vec2<u32>) -> vec3<f32> {
         - c.y * pc.tan_half_fov_y * pc.up);
 }
 
-// Every ray-cone value of a hit (the twin of rt_measure in rt_common.glsl).
-fn rt_measure(tri: RtTriangle, barycentrics: vec2<f32>, t: f32, direction: vec3<f32>, cone: RfRayCone) -> RtPixelRecord {
+// Every ray-cone value of a hit on a mesh of material `material` with parameter `parameter`, the
+// material's values and the anisotropic cone gradients (the twin of rt_measure in rt_common.glsl;
+// the ray-differential values are rt_measure_diff's).
+fn rt_measure(tri: RtTriangle, material: u32, parameter: f32, barycentrics: vec2<f32>, t: f32, direction: vec3<f32>,
+        cone: RfRayCone) -> RtPixelRecord {
     let w = rt_weights(barycentrics);
     let normal = normalize(w.x * tri.n[0] + w.y * tri.n[1] + w.z * tri.n[2]);
     let width = rf_width_at(cone, t);
@@ -139,8 +155,37 @@ fn rt_measure(tri: RtTriangle, barycentrics: vec2<f32>, t: f32, direction: vec3<
     let gradient = rf_texture_gradient(footprint * density, pc.cone.tex_grad_scale);
     let curvature = rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
     let spread = rf_curvature_spread_angle(curvature, width, normal, direction);
-    return RtPixelRecord(normal, t, direction, 0u, barycentrics, 0u, 1u, cone, width, footprint,
-        density, base_lod, lod, gradient, curvature, spread, rf_propagate(cone, t, spread), RtDiffRecord());
+    let roughness_spread = select(0.0, rf_roughness_spread_angle(parameter), material == RT_MATERIAL_MIRROR);
+    var record = RtPixelRecord();
+    record.normal = normal;
+    record.t = t;
+    record.direction = direction;
+    record.barycentrics = barycentrics;
+    record.hit = 1u;
+    record.cone = cone;
+    record.width = width;
+    record.footprint = footprint;
+    record.texel_density = density;
+    record.base_lod = base_lod;
+    record.lod = lod;
+    record.gradient = gradient;
+    record.curvature = curvature;
+    record.curvature_spread = spread;
+    record.reflected = rf_propagate(cone, t, spread + 2.0 * roughness_spread);
+    record.roughness_spread = roughness_spread;
+    if material == RT_MATERIAL_GLASS {
+        record.eta = select(parameter, 1.0 / parameter, dot(normal, direction) < 0.0);
+        record.normal_spread = curvature * footprint;
+        let refracted = rf_refract_ray_cone(rf_propagate(cone, t, 0.0), normal, direction, record.normal_spread,
+            record.eta);
+        record.total_internal_reflection = select(0u, 1u, refracted.total_internal_reflection);
+        record.refracted = refracted.cone;
+    }
+    let cone_uv = rf_anisotropic_cone_gradients(width, direction, tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1],
+        tri.uv[2]);
+    record.cone_uv_dx = cone_uv.dx;
+    record.cone_uv_dy = cone_uv.dy;
+    return record;
 }
 
 // The isotropic LOD (RTG Eq. 1-2) of UV gradients scaled to texels (the size is a power of two).
@@ -191,8 +236,11 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     record.direction = direction;
     record.cone = cone;
     if hit.kind == RAY_QUERY_INTERSECTION_TRIANGLE {
-        let tri = rt_triangle(hit.instance_custom_data, hit.primitive_index);
-        record = rt_measure(tri, hit.barycentrics, hit.t, direction, cone);
+        let mesh = hit.instance_custom_data;
+        let tri = rt_triangle(mesh, hit.primitive_index);
+        let material = rt_meshes[RT_MESH_TABLE_WORDS * mesh + 2u];
+        let parameter = bitcast<f32>(rt_meshes[RT_MESH_TABLE_WORDS * mesh + 3u]);
+        record = rt_measure(tri, material, parameter, hit.barycentrics, hit.t, direction, cone);
         record.instance = hit.instance_custom_data;
         record.primitive = hit.primitive_index;
         record.diff = rt_measure_diff(tri, hit.barycentrics, hit.t, pc.eye, direction, rt_mat4(hit.world_to_object),

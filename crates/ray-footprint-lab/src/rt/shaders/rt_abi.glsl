@@ -7,7 +7,7 @@
 #include "ray_cone.glsl"
 #include "wireframe.glsl"
 
-// Push constants (Rust mirror: ray_footprint::abi::RtPushConstants, 96 bytes).
+// Push constants (Rust mirror: ray_footprint_lab::rt::abi::RtPushConstants, 96 bytes).
 struct RtPushConstants {
     vec3 eye;
     float tan_half_fov_y;
@@ -21,11 +21,12 @@ struct RtPushConstants {
     uint width;
     uint height;
     vec2 pixel_offset;
-    uvec2 pad;
+    uint flags;
+    uint pad;
 };
 
 // The ray-differential, re-intersection and wireframe values of a primary hit (Rust mirror:
-// ray_footprint::abi::RtDiffRecord, 176 bytes; the field docs are there).
+// ray_footprint_lab::rt::abi::RtDiffRecord, 176 bytes; the field docs are there).
 struct RtDiffRecord {
     vec3 eye_d_direction_dx;
     float lod;
@@ -51,7 +52,7 @@ struct RtDiffRecord {
     uint pad4;
 };
 
-// What a primary hit measured (Rust mirror: ray_footprint::abi::RtPixelRecord, 272 bytes).
+// What a primary hit measured (Rust mirror: ray_footprint_lab::rt::abi::RtPixelRecord, 320 bytes).
 struct RtPixelRecord {
     vec3 normal;
     float t;
@@ -71,9 +72,17 @@ struct RtPixelRecord {
     float curvature_spread;
     RfRayCone reflected;
     RtDiffRecord diff;
+    float roughness_spread;
+    float eta;
+    float normal_spread;
+    uint total_internal_reflection;
+    RfRayCone refracted;
+    vec2 cone_uv_dx;
+    vec2 cone_uv_dy;
+    uvec2 pad;
 };
 
-// Per-frame uniforms (Rust mirror: ray_footprint::abi::RtUniforms, 176 bytes, std140 = std430):
+// Per-frame uniforms (Rust mirror: ray_footprint_lab::rt::abi::RtUniforms, 176 bytes, std140 = std430):
 // inverse view and projection matrices, wireframe colour and settings.
 struct RtUniforms {
     mat4 view_inv;

@@ -24,14 +24,28 @@ const uint RT_MODE_RAY_DIFF = 5u;
 const uint RT_MODE_BARY_GRADIENTS = 6u;
 const uint RT_MODE_WIREFRAME = 7u;
 const uint RT_MODE_RAY_DIFF_ISOTROPIC = 8u;
+const uint RT_MODE_CONE_REFRACTION = 9u;
+const uint RT_MODE_CONE_ROUGHNESS = 10u;
+const uint RT_MODE_CONE_ANISOTROPIC = 11u;
 
-// Materials: the discriminants of Material in src/rt/scene.rs.
+// Materials: Material::id in src/rt/scene.rs.
 const uint RT_MATERIAL_TEXTURED = 0u;
 const uint RT_MATERIAL_MIRROR = 1u;
+const uint RT_MATERIAL_GLASS = 2u;
+// Words per mesh in the mesh table: first index, first vertex, material, the material's parameter
+// (MESH_TABLE_WORDS in scene.rs).
+const uint RT_MESH_TABLE_WORDS = 4u;
+
+// RtPushConstants.flags (FLAG_* in abi.rs): the mirrors reflect about a normal drawn from the GGX
+// distribution of their roughness.
+const uint RT_FLAG_GLOSSY_LOBE = 1u;
 
 // Floats per vertex: position xyz, u, normal xyz, v (VERTEX_FLOATS in scene.rs).
 const uint RT_VERTEX_FLOATS = 8u;
-// Offset that lifts a reflected ray's origin off the surface, in world units.
+// The most bounces a path makes (glass passes rays on up to it); the ray-tracing pipelines'
+// recursion depth is one more (RECURSION_DEPTH in pipeline.rs).
+const uint RT_MAX_DEPTH = 3u;
+// Offset that lifts a reflected or refracted ray's origin off the surface, in world units.
 const float RT_SURFACE_OFFSET = 1.0e-3;
 // Farthest hit distance.
 const float RT_MAX_DISTANCE = 1.0e4;
@@ -68,8 +82,8 @@ struct RtTriangle {
 
 // Triangle `primitive` of mesh `mesh`, from the vertex, index and mesh-table buffers.
 RtTriangle rt_triangle(uint mesh, uint primitive) {
-    uint first_index = rt_meshes[3u * mesh] + 3u * primitive;
-    uint first_vertex = rt_meshes[3u * mesh + 1u];
+    uint first_index = rt_meshes[RT_MESH_TABLE_WORDS * mesh] + 3u * primitive;
+    uint first_vertex = rt_meshes[RT_MESH_TABLE_WORDS * mesh + 1u];
     RtTriangle tri;
     for (uint k = 0u; k < 3u; k++) {
         uint f = (first_vertex + rt_indices[first_index + k]) * RT_VERTEX_FLOATS;
@@ -103,11 +117,18 @@ uint rt_display(vec3 colour) {
     return packUnorm4x8(vec4(pow(clamp(colour, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0));
 }
 
+// A mesh's material: RT_MATERIAL_* and its parameter (a mirror's roughness, glass's index of
+// refraction).
+struct RtMaterial {
+    uint kind;
+    float parameter;
+};
+
 // The hit a closest-hit shader was called for, as the shared functions take it.
 struct RtHit {
-    // The hit mesh (instance custom index) and its material (RT_MATERIAL_*).
+    // The hit mesh (instance custom index) and its material.
     uint mesh;
-    uint material;
+    RtMaterial material;
     // The hit triangle: its index in the mesh and its vertices.
     uint primitive;
     RtTriangle tri;
@@ -134,8 +155,10 @@ RtHit rt_hit(uint mesh, uint primitive, vec2 barycentrics, vec3 origin, vec3 dir
     RtTriangle tri = rt_triangle(mesh, primitive);
     vec3 w = rt_weights(barycentrics);
     vec3 normal = normalize(w.x * tri.n[0] + w.y * tri.n[1] + w.z * tri.n[2]);
-    return RtHit(mesh, rt_meshes[3u * mesh + 2u], primitive, tri, barycentrics, w, normal, origin, direction, t,
-        world_to_object, pixel, depth);
+    uint entry = RT_MESH_TABLE_WORDS * mesh;
+    RtMaterial material = RtMaterial(rt_meshes[entry + 2u], uintBitsToFloat(rt_meshes[entry + 3u]));
+    return RtHit(mesh, material, primitive, tri, barycentrics, w, normal, origin, direction, t, world_to_object,
+        pixel, depth);
 }
 
 // The texture coordinates of the hit.
@@ -193,6 +216,66 @@ float rt_curvature_spread(RtHit hit, RfRayCone cone) {
     return rf_curvature_spread_angle(rt_curvature(hit), rf_width_at(cone, hit.t), hit.normal, hit.direction);
 }
 
+// The spread angle a mirror's roughness adds to a reflection, each way (JCGT 2021's mapping): 0 on
+// a smooth mirror and on other materials.
+float rt_roughness_spread(RtHit hit) {
+    return hit.material.kind == RT_MATERIAL_MIRROR ? rf_roughness_spread_angle(hit.material.parameter) : 0.0;
+}
+
+// Whether `mode` widens reflected (and refracted) cones by the surface's curvature.
+bool rt_follows_curvature(uint mode) {
+    return mode == RT_MODE_CONE_CURVATURE || mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_CONE_ROUGHNESS;
+}
+
+// The spread angle a reflection off the hit adds to `cone` in `mode`: the curvature's (JCGT 2021)
+// in the modes that follow the curvature, and in RT_MODE_CONE_ROUGHNESS twice the roughness spread
+// on top (one for each way the lobe spreads the reflected direction); 0 in the others (a planar
+// mirror).
+float rt_reflection_spread(uint mode, RtHit hit, RfRayCone cone) {
+    if (!rt_follows_curvature(mode)) {
+        return 0.0;
+    }
+    float spread = rt_curvature_spread(hit, cone);
+    return mode == RT_MODE_CONE_ROUGHNESS ? spread + 2.0 * rt_roughness_spread(hit) : spread;
+}
+
+// The index ratio n_incident / n_transmitted at a glass hit: 1 / index entering (the ray meets the
+// side the stored normal points to), the index leaving.
+float rt_relative_index(RtHit hit) {
+    float index = hit.material.parameter;
+    return dot(hit.normal, hit.direction) < 0.0 ? 1.0 / index : index;
+}
+
+// The normal's turn across the footprint of `cone` at the hit, as rf_refract_ray_cone takes it:
+// the curvature from the stored normals times the slanted footprint |width| / |n.d|, positive
+// where the surface is convex on the side the stored normal points to (the curvature's sign, as
+// rf_curvature_spread_angle takes it with the same normal).
+float rt_normal_spread(RtHit hit, RfRayCone cone) {
+    return rt_curvature(hit) * rt_footprint(hit, cone);
+}
+
+// The refraction of `cone` at the glass hit with index ratio eta (RTG II ch. 10, whole angles):
+// the cone propagated to the hit, refracted at the stored normal with rt_normal_spread; on total
+// internal reflection the reflected cone and the flag.
+RfRefractedRayCone rt_refract_cone(RtHit hit, RfRayCone cone, float eta) {
+    return rf_refract_ray_cone(rf_propagate(cone, hit.t, 0.0), hit.normal, hit.direction, rt_normal_spread(hit, cone),
+        eta);
+}
+
+// The cone of the ray a glass hit passes on in `mode`: refracted in RT_MODE_CONE_REFRACTION, and in
+// the others carried on as if the glass were not there.
+RfRayCone rt_glass_cone(uint mode, RtHit hit, RfRayCone cone, float eta) {
+    return mode == RT_MODE_CONE_REFRACTION ? rt_refract_cone(hit, cone, eta).cone : rf_propagate(cone, hit.t, 0.0);
+}
+
+// The anisotropic textureGrad gradients of the footprint of `cone` at the hit (JCGT 2021, the
+// elliptical footprint's axes in UV units).
+RfDerivatives2 rt_cone_uv_gradients(RtHit hit, RfRayCone cone) {
+    RtTriangle tri = hit.tri;
+    return rf_anisotropic_cone_gradients(rf_width_at(cone, hit.t), hit.direction, tri.p[0], tri.p[1], tri.p[2],
+        tri.uv[0], tri.uv[1], tri.uv[2]);
+}
+
 // The barycentric derivatives (RTG Eq. 12-19) of the hit reached by a ray carrying `diff`.
 RfDerivatives2 rt_barycentric_derivatives(RtHit hit, RfRayDiff diff) {
     return rf_barycentric_derivatives(diff, hit.direction, hit.t, hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
@@ -245,22 +328,26 @@ float rt_wireframe_coverage(RtHit hit, RfRayCone cone) {
     return rt_coverage(hit.weights, deltas);
 }
 
-// Whether the render mode carries ray differentials through the mirror.
+// Whether the render mode carries ray differentials through mirrors and glass.
 bool rt_carries_diff(uint mode) {
     return mode == RT_MODE_RAY_DIFF || mode == RT_MODE_RAY_DIFF_ISOTROPIC;
 }
 
-// The differential of the ray the mirror reflects at the hit (Igehy): the incoming differential
-// `diff` carried to the hit (origin derivatives from the barycentric derivatives, RTG Eq. 22), its
-// direction derivatives reflected about the interpolated normal, whose own derivatives come from the
-// vertex normals.
-RfRayDiff rt_reflected_diff(RtHit hit, RfRayDiff diff) {
+// The differential of the ray a mirror or glass passes on at the hit (Igehy): the incoming
+// differential `diff` carried to the hit (origin derivatives from the barycentric derivatives, RTG
+// Eq. 22), its direction derivatives reflected about the interpolated normal, or on glass refracted
+// with the index ratio eta (reflected on total internal reflection); the normal's own derivatives
+// come from the vertex normals.
+RfRayDiff rt_bounced_diff(RtHit hit, RfRayDiff diff, float eta) {
     RtTriangle tri = hit.tri;
     RfDerivatives2 bary = rt_barycentric_derivatives(hit, diff);
     RfDerivatives3 position = rf_secondary_origin_derivatives(bary, tri.p[0], tri.p[1], tri.p[2]);
     RfDerivatives3 normal = rf_normal_derivatives(tri.n[0], tri.n[1], tri.n[2], hit.barycentrics, bary);
     RfRayDiff at_hit = RfRayDiff(position.dx, 0.0, position.dy, 0.0, diff.d_direction_dx, 0.0, diff.d_direction_dy,
         0.0);
+    if (hit.material.kind == RT_MATERIAL_GLASS) {
+        return rf_refract_ray_diff(at_hit, hit.direction, hit.normal, normal, eta).diff;
+    }
     return rf_reflect_ray_diff(at_hit, hit.direction, hit.normal, normal);
 }
 
@@ -294,13 +381,20 @@ vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
             diff)))).rgb;
     case RT_MODE_BARY_GRADIENTS:
         return rt_sample_grad(uv, rt_offset_uv(hit, rt_offsets(hit, rt_neighbours(hit.pixel))));
-    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME
+    case RT_MODE_CONE_ANISOTROPIC:
+        return rt_sample_grad(uv, rt_cone_uv_gradients(hit, cone));
+    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME, RT_MODE_CONE_REFRACTION,
+             // RT_MODE_CONE_ROUGHNESS
         return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone)).rgb;
     }
 }
 
-// The colour of a surface the ray ends on, lit, under the wireframe in RT_MODE_WIREFRAME.
+// The colour of a surface the ray ends on, lit, under the wireframe in RT_MODE_WIREFRAME; black on
+// glass, which a ray reaches here only past the bounce limit (its light is lost).
 vec3 rt_surface_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    if (hit.material.kind == RT_MATERIAL_GLASS) {
+        return vec3(0.0);
+    }
     vec3 colour = rt_light(hit.normal) * rt_texture_colour(mode, hit, cone, diff);
     if (mode == RT_MODE_WIREFRAME) {
         colour = mix(colour, rt_frame.wireframe.colour.rgb, rt_wireframe_coverage(hit, cone));
@@ -309,9 +403,12 @@ vec3 rt_surface_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
 }
 
 // Whether the ray goes on from the hit: a mirror reflects primary rays (what it reflects is shaded as
-// a textured surface).
+// a textured surface), glass refracts every ray up to RT_MAX_DEPTH bounces.
 bool rt_passes_on(RtHit hit) {
-    return hit.material == RT_MATERIAL_MIRROR && hit.depth == 0u;
+    if (hit.material.kind == RT_MATERIAL_GLASS) {
+        return hit.depth < RT_MAX_DEPTH;
+    }
+    return hit.material.kind == RT_MATERIAL_MIRROR && hit.depth == 0u;
 }
 
 // The ray a hit passes on: where it starts and where it goes, the share of the light it brings
@@ -324,14 +421,86 @@ struct RtBounce {
     RfRayDiff diff;
 };
 
-// The mirror's reflection of the ray carrying `cone` and `diff` in `mode`: its cone leaves the hit
-// by RTG Eq. 35, widened by the curvature spread angle only in RT_MODE_CONE_CURVATURE (otherwise as
-// off a planar mirror); in the ray-differential modes it carries the reflected differential (Igehy).
+// A hash of four words to four (Jarzynski, Olano, "Hash Functions for GPU Rendering", JCGT 9(3),
+// 2020: pcg4d): a multiply-add per word, then two rounds of mixing each word into the next around an
+// xor-shift.
+uvec4 rt_hash(uvec4 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    v ^= v >> 16u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    return v;
+}
+
+// Two numbers in [0, 1) for the ray of `pixel` at the frame's pixel offset: different for every
+// pixel and sub-pixel sample, the same on every run.
+vec2 rt_random(uvec2 pixel) {
+    uvec4 words = rt_hash(uvec4(pixel, floatBitsToUint(pc.pixel_offset)));
+    return vec2(words.xy >> 8u) * (1.0 / 16777216.0);
+}
+
+// A microfacet normal around the unit `normal` drawn from the GGX distribution of width `alpha`
+// (Walter, Marschner, Li, Torrance 2007, Eq. 35-36: tan(theta) = alpha sqrt(u / (1 - u)),
+// phi = 2 pi v), in the tangent frame of rf_orthonormal_tangent.
+vec3 rt_ggx_normal(vec3 normal, float alpha, vec2 random) {
+    float tan_theta = alpha * sqrt(random.x / (1.0 - random.x));
+    float cos_theta = 1.0 / sqrt(1.0 + tan_theta * tan_theta);
+    float sin_theta = tan_theta * cos_theta;
+    float phi = 6.28318530718 * random.y;
+    vec3 tangent = rf_orthonormal_tangent(normal);
+    vec3 bitangent = cross(normal, tangent);
+    return normalize(sin_theta * (cos(phi) * tangent + sin(phi) * bitangent) + cos_theta * normal);
+}
+
+// The direction a mirror reflects the hit's ray: about the shading normal; under
+// RT_FLAG_GLOSSY_LOBE about a normal drawn from the GGX distribution of the mirror's roughness
+// (alpha = roughness^2), falling back to the shading normal where that reflection would leave below
+// the surface.
+vec3 rt_mirror_direction(RtHit hit) {
+    vec3 mirrored = reflect(hit.direction, hit.normal);
+    if ((pc.flags & RT_FLAG_GLOSSY_LOBE) == 0u) {
+        return mirrored;
+    }
+    vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    float roughness = hit.material.parameter;
+    vec3 glossy = reflect(hit.direction, rt_ggx_normal(facing, roughness * roughness, rt_random(hit.pixel)));
+    return dot(glossy, facing) > 0.0 ? glossy : mirrored;
+}
+
+// The direction of the ray leaving a glass hit with index ratio eta: refracted by Snell's law
+// (GLSL refract, with the normal turned against the ray), reflected on total internal reflection.
+vec3 rt_glass_direction(RtHit hit, float eta) {
+    vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    vec3 refracted = refract(hit.direction, facing, eta);
+    return refracted == vec3(0.0) ? reflect(hit.direction, facing) : refracted;
+}
+
+// Where a ray leaving the hit along `direction` starts: the hit point, lifted off the surface to the
+// side the ray leaves to.
+vec3 rt_leaving_origin(RtHit hit, vec3 direction) {
+    float side = dot(direction, hit.normal) >= 0.0 ? RT_SURFACE_OFFSET : -RT_SURFACE_OFFSET;
+    return hit.origin + hit.t * hit.direction + side * hit.normal;
+}
+
+// The ray a mirror or glass passes on from the ray carrying `cone` and `diff` in `mode`. A mirror
+// reflects it (rt_mirror_direction) and 90% of the light; its cone leaves by RTG Eq. 35, widened by
+// rt_reflection_spread. Glass refracts it (rt_glass_direction) and passes all of the light on; its
+// cone is rt_glass_cone. In the ray-differential modes it carries the reflected or refracted
+// differential (Igehy).
 RtBounce rt_bounce(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
-    float spread = mode == RT_MODE_CONE_CURVATURE ? rt_curvature_spread(hit, cone) : 0.0;
-    vec3 origin = hit.origin + hit.t * hit.direction + RT_SURFACE_OFFSET * hit.normal;
-    return RtBounce(origin, reflect(hit.direction, hit.normal), RT_MIRROR_REFLECTANCE, rf_propagate(cone, hit.t,
-        spread), rt_carries_diff(mode) ? rt_reflected_diff(hit, diff) : diff);
+    bool glass = hit.material.kind == RT_MATERIAL_GLASS;
+    float eta = glass ? rt_relative_index(hit) : 0.0;
+    vec3 direction = glass ? rt_glass_direction(hit, eta) : rt_mirror_direction(hit);
+    RfRayCone leaving = glass ? rt_glass_cone(mode, hit, cone, eta)
+                              : rf_propagate(cone, hit.t, rt_reflection_spread(mode, hit, cone));
+    return RtBounce(rt_leaving_origin(hit, direction), direction, glass ? 1.0 : RT_MIRROR_REFLECTANCE, leaving,
+        rt_carries_diff(mode) ? rt_bounced_diff(hit, diff, eta) : diff);
 }
 
 // The ray-differential, re-intersection and wireframe values of a primary hit reached by the eye
@@ -355,8 +524,10 @@ RtDiffRecord rt_measure_diff(RtHit hit, RfRayDiff eye, float footprint) {
 
 // What a primary hit reached by the eye ray carrying `cone` and `eye` measured: every ray-cone value
 // (footprint and texel density, base LOD and LOD, RTG Eq. 34; the textureGrad gradient; the
-// triangle's curvature and the spread it gives a reflection, JCGT 2021; the reflected cone, RTG
-// Eq. 35) and the ray-differential, re-intersection and wireframe values (rt_measure_diff).
+// triangle's curvature and the spread it gives a reflection, JCGT 2021; the reflected cone with the
+// roughness spread, RTG Eq. 35), the ray-differential, re-intersection and wireframe values
+// (rt_measure_diff), the refraction of the cone on glass (RTG II ch. 10) and the anisotropic cone
+// gradients (JCGT 2021).
 RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
     RtTriangle tri = hit.tri;
     float width = rf_width_at(cone, hit.t);
@@ -364,9 +535,17 @@ RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
     float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
     float base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
     float spread = rt_curvature_spread(hit, cone);
+    float roughness_spread = rt_roughness_spread(hit);
+    bool glass = hit.material.kind == RT_MATERIAL_GLASS;
+    float eta = glass ? rt_relative_index(hit) : 0.0;
+    RfRefractedRayCone refracted = glass ? rt_refract_cone(hit, cone, eta) : RfRefractedRayCone(RfRayCone(0.0, 0.0),
+        false);
+    RfDerivatives2 cone_uv = rt_cone_uv_gradients(hit, cone);
     return RtPixelRecord(hit.normal, hit.t, hit.direction, hit.mesh, hit.barycentrics, hit.primitive, 1u, cone,
         width, footprint, density, base_lod, rt_cone_lod(hit, cone), rt_cone_gradient(hit, cone), rt_curvature(hit),
-        spread, rf_propagate(cone, hit.t, spread), rt_measure_diff(hit, eye, footprint));
+        spread, rf_propagate(cone, hit.t, spread + 2.0 * roughness_spread), rt_measure_diff(hit, eye, footprint),
+        roughness_spread, eta, glass ? rt_normal_spread(hit, cone) : 0.0, refracted.total_internal_reflection ? 1u : 0u,
+        refracted.cone, cone_uv.dx, cone_uv.dy, uvec2(0u));
 }
 
 // The record of a ray that hit nothing.
@@ -374,7 +553,7 @@ RtPixelRecord rt_miss_record(vec3 direction, RfRayCone cone) {
     RtDiffRecord none = RtDiffRecord(vec3(0.0), 0.0, vec3(0.0), 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0),
         vec3(0.0), 0.0, vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u, vec2(0.0), vec2(0.0), vec3(0.0), 0u, vec3(0.0), 0u);
     return RtPixelRecord(vec3(0.0), 0.0, direction, 0u, vec2(0.0), 0u, 0u, cone, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        0.0, RfRayCone(0.0, 0.0), none);
+        0.0, RfRayCone(0.0, 0.0), none, 0.0, 0.0, 0.0, 0u, RfRayCone(0.0, 0.0), vec2(0.0), vec2(0.0), uvec2(0u));
 }
 
 // Sky colour for a ray leaving the scene in `direction`.
