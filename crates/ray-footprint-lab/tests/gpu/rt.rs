@@ -229,8 +229,8 @@ fn glossy_lobe_changes_only_the_rough_mirror() {
 }
 
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
-/// nothing, renders exactly the pixels of the recording pipeline in that mode in every
-/// [`colour_views`] view.
+/// nothing, renders the pixels of the recording pipeline in that mode in every [`colour_views`]
+/// view, to one [`ROUNDING_STEP`].
 #[test]
 fn colour_pipelines_render_the_recorded_colours() {
     let gpu = gpu();
@@ -251,9 +251,10 @@ fn colour_pipelines_render_the_recorded_colours() {
     }
 }
 
-/// The recording pipeline with the Slang closest-hit shader renders exactly the pixels of the one
-/// with the GLSL closest-hit shader, in every mode and [`colour_views`] view: the two shade alike,
-/// the mirrors' reflected and the glass' refracted cones and differentials included.
+/// The recording pipeline with the Slang closest-hit shader renders the pixels of the one with the
+/// GLSL closest-hit shader (to one [`ROUNDING_STEP`]), in every mode and [`colour_views`] view: the
+/// two shade alike, the mirrors' reflected and the glass' refracted cones and differentials
+/// included.
 #[test]
 fn slang_closest_hit_renders_the_glsl_colours() {
     let gpu = gpu();
@@ -302,7 +303,7 @@ fn colour_views() -> [(Scene, Vec<ColourView>); 2] {
 
 /// Renders every view of `views` in `mode` with `recording`'s recording pipeline and with
 /// `render`, prints how many pixels differ after `label` and by how much in a channel, and
-/// asserts that none differs.
+/// asserts that none differs by more than [`ROUNDING_STEP`].
 fn compare_colours(
     recording: &Renderer<'_>,
     views: &[ColourView],
@@ -335,11 +336,19 @@ fn compare_colours(
             rendered.pixels.len()
         );
         assert!(
-            channel_differences.is_empty(),
+            largest <= ROUNDING_STEP,
             "{mode}, {view} view ({label}): other pixels"
         );
     }
 }
+
+/// The largest difference in an 8-bit channel between two pipelines that compute a colour with
+/// the same expressions: one step. SPIR-V lets a driver fuse a multiply and an add in one pipeline
+/// and not in the other, so a colour's last bits may differ, and one that close to the middle
+/// between two steps is stored as either. The H100 showed it in one pixel of 3,072 (`ray_diff`,
+/// ground view, by 1) in one build of the shaders and in none in another; lavapipe in none. A
+/// different texel or mip level differs by more.
+const ROUNDING_STEP: u8 = 1;
 
 /// A view: camera, mode, wireframe settings, image size and the primary rays' offset from the
 /// pixel centres.
@@ -907,10 +916,13 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let spread_error = curvature_spread_angle_error(n, d, spread);
     stats.compare("curvature_spread", r.curvature_spread, spread, spread_error, r);
 
-    // propagate: the width as width_at; the spread is one correctly rounded addition of the
-    // curvature spread and twice the roughness spread (the doubling is exact, so a fused
-    // multiply-add rounds alike), then another.
-    let reflected = rc::propagate(cone, t, r.curvature_spread + 2.0 * r.roughness_spread);
+    // propagate: the width as width_at; the spread is the cone's plus the curvature spread plus
+    // twice the roughness spread (the doubling is exact): two additions, which a driver may
+    // associate either way (GLSL without `precise`; the H100 does). Each side rounds twice, by at
+    // most half an ULP of a partial sum each: 2 ULPs of the terms' magnitudes together.
+    let extra_spread = r.curvature_spread + 2.0 * r.roughness_spread;
+    let reflected = rc::propagate(cone, t, extra_spread);
+    let spread_terms = cone.spread_angle.abs() + r.curvature_spread.abs() + 2.0 * r.roughness_spread.abs();
     stats.compare(
         "reflected width",
         r.reflected.width,
@@ -922,7 +934,7 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
         "reflected spread",
         r.reflected.spread_angle,
         reflected.spread_angle,
-        0.0,
+        ulps(2.0, spread_terms),
         r,
     );
 }
