@@ -22,97 +22,30 @@ struct Case {
     names: &'static [&'static str],
 }
 
+/// A [`Case`], one line of [`CASES`].
+const fn case(example: &'static str, args: &'static [&'static str], names: &'static [&'static str]) -> Case {
+    Case { example, args, names }
+}
+
 const CASES: &[Case] = &[
-    Case {
-        example: "verify",
-        args: &["--cases", "0"],
-        names: &["--cases", "'0'"],
-    },
-    Case {
-        example: "verify",
-        args: &["--cases", "many"],
-        names: &["--cases", "'many'"],
-    },
-    Case {
-        example: "verify",
-        args: &["--batch", "-1"],
-        names: &["--batch", "'-1'"],
-    },
-    Case {
-        example: "verify",
-        args: &["--cases"],
-        names: &["--cases"],
-    },
-    Case {
-        example: "verify",
-        args: &["--seed", "7"],
-        names: &["'--seed'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--width", "0"],
-        names: &["--width", "'0'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--height", "99999999"],
-        names: &["--height", "'99999999'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--mode", "sharp"],
-        names: &["mode", "'sharp'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--out", ""],
-        names: &["--out"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--width"],
-        names: &["--width"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--fast"],
-        names: &["'--fast'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--width", "0"],
-        names: &["--width", "'0'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--height", "abc"],
-        names: &["--height", "'abc'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--samples", "0"],
-        names: &["--samples", "'0'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--frames", "1"],
-        names: &["--frames", "'1'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--scene", "moon"],
-        names: &["scene", "'moon'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--out", ""],
-        names: &["--out"],
-    },
-    Case {
-        example: "quality",
-        args: &["--truth"],
-        names: &["'--truth'"],
-    },
+    case("verify", &["--cases", "0"], &["--cases", "'0'"]),
+    case("verify", &["--cases", "many"], &["--cases", "'many'"]),
+    case("verify", &["--batch", "-1"], &["--batch", "'-1'"]),
+    case("verify", &["--cases"], &["--cases"]),
+    case("verify", &["--seed", "7"], &["'--seed'"]),
+    case("gallery", &["--width", "0"], &["--width", "'0'"]),
+    case("gallery", &["--height", "99999999"], &["--height", "'99999999'"]),
+    case("gallery", &["--mode", "sharp"], &["mode", "'sharp'"]),
+    case("gallery", &["--out", ""], &["--out"]),
+    case("gallery", &["--width"], &["--width"]),
+    case("gallery", &["--fast"], &["'--fast'"]),
+    case("quality", &["--width", "0"], &["--width", "'0'"]),
+    case("quality", &["--height", "abc"], &["--height", "'abc'"]),
+    case("quality", &["--samples", "0"], &["--samples", "'0'"]),
+    case("quality", &["--frames", "1"], &["--frames", "'1'"]),
+    case("quality", &["--scene", "moon"], &["scene", "'moon'"]),
+    case("quality", &["--out", ""], &["--out"]),
+    case("quality", &["--truth"], &["'--truth'"]),
 ];
 
 /// The folder cargo put the examples in: beside the `deps/` folder holding this test.
