@@ -430,6 +430,7 @@ fn slang_compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError 
 /// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.
 mod spirv {
     use super::{FieldLayout, StructLayout};
+    use crate::spirv::literal_string;
     use std::collections::HashMap;
 
     const OP_NAME: u32 = 5;
@@ -465,15 +466,6 @@ mod spirv {
         variables: HashMap<u32, u32>,
     }
 
-    fn string(words: &[u32]) -> String {
-        let bytes: Vec<u8> = words
-            .iter()
-            .flat_map(|w| w.to_le_bytes())
-            .take_while(|&b| b != 0)
-            .collect();
-        String::from_utf8_lossy(&bytes).into_owned()
-    }
-
     fn parse(words: &[u32]) -> Module {
         let mut module = Module::default();
         let mut at = 5; // after the header
@@ -482,10 +474,10 @@ mod spirv {
             let operands = &words[at + 1..(at + count.max(1)).min(words.len())];
             match (opcode, operands) {
                 (OP_NAME, [id, rest @ ..]) => {
-                    module.names.insert(*id, string(rest));
+                    module.names.insert(*id, literal_string(rest));
                 }
                 (OP_MEMBER_NAME, [id, member, rest @ ..]) => {
-                    module.member_names.insert((*id, *member), string(rest));
+                    module.member_names.insert((*id, *member), literal_string(rest));
                 }
                 (OP_MEMBER_DECORATE, [id, member, DECORATION_OFFSET, offset, ..]) => {
                     module.offsets.insert((*id, *member), *offset);
