@@ -6,7 +6,10 @@
 //! `RAY_FOOTPRINT_BLESS=1 cargo test --release --all-features --test bad_input`.
 #![cfg(all(feature = "validate", feature = "naga_oil"))]
 
+mod common;
+
 use bytemuck::{Pod, Zeroable};
+use common::assert_generated_block;
 use glam::Vec2;
 use naga_oil::compose::Composer;
 use ray_footprint::abi::{
@@ -19,6 +22,7 @@ use ray_footprint::shaders::{resolve_glsl_include, Module};
 use ray_footprint::wireframe::{WireframeSettings, MAX_LINE_THICKNESS};
 use std::fmt::{Display, Write};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
 
 /// What an entry did with a bad input.
 #[derive(Debug)]
@@ -507,18 +511,7 @@ const END: &str = "<!-- end of bad input table -->";
 
 #[test]
 fn the_docs_show_the_table() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/bad_input.md");
-    let doc = std::fs::read_to_string(path).expect("src/bad_input.md");
-    let (head, rest) = doc.split_once(START).expect("the start marker");
-    let (current, tail) = rest.split_once(END).expect("the end marker");
-    let rendered = render();
-    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
-        std::fs::write(path, format!("{head}{START}\n{rendered}\n{END}{tail}")).expect("writing");
-        return;
-    }
-    assert_eq!(
-        current.trim(),
-        rendered.trim(),
-        "src/bad_input.md is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
-    );
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src/bad_input.md"));
+    let block = format!("\n{}\n", render());
+    assert_generated_block(path, START, END, &block, "src/bad_input.md");
 }

@@ -1,7 +1,27 @@
-//! What the CPU math tests share. Each test binary compiles this module and uses part of it.
+//! What the tests share (the lab's tests include this file too). Each test binary compiles this
+//! module and uses part of it.
 #![allow(dead_code)]
 
 use glam::DVec3;
+use std::path::Path;
+
+/// Asserts that the text between the markers `start` and `end` in the file at `path` is `block`
+/// (white space at either end aside); with `RAY_FOOTPRINT_BLESS` set, writes `block` there instead.
+/// `what` names the generated table in the failure message.
+pub fn assert_generated_block(path: &Path, start: &str, end: &str, block: &str, what: &str) {
+    let doc = std::fs::read_to_string(path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+    let (head, rest) = doc.split_once(start).expect("the start marker");
+    let (current, tail) = rest.split_once(end).expect("the end marker");
+    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
+        std::fs::write(path, format!("{head}{start}{block}{end}{tail}")).expect("writing");
+        return;
+    }
+    assert_eq!(
+        current.trim(),
+        block.trim(),
+        "{what} is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
+    );
+}
 
 /// A small deterministic generator (xorshift64*), so the tests need no extra crate and always see
 /// the same cases.

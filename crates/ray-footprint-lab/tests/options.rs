@@ -7,6 +7,10 @@
 //! Cargo builds the examples next to the test binaries (`target/<profile>/examples/`) whenever it
 //! builds this test.
 
+#[path = "../../../tests/common/mod.rs"]
+mod common;
+
+use common::assert_generated_block;
 use std::fmt::Write;
 use std::path::PathBuf;
 use std::process::Command;
@@ -123,17 +127,12 @@ fn bad_options_are_refused_by_name() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../README.md");
-    let readme = std::fs::read_to_string(&path).expect("the README");
-    let (head, rest) = readme.split_once(START).expect("the start marker");
-    let (current, tail) = rest.split_once(END).expect("the end marker");
-    let rendered = render(&rows);
-    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
-        std::fs::write(&path, format!("{head}{START}\n{rendered}{END}{tail}")).expect("writing the README");
-        return;
-    }
-    assert_eq!(
-        current.trim(),
-        rendered.trim(),
-        "the README's table of bad example options is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
+    let block = format!("\n{}", render(&rows));
+    assert_generated_block(
+        &path,
+        START,
+        END,
+        &block,
+        "the README's table of bad example options",
     );
 }

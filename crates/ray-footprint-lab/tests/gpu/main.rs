@@ -14,6 +14,8 @@
 mod abi;
 mod agreement;
 mod chains;
+#[path = "../../../../tests/common/mod.rs"]
+mod common;
 mod degenerate;
 mod edges;
 mod quality;
