@@ -192,7 +192,7 @@ fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>
 fn main() -> ExitCode {
     let filter = options_or_exit(
         parse_args(std::env::args().skip(1)),
-        "function_costs [--function NAME] [--module NAME]",
+        "usage: function_costs [--function NAME] [--module NAME]",
     );
     let checks: Vec<_> = all_checks()
         .into_iter()

@@ -199,7 +199,7 @@ fn run(options: &Options) -> Result<(), Failure> {
 fn main() -> ExitCode {
     let options = options_or_exit(
         parse_args(std::env::args().skip(1)),
-        "mode_costs [--width N --height N] [--frames N] [--warm-up N]",
+        "usage: mode_costs [--width N --height N] [--frames N] [--warm-up N]",
     );
     match run(&options) {
         Ok(()) => ExitCode::SUCCESS,

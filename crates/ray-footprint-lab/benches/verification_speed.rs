@@ -84,7 +84,7 @@ fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
 fn main() -> ExitCode {
     let options = options_or_exit(
         parse_args(std::env::args().skip(1)),
-        "verification_speed [--cases N] [--threads N]",
+        "usage: verification_speed [--cases N] [--threads N]",
     );
     let gpu = match Gpu::new() {
         Ok(gpu) => gpu,

@@ -20,7 +20,7 @@ const MAX_VACUOUS: f64 = 0.01;
 fn main() -> ExitCode {
     let config = options_or_exit(
         parse_args(std::env::args().skip(1)),
-        "verify [--cases N] [--batch N]",
+        "usage: verify [--cases N] [--batch N]",
     );
     println!("layouts of the shared structs (offset/size in bytes):");
     match ray_footprint::abi::verify_shared_layouts() {

@@ -1,13 +1,18 @@
-//! What the lab's command-line programs (the `verify` example and the benches) share: reporting a
-//! bad option, and reading a positive count.
+//! What the lab's command-line programs (the `verify` and `gallery` examples and the benches)
+//! share: answering `--help`, reporting a bad option, and reading a positive count.
 
 use std::process::exit;
 
-/// The options `parsed` from the command line; on an error, prints it and `usage` (the program's
-/// name and options) to stderr and exits with status 2, before the program opens anything.
+/// The options `parsed` from the command line, before the program opens anything. An empty error
+/// message asks for help: prints `usage` (starting `usage: ` and the program's name) and exits with
+/// status 0. Any other error: prints it and `usage` to stderr and exits with status 2.
 pub fn options_or_exit<T>(parsed: Result<T, String>, usage: &str) -> T {
     parsed.unwrap_or_else(|message| {
-        eprintln!("error: {message}\nusage: {usage}");
+        if message.is_empty() {
+            println!("{usage}");
+            exit(0)
+        }
+        eprintln!("error: {message}\n{usage}");
         exit(2)
     })
 }
