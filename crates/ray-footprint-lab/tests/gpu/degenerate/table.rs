@@ -159,12 +159,12 @@ pub(super) fn delta_rows(parallel_output: &'static str, parallel: Vec<f32>) -> V
     )
 }
 
+/// The arguments of `intersect_triangle_plane` (f32 and f64): ray origin, direction, three vertices.
+type PlaneArgs = (Vec3, Vec3, Vec3, Vec3, Vec3);
+
 /// The rows of `intersect_triangle_plane` in f32 and f64: a ray parallel to the plane gives the
 /// barycentrics clamped to `+-max`, described by `parallel_output`.
-pub(super) fn plane_intersection_rows(
-    parallel_output: &'static str,
-    max: f32,
-) -> Vec<Row<(Vec3, Vec3, Vec3, Vec3, Vec3)>> {
+pub(super) fn plane_intersection_rows(parallel_output: &'static str, max: f32) -> Vec<Row<PlaneArgs>> {
     let (x, y, z) = (Vec3::X, Vec3::Y, Vec3::Z);
     vec![
         value(
