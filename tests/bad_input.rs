@@ -6,7 +6,10 @@
 //! `RAY_FOOTPRINT_BLESS=1 cargo test --release --all-features --test bad_input`.
 #![cfg(all(feature = "validate", feature = "naga_oil"))]
 
+mod common;
+
 use bytemuck::{Pod, Zeroable};
+use common::assert_generated_block;
 use glam::Vec2;
 use naga_oil::compose::Composer;
 use ray_footprint::abi::{
@@ -19,6 +22,7 @@ use ray_footprint::shaders::{resolve_glsl_include, Module};
 use ray_footprint::wireframe::{WireframeSettings, MAX_LINE_THICKNESS};
 use std::fmt::{Display, Write};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
 
 /// What an entry did with a bad input.
 #[derive(Debug)]
@@ -243,52 +247,24 @@ struct Padded {
     value: f32,
 }
 
+/// A layout reader: its name in the table and the call (std430 for GLSL and Slang).
+type Reader = (&'static str, fn(&str, &str) -> Result<StructLayout, LayoutError>);
+
+const WGSL_READER: Reader = ("layout::wgsl_layout", layout::wgsl_layout);
+const GLSL_READER: Reader = ("layout::glsl_layout (std430)", |source, name| {
+    layout::glsl_layout(source, name, GlslPacking::Std430, &[])
+});
+const SLANG_READER: Reader = ("layout::slang_layout (std430)", |source, name| {
+    layout::slang_layout(source, name, GlslPacking::Std430, &[])
+});
+
 /// A layout reader on a bad source or struct name.
-fn reader_row(
-    entry: &str,
-    read: fn(&str, &str) -> Result<StructLayout, LayoutError>,
-    input: &str,
-    name: &str,
-    names: &[&str],
-    source: &'static str,
-) -> Row {
+fn reader_row(reader: Reader, input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
+    let (entry, read) = reader;
     let name_owned = name.to_string();
     attempt(entry, format!("{input}, struct {name:?}"), names, move || {
         read(source, &name_owned)
     })
-}
-
-fn wgsl_row(input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
-    reader_row(
-        "layout::wgsl_layout",
-        layout::wgsl_layout,
-        input,
-        name,
-        names,
-        source,
-    )
-}
-
-fn glsl_row(input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
-    reader_row(
-        "layout::glsl_layout (std430)",
-        |source, name| layout::glsl_layout(source, name, GlslPacking::Std430, &[]),
-        input,
-        name,
-        names,
-        source,
-    )
-}
-
-fn slang_row(input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
-    reader_row(
-        "layout::slang_layout (std430)",
-        |source, name| layout::slang_layout(source, name, GlslPacking::Std430, &[]),
-        input,
-        name,
-        names,
-        source,
-    )
 }
 
 fn compare_row(input: &str, names: &[&str], rust: StructLayout, shader: Result<StructLayout, String>) -> Row {
@@ -324,80 +300,93 @@ fn layout_rows() -> Vec<Row> {
     };
     let padded = rust_layout!(Padded { flag, value });
     vec![
-        wgsl_row(
+        reader_row(
+            WGSL_READER,
             "`struct Probe { a: f32`",
             "Probe",
             &["expected", "wgsl:1:"],
             "struct Probe { a: f32",
         ),
-        wgsl_row(
+        reader_row(
+            WGSL_READER,
             "`struct Other { a: f32 }`",
             "Probe",
             &["Probe"],
             "struct Other { a: f32 }",
         ),
-        wgsl_row("empty source", "Probe", &["Probe"], ""),
-        wgsl_row(
+        reader_row(WGSL_READER, "empty source", "Probe", &["Probe"], ""),
+        reader_row(
+            WGSL_READER,
             "`struct Probe { a: f32 }`",
             "f32",
             &["f32"],
             "struct Probe { a: f32 }",
         ),
-        wgsl_row(
+        reader_row(
+            WGSL_READER,
             "`struct Probe { a: f32 }`",
             "",
             &["``"],
             "struct Probe { a: f32 }",
         ),
-        glsl_row(
+        reader_row(
+            GLSL_READER,
             "`struct Probe { float a }`",
             "Probe",
             &["source:1:", "syntax error"],
             "struct Probe { float a }",
         ),
-        glsl_row(
+        reader_row(
+            GLSL_READER,
             "`struct Probe { float a; };`",
             "Missing",
             &["Missing"],
             "struct Probe { float a; };",
         ),
-        glsl_row(
+        reader_row(
+            GLSL_READER,
             "`struct Probe { float a; };` and a newline",
             "Missing",
             &["Missing"],
             "struct Probe { float a; };\n",
         ),
-        glsl_row(
+        reader_row(
+            GLSL_READER,
             "`struct Probe { float a; };`",
             "Probe p; float",
             &["Probe p; float"],
             "struct Probe { float a; };",
         ),
-        glsl_row(
+        reader_row(
+            GLSL_READER,
             "`#include \"nope.glsl\"`, no include directory",
             "Probe",
             &["source:1:", "nope.glsl"],
             "#include \"nope.glsl\"",
         ),
-        slang_row(
+        reader_row(
+            SLANG_READER,
             "`struct Probe { float a }`",
             "Probe",
             &["source:1:", "expected"],
             "struct Probe { float a }",
         ),
-        slang_row(
+        reader_row(
+            SLANG_READER,
             "`struct Probe { float a; };` and a newline",
             "Missing",
             &["Missing"],
             "struct Probe { float a; };\n",
         ),
-        slang_row(
+        reader_row(
+            SLANG_READER,
             "`struct Probe { float a; };`",
             "Probe p; float",
             &["Probe p; float"],
             "struct Probe { float a; };",
         ),
-        slang_row(
+        reader_row(
+            SLANG_READER,
             "`import nope;`, no search directory",
             "Probe",
             &["source:1:", "nope"],
@@ -522,18 +511,7 @@ const END: &str = "<!-- end of bad input table -->";
 
 #[test]
 fn the_docs_show_the_table() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/bad_input.md");
-    let doc = std::fs::read_to_string(path).expect("src/bad_input.md");
-    let (head, rest) = doc.split_once(START).expect("the start marker");
-    let (current, tail) = rest.split_once(END).expect("the end marker");
-    let rendered = render();
-    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
-        std::fs::write(path, format!("{head}{START}\n{rendered}\n{END}{tail}")).expect("writing");
-        return;
-    }
-    assert_eq!(
-        current.trim(),
-        rendered.trim(),
-        "src/bad_input.md is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
-    );
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src/bad_input.md"));
+    let block = format!("\n{}\n", render());
+    assert_generated_block(path, START, END, &block, "src/bad_input.md");
 }

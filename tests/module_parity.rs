@@ -116,38 +116,36 @@ fn every_shader_module_declares_the_same_structs_in_the_same_order() {
 #[test]
 fn slang_modules_have_an_include_guard_and_no_entry_point_or_module_declaration() {
     for &module in Module::ALL {
-        let guard = format!("#ifndef RAY_FOOTPRINT_{}_SLANG", module.stem().to_uppercase());
-        let source = module.slang();
-        assert!(source.contains(&guard), "{}: missing `{guard}`", module.stem());
-        for forbidden in ["[shader(", "[numthreads(", "\nmodule ", "\nimplementing "] {
-            assert!(
-                !source.contains(forbidden),
-                "{}: a Slang module must not contain {forbidden:?} (it must work under #include)",
-                module.stem()
-            );
-        }
+        let forbidden = ["[shader(", "[numthreads(", "\nmodule ", "\nimplementing "];
+        assert_includable(module, "SLANG", module.slang(), &forbidden);
     }
 }
 
 #[test]
 fn glsl_modules_have_an_include_guard_and_no_version_or_main() {
     for &module in Module::ALL {
-        let guard = format!("#ifndef RAY_FOOTPRINT_{}_GLSL", module.stem().to_uppercase());
-        let source = module.glsl();
-        assert!(source.contains(&guard), "{}: missing `{guard}`", module.stem());
-        assert!(
-            !source.contains("#version"),
-            "{}: a module must not declare #version",
-            module.stem()
-        );
-        assert!(
-            !source.contains("void main"),
-            "{}: a module must not declare main",
-            module.stem()
-        );
+        assert_includable(module, "GLSL", module.glsl(), &["#version", "void main"]);
         assert!(
             !module.wgsl().contains('@'),
             "{}: a WGSL module must not declare entry points or bindings",
+            module.stem()
+        );
+    }
+}
+
+/// `source`, `module` in `language` (upper case), has the include guard
+/// `RAY_FOOTPRINT_<MODULE>_<LANGUAGE>` and none of the texts in `forbidden` (a module must work
+/// under `#include`).
+fn assert_includable(module: Module, language: &str, source: &str, forbidden: &[&str]) {
+    let guard = format!(
+        "#ifndef RAY_FOOTPRINT_{}_{language}",
+        module.stem().to_uppercase()
+    );
+    assert!(source.contains(&guard), "{}: missing `{guard}`", module.stem());
+    for text in forbidden {
+        assert!(
+            !source.contains(text),
+            "{}: a {language} module must not contain {text:?} (it must work under #include)",
             module.stem()
         );
     }

@@ -3,38 +3,11 @@
 //! interfaces, the first-order formulas, the OptiX Toolkit's thin form, and the roughness mapping's
 //! closed form. Each test prints the worst error it measured.
 
+mod common;
+
+use common::Rng;
 use glam::{DVec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
-
-/// A small deterministic generator (xorshift64*), so the tests always see the same cases.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    /// -1 or 1.
-    fn sign(&mut self) -> f64 {
-        if self.next() < 0.5 {
-            -1.0
-        } else {
-            1.0
-        }
-    }
-
-    /// `10^e` for `e` uniform in `[lo, hi]`.
-    fn log_range(&mut self, lo: f64, hi: f64) -> f64 {
-        10f64.powf(self.range(lo, hi))
-    }
-}
 
 /// The 2-D cross product `a.x b.y - a.y b.x`.
 fn cross(a: DVec2, b: DVec2) -> f64 {

@@ -4,37 +4,14 @@
 //! projection of a cone onto a surface, and the conversions' round trip and commutation with
 //! propagation. Each test prints the worst error it measured.
 
+mod common;
+
+use common::Rng;
 use glam::{DMat3, DVec3, Mat3, Vec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
 use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, RayDiff};
 
-/// A small deterministic generator (xorshift64*), so the tests always see the same cases.
-struct Rng(u64);
-
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    /// `10^e` for `e` uniform in `[lo, hi]`.
-    fn log_range(&mut self, lo: f64, hi: f64) -> f64 {
-        10f64.powf(self.range(lo, hi))
-    }
-
-    fn unit(&mut self) -> DVec3 {
-        let z = self.range(-1.0, 1.0);
-        let phi = self.range(0.0, std::f64::consts::TAU);
-        let r = (1.0 - z * z).sqrt();
-        DVec3::new(r * phi.cos(), r * phi.sin(), z)
-    }
-
     /// A unit direction meeting the unit normal `normal` at `|cos| = cosine`, towards it.
     fn direction_at(&mut self, normal: DVec3, cosine: f64) -> DVec3 {
         let tangent = normal.cross(self.unit()).normalize();

@@ -5,34 +5,13 @@
 //!
 //! Each test prints what it measured.
 
+mod common;
+
+use common::Rng;
 use glam::{DVec2, DVec3, Mat4, Vec2, Vec3};
 use ray_footprint::ray_cone as rc;
 use ray_footprint::ray_diff::{self as rd, Derivatives3, GBufferSample, RayDiff};
 use ray_footprint::ray_diff_f64 as rd64;
-
-/// A small deterministic generator (xorshift64*), so the tests need no extra crate and always see
-/// the same scenes.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    fn unit(&mut self) -> DVec3 {
-        let z = self.range(-1.0, 1.0);
-        let phi = self.range(0.0, std::f64::consts::TAU);
-        let r = (1.0 - z * z).sqrt();
-        DVec3::new(r * phi.cos(), r * phi.sin(), z)
-    }
-}
 
 /// A pinhole camera: position, orthonormal basis (`view` points towards the eye), vertical field of
 /// view and image size.
@@ -363,6 +342,16 @@ fn barycentric_offsets_are_exact_one_pixel_differences() {
     assert!(median(analytic_gaps) < 2.0e-2);
 }
 
+/// The larger of `|got[0] - expected[0]|` and `|got[1] - expected[1]|`, relative to the larger of
+/// `|expected[0]|` and `|expected[1]|`.
+fn relative_difference(got: [Vec3; 2], expected: [Vec3; 2]) -> f32 {
+    let scale = expected[0].length().max(expected[1].length());
+    (got[0] - expected[0])
+        .length()
+        .max((got[1] - expected[1]).length())
+        / scale
+}
+
 /// Reflecting a differential off a planar mirror gives the differential of the mirror-image camera:
 /// the same direction differentials, and the same position differentials after any further distance.
 #[test]
@@ -408,22 +397,14 @@ fn planar_reflection_equals_mirror_image_camera() {
             (t + t1) as f32,
             second_normal.as_vec3(),
         );
-        let scale = mirror_diff
-            .d_direction_dx
-            .length()
-            .max(mirror_diff.d_direction_dy.length());
-        let direction_error = (reflected.d_direction_dx - mirror_diff.d_direction_dx)
-            .length()
-            .max((reflected.d_direction_dy - mirror_diff.d_direction_dy).length())
-            / scale;
-        let position_scale = from_mirror_camera
-            .d_origin_dx
-            .length()
-            .max(from_mirror_camera.d_origin_dy.length());
-        let position_error = (after_mirror.d_origin_dx - from_mirror_camera.d_origin_dx)
-            .length()
-            .max((after_mirror.d_origin_dy - from_mirror_camera.d_origin_dy).length())
-            / position_scale;
+        let direction_error = relative_difference(
+            [reflected.d_direction_dx, reflected.d_direction_dy],
+            [mirror_diff.d_direction_dx, mirror_diff.d_direction_dy],
+        );
+        let position_error = relative_difference(
+            [after_mirror.d_origin_dx, after_mirror.d_origin_dy],
+            [from_mirror_camera.d_origin_dx, from_mirror_camera.d_origin_dy],
+        );
         worst = worst
             .max(f64::from(direction_error))
             .max(f64::from(position_error));

@@ -376,6 +376,22 @@ fn within<T: Floats>(d: &mut Draw, value: T, lo: f32, hi: f32, what: &str) -> T 
     value
 }
 
+/// Draws the arguments of a barycentric re-intersection function (`barycentric_offsets` and
+/// `barycentric_deltas`, f32 and f64): world-to-object matrix, world ray origin, three vertices, two
+/// unit neighbour directions and the hit's barycentrics, and calls `function` on them.
+fn reintersection<T>(d: &mut Draw, function: fn(Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3) -> T) -> T {
+    function(
+        d.world_to_object(),
+        d.world_point(),
+        d.vec3(),
+        d.vec3(),
+        d.vec3(),
+        d.unit(),
+        d.unit(),
+        d.vec3(),
+    )
+}
+
 /// `F64_MAX_VALUE` as the f32 the functions return.
 const F64_MAX: f32 = rd64::F64_MAX_VALUE as f32;
 
@@ -612,28 +628,10 @@ fn ray_diff_functions() -> Vec<MirrorFunction> {
             within(d, b.yz(), -rd::DIFF_MAX_VALUE, rd::DIFF_MAX_VALUE, "barycentric")
         }),
         f!(RayDiff, barycentric_offsets, |d| {
-            rd::barycentric_offsets(
-                d.world_to_object(),
-                d.world_point(),
-                d.vec3(),
-                d.vec3(),
-                d.vec3(),
-                d.unit(),
-                d.unit(),
-                d.vec3(),
-            )
+            reintersection(d, rd::barycentric_offsets)
         }),
         f!(RayDiff, barycentric_deltas, |d| {
-            let deltas = rd::barycentric_deltas(
-                d.world_to_object(),
-                d.world_point(),
-                d.vec3(),
-                d.vec3(),
-                d.vec3(),
-                d.unit(),
-                d.unit(),
-                d.vec3(),
-            );
+            let deltas = reintersection(d, rd::barycentric_deltas);
             within(d, deltas, 0.0, f32::MAX, "delta")
         }),
         f!(RayDiff, uv_gradients_from_offsets, |d| {
@@ -679,28 +677,10 @@ fn ray_diff_f64_functions() -> Vec<MirrorFunction> {
             within(d, b.yz(), -F64_MAX, F64_MAX, "barycentric")
         }),
         f!(RayDiffF64, barycentric_offsets_f64, |d| {
-            rd64::barycentric_offsets_f64(
-                d.world_to_object(),
-                d.world_point(),
-                d.vec3(),
-                d.vec3(),
-                d.vec3(),
-                d.unit(),
-                d.unit(),
-                d.vec3(),
-            )
+            reintersection(d, rd64::barycentric_offsets_f64)
         }),
         f!(RayDiffF64, barycentric_deltas_f64, |d| {
-            let deltas = rd64::barycentric_deltas_f64(
-                d.world_to_object(),
-                d.world_point(),
-                d.vec3(),
-                d.vec3(),
-                d.vec3(),
-                d.unit(),
-                d.unit(),
-                d.vec3(),
-            );
+            let deltas = reintersection(d, rd64::barycentric_deltas_f64);
             within(d, deltas, 0.0, f32::MAX, "delta")
         }),
     ]

@@ -23,6 +23,7 @@ use glam::Vec3;
 use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks::all_checks;
+use ray_footprint_lab::cli::options_or_exit;
 use shader_proptest::spirv::{self, Statistics, TRANSCENDENTAL};
 use shader_proptest::{kernel_source, Args, Check, Language, Shader, Value};
 use std::process::{Command, ExitCode};
@@ -189,13 +190,10 @@ fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>
 }
 
 fn main() -> ExitCode {
-    let filter = match parse_args(std::env::args().skip(1)) {
-        Ok(filter) => filter,
-        Err(message) => {
-            eprintln!("error: {message}\nusage: function_costs [--function NAME] [--module NAME]");
-            return ExitCode::from(2);
-        }
-    };
+    let filter = options_or_exit(
+        parse_args(std::env::args().skip(1)),
+        "usage: function_costs [--function NAME] [--module NAME]",
+    );
     let checks: Vec<_> = all_checks()
         .into_iter()
         .filter(|(module, check)| filter.accepts(*module, check.function()))

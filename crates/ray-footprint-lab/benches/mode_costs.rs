@@ -11,6 +11,7 @@
 //! implementation); the default is 50 timed frames after 5 warm-up frames per mode.
 
 use ray_footprint::wireframe::WireframeSettings;
+use ray_footprint_lab::cli::options_or_exit;
 use ray_footprint_lab::rt::{open_device, Camera, Error, Mode, Renderer, Scene};
 use shader_proptest::spirv::{self, Statistics};
 use std::process::ExitCode;
@@ -196,15 +197,10 @@ fn run(options: &Options) -> Result<(), Failure> {
 }
 
 fn main() -> ExitCode {
-    let options = match parse_args(std::env::args().skip(1)) {
-        Ok(options) => options,
-        Err(message) => {
-            eprintln!(
-                "error: {message}\nusage: mode_costs [--width N --height N] [--frames N] [--warm-up N]"
-            );
-            return ExitCode::from(2);
-        }
-    };
+    let options = options_or_exit(
+        parse_args(std::env::args().skip(1)),
+        "usage: mode_costs [--width N --height N] [--frames N] [--warm-up N]",
+    );
     match run(&options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::NotRun(reason)) => {

@@ -10,6 +10,7 @@
 //! one thread count only.
 
 use ray_footprint_lab::checks::all_checks;
+use ray_footprint_lab::cli::{options_or_exit, positive_count};
 use shader_proptest::{Gpu, Language, Outcome, RunConfig};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -29,10 +30,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
             continue;
         }
         let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
-        let number = match value.parse::<usize>() {
-            Ok(n) if n > 0 => n,
-            _ => return Err(format!("{flag} must be a positive integer, got '{value}'")),
-        };
+        let number = positive_count(&flag, &value)?;
         match flag.as_str() {
             "--cases" => options.cases = number,
             "--threads" => options.threads = Some(number),
@@ -84,13 +82,10 @@ fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
 }
 
 fn main() -> ExitCode {
-    let options = match parse_args(std::env::args().skip(1)) {
-        Ok(options) => options,
-        Err(message) => {
-            eprintln!("error: {message}\nusage: verification_speed [--cases N] [--threads N]");
-            return ExitCode::from(2);
-        }
-    };
+    let options = options_or_exit(
+        parse_args(std::env::args().skip(1)),
+        "usage: verification_speed [--cases N] [--threads N]",
+    );
     let gpu = match Gpu::new() {
         Ok(gpu) => gpu,
         Err(error) => {

@@ -18,6 +18,7 @@
 //! `cargo run --release -p ray-footprint-lab --example gallery -- [--width N] [--height N] [--mode NAME|all] [--out DIR]`
 
 use ray_footprint::wireframe::WireframeSettings;
+use ray_footprint_lab::cli::options_or_exit;
 use ray_footprint_lab::figure::{self, Panel, RgbaImage};
 use ray_footprint_lab::rt::{open_device, Camera, Error, Frame, Mode, Renderer, Scene};
 use std::path::PathBuf;
@@ -88,17 +89,7 @@ fn size(flag: &str, value: &str) -> Result<u32, String> {
 }
 
 fn main() -> ExitCode {
-    let options = match parse_args(std::env::args().skip(1)) {
-        Ok(options) => options,
-        Err(message) if message.is_empty() => {
-            println!("{}", usage());
-            return ExitCode::SUCCESS;
-        }
-        Err(message) => {
-            eprintln!("error: {message}\n{}", usage());
-            return ExitCode::from(2);
-        }
-    };
+    let options = options_or_exit(parse_args(std::env::args().skip(1)), &usage());
     if let Err(e) = std::fs::create_dir_all(&options.out) {
         eprintln!(
             "error: cannot create the output folder {}: {e}",

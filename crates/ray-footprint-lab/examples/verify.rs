@@ -10,6 +10,7 @@
 //! `cargo run --release -p ray-footprint-lab --example verify [-- --cases N] [--batch N]`
 
 use ray_footprint_lab::checks::all_checks;
+use ray_footprint_lab::cli::{options_or_exit, positive_count};
 use shader_proptest::{Gpu, Language, Outcome, RunConfig};
 use std::process::ExitCode;
 
@@ -17,13 +18,10 @@ use std::process::ExitCode;
 const MAX_VACUOUS: f64 = 0.01;
 
 fn main() -> ExitCode {
-    let config = match parse_args(std::env::args().skip(1)) {
-        Ok(config) => config,
-        Err(message) => {
-            eprintln!("error: {message}\nusage: verify [--cases N] [--batch N]");
-            return ExitCode::from(2);
-        }
-    };
+    let config = options_or_exit(
+        parse_args(std::env::args().skip(1)),
+        "usage: verify [--cases N] [--batch N]",
+    );
     println!("layouts of the shared structs (offset/size in bytes):");
     match ray_footprint::abi::verify_shared_layouts() {
         Ok(tables) => println!("{tables}\nall layouts equal\n"),
@@ -99,10 +97,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<RunConfig, Strin
             other => return Err(format!("unknown argument '{other}'")),
         };
         let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
-        *target = match value.parse::<usize>() {
-            Ok(n) if n > 0 => n,
-            _ => return Err(format!("{flag} must be a positive integer, got '{value}'")),
-        };
+        *target = positive_count(&flag, &value)?;
     }
     Ok(config)
 }

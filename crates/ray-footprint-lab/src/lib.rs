@@ -9,6 +9,7 @@
 
 pub mod chains;
 pub mod checks;
+pub mod cli;
 pub mod figure;
 pub mod quality;
 pub mod rt;

@@ -7,6 +7,10 @@
 //! Cargo builds the examples next to the test binaries (`target/<profile>/examples/`) whenever it
 //! builds this test.
 
+#[path = "../../../tests/common/mod.rs"]
+mod common;
+
+use common::assert_generated_block;
 use std::fmt::Write;
 use std::path::PathBuf;
 use std::process::Command;
@@ -22,97 +26,30 @@ struct Case {
     names: &'static [&'static str],
 }
 
+/// A [`Case`], one line of [`CASES`].
+const fn case(example: &'static str, args: &'static [&'static str], names: &'static [&'static str]) -> Case {
+    Case { example, args, names }
+}
+
 const CASES: &[Case] = &[
-    Case {
-        example: "verify",
-        args: &["--cases", "0"],
-        names: &["--cases", "'0'"],
-    },
-    Case {
-        example: "verify",
-        args: &["--cases", "many"],
-        names: &["--cases", "'many'"],
-    },
-    Case {
-        example: "verify",
-        args: &["--batch", "-1"],
-        names: &["--batch", "'-1'"],
-    },
-    Case {
-        example: "verify",
-        args: &["--cases"],
-        names: &["--cases"],
-    },
-    Case {
-        example: "verify",
-        args: &["--seed", "7"],
-        names: &["'--seed'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--width", "0"],
-        names: &["--width", "'0'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--height", "99999999"],
-        names: &["--height", "'99999999'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--mode", "sharp"],
-        names: &["mode", "'sharp'"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--out", ""],
-        names: &["--out"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--width"],
-        names: &["--width"],
-    },
-    Case {
-        example: "gallery",
-        args: &["--fast"],
-        names: &["'--fast'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--width", "0"],
-        names: &["--width", "'0'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--height", "abc"],
-        names: &["--height", "'abc'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--samples", "0"],
-        names: &["--samples", "'0'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--frames", "1"],
-        names: &["--frames", "'1'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--scene", "moon"],
-        names: &["scene", "'moon'"],
-    },
-    Case {
-        example: "quality",
-        args: &["--out", ""],
-        names: &["--out"],
-    },
-    Case {
-        example: "quality",
-        args: &["--truth"],
-        names: &["'--truth'"],
-    },
+    case("verify", &["--cases", "0"], &["--cases", "'0'"]),
+    case("verify", &["--cases", "many"], &["--cases", "'many'"]),
+    case("verify", &["--batch", "-1"], &["--batch", "'-1'"]),
+    case("verify", &["--cases"], &["--cases"]),
+    case("verify", &["--seed", "7"], &["'--seed'"]),
+    case("gallery", &["--width", "0"], &["--width", "'0'"]),
+    case("gallery", &["--height", "99999999"], &["--height", "'99999999'"]),
+    case("gallery", &["--mode", "sharp"], &["mode", "'sharp'"]),
+    case("gallery", &["--out", ""], &["--out"]),
+    case("gallery", &["--width"], &["--width"]),
+    case("gallery", &["--fast"], &["'--fast'"]),
+    case("quality", &["--width", "0"], &["--width", "'0'"]),
+    case("quality", &["--height", "abc"], &["--height", "'abc'"]),
+    case("quality", &["--samples", "0"], &["--samples", "'0'"]),
+    case("quality", &["--frames", "1"], &["--frames", "'1'"]),
+    case("quality", &["--scene", "moon"], &["scene", "'moon'"]),
+    case("quality", &["--out", ""], &["--out"]),
+    case("quality", &["--truth"], &["'--truth'"]),
 ];
 
 /// The folder cargo put the examples in: beside the `deps/` folder holding this test.
@@ -190,17 +127,12 @@ fn bad_options_are_refused_by_name() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../README.md");
-    let readme = std::fs::read_to_string(&path).expect("the README");
-    let (head, rest) = readme.split_once(START).expect("the start marker");
-    let (current, tail) = rest.split_once(END).expect("the end marker");
-    let rendered = render(&rows);
-    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
-        std::fs::write(&path, format!("{head}{START}\n{rendered}{END}{tail}")).expect("writing the README");
-        return;
-    }
-    assert_eq!(
-        current.trim(),
-        rendered.trim(),
-        "the README's table of bad example options is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
+    let block = format!("\n{}", render(&rows));
+    assert_generated_block(
+        &path,
+        START,
+        END,
+        &block,
+        "the README's table of bad example options",
     );
 }

@@ -5,7 +5,7 @@
 
 use std::fmt;
 use std::path::Path;
-use std::process::Command;
+use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// A shader language.
@@ -288,18 +288,29 @@ fn run_compiler(
         });
     let bytes = std::fs::read(&output);
     let _ = std::fs::remove_dir_all(&dir);
-    let result = result?;
-    if !result.status.success() {
+    tool_output(&program, &result?, bytes, "", &input)
+}
+
+/// The SPIR-V words that the command-line tool `tool` wrote to its output file (`written`, as read
+/// back), or, when the tool failed, its log (`log_prefix`, then stdout and stderr) naming `input`.
+pub(crate) fn tool_output(
+    tool: &str,
+    run: &Output,
+    written: std::io::Result<Vec<u8>>,
+    log_prefix: &str,
+    input: &Path,
+) -> Result<Vec<u32>, CompileError> {
+    if !run.status.success() {
         return Err(CompileError::Failed {
             log: format!(
-                "{}{}",
-                String::from_utf8_lossy(&result.stdout),
-                String::from_utf8_lossy(&result.stderr)
+                "{log_prefix}{}{}",
+                String::from_utf8_lossy(&run.stdout),
+                String::from_utf8_lossy(&run.stderr)
             ),
             source_path: input.display().to_string(),
         });
     }
-    let bytes = bytes.map_err(|e| CompileError::NotRun(format!("reading {program}'s output: {e}")))?;
+    let bytes = written.map_err(|e| CompileError::NotRun(format!("reading {tool}'s output: {e}")))?;
     Ok(bytes
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))

@@ -336,15 +336,8 @@ pub fn glsl_layout(
         packing.qualifier()
     );
     let probe_line = source.matches('\n').count() + 2;
-    let spirv =
-        compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs).map_err(
-            |error| match error {
-                CompileError::NotRun(message) => LayoutError::Source(message),
-                CompileError::Failed { log, source_path } => {
-                    glsl_compile_error(&log.replace(&source_path, "source"), name, probe_line)
-                }
-            },
-        )?;
+    let spirv = compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs)
+        .map_err(|error| probe_error(error, |log| glsl_compile_error(log, name, probe_line)))?;
     spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
 }
 
@@ -355,6 +348,15 @@ fn is_identifier(name: &str) -> bool {
         .next()
         .is_some_and(|first| first.is_ascii_alphabetic() || first == '_')
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// A failed probe compile as a layout error: the compiler's message when it did not run, else
+/// `from_log` of its log, in which the probe's path reads `source`.
+fn probe_error(error: CompileError, from_log: impl FnOnce(&str) -> LayoutError) -> LayoutError {
+    match error {
+        CompileError::NotRun(message) => LayoutError::Source(message),
+        CompileError::Failed { log, source_path } => from_log(&log.replace(&source_path, "source")),
+    }
 }
 
 /// The error for a failed probe compile: errors at the probe block alone mean `name` is not a type
@@ -402,15 +404,8 @@ pub fn slang_layout(
     // The probe buffer is on the line after the source (counted from the newlines, so that a source
     // ending in one counts right); errors there alone mean `name` is not a type the source declares.
     let probe_line = source.matches('\n').count() + 2;
-    let spirv =
-        compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs).map_err(
-            |error| match error {
-                CompileError::NotRun(message) => LayoutError::Source(message),
-                CompileError::Failed { log, source_path } => {
-                    slang_compile_error(&log.replace(&source_path, "source"), name, probe_line)
-                }
-            },
-        )?;
+    let spirv = compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs)
+        .map_err(|error| probe_error(error, |log| slang_compile_error(log, name, probe_line)))?;
     let mut layout = spirv::buffer_element_layout(&spirv, "layout_probe")
         .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
     layout.name = name.to_string();
@@ -435,6 +430,7 @@ fn slang_compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError 
 /// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.
 mod spirv {
     use super::{FieldLayout, StructLayout};
+    use crate::spirv::literal_string;
     use std::collections::HashMap;
 
     const OP_NAME: u32 = 5;
@@ -470,15 +466,6 @@ mod spirv {
         variables: HashMap<u32, u32>,
     }
 
-    fn string(words: &[u32]) -> String {
-        let bytes: Vec<u8> = words
-            .iter()
-            .flat_map(|w| w.to_le_bytes())
-            .take_while(|&b| b != 0)
-            .collect();
-        String::from_utf8_lossy(&bytes).into_owned()
-    }
-
     fn parse(words: &[u32]) -> Module {
         let mut module = Module::default();
         let mut at = 5; // after the header
@@ -487,10 +474,10 @@ mod spirv {
             let operands = &words[at + 1..(at + count.max(1)).min(words.len())];
             match (opcode, operands) {
                 (OP_NAME, [id, rest @ ..]) => {
-                    module.names.insert(*id, string(rest));
+                    module.names.insert(*id, literal_string(rest));
                 }
                 (OP_MEMBER_NAME, [id, member, rest @ ..]) => {
-                    module.member_names.insert((*id, *member), string(rest));
+                    module.member_names.insert((*id, *member), literal_string(rest));
                 }
                 (OP_MEMBER_DECORATE, [id, member, DECORATION_OFFSET, offset, ..]) => {
                     module.offsets.insert((*id, *member), *offset);

@@ -13,7 +13,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::compile::CompileError;
+use crate::compile::{tool_output, CompileError};
 use std::fmt;
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -184,7 +184,7 @@ fn instructions(words: &[u32]) -> Result<Vec<&[u32]>, SpirvError> {
 }
 
 /// A SPIR-V literal string: UTF-8 bytes packed little-endian into words, ended by a zero byte.
-fn literal_string(words: &[u32]) -> String {
+pub(crate) fn literal_string(words: &[u32]) -> String {
     let bytes: Vec<u8> = words
         .iter()
         .flat_map(|word| word.to_le_bytes())
@@ -219,21 +219,7 @@ pub fn optimize(words: &[u32]) -> Result<Vec<u32>, CompileError> {
             "cannot run spirv-opt (SPIRV-Tools, Debian package spirv-tools): {e}"
         ))
     })?;
-    if !result.status.success() {
-        return Err(CompileError::Failed {
-            log: format!(
-                "spirv-opt -O: {}{}",
-                String::from_utf8_lossy(&result.stdout),
-                String::from_utf8_lossy(&result.stderr)
-            ),
-            source_path: input.display().to_string(),
-        });
-    }
-    let bytes = bytes.map_err(|e| CompileError::NotRun(format!("reading spirv-opt's output: {e}")))?;
-    Ok(bytes
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect())
+    tool_output("spirv-opt", &result, bytes, "spirv-opt -O: ", &input)
 }
 
 /// The little-endian bytes of `words`, as SPIR-V files hold them.

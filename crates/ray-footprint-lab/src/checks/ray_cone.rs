@@ -5,8 +5,8 @@
 
 use super::edge::Edge;
 use super::strategy::{
-    angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle,
-    uv_triangle, vec3,
+    angle, distance, fov_y, magnitude, normal_and_direction, perspective_proj_inv, pixels, scalar,
+    small_vec3, triangle, uv_triangle, vec3,
 };
 use super::Entry;
 use super::{enclosed, per_component};
@@ -37,17 +37,8 @@ fn packed_ray_cone() -> BoxedStrategy<PackedRayCone> {
 
 /// An inverse projection matrix of a perspective camera (y-flipped or not), or an arbitrary matrix.
 fn proj_inv() -> BoxedStrategy<Mat4> {
-    let perspective =
-        (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>()).prop_map(|(fov, aspect, near, vulkan)| {
-            let projection = if vulkan {
-                glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)
-            } else {
-                glam::camera::rh::proj::opengl::perspective(fov, aspect, near, near * 1000.0)
-            };
-            projection.inverse()
-        });
     let arbitrary = prop::array::uniform16(scalar()).prop_map(|cols| Mat4::from_cols_array(&cols));
-    prop_oneof![3 => perspective, 1 => arbitrary].boxed()
+    prop_oneof![3 => perspective_proj_inv(), 1 => arbitrary].boxed()
 }
 
 /// `|cos|` as the functions clamp it.

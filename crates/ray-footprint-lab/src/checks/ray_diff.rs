@@ -9,8 +9,8 @@
 use super::edge::Edge;
 use super::enclosed;
 use super::strategy::{
-    angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle, unit_vec3,
-    uv_triangle, vec3,
+    angle, distance, fov_y, magnitude, normal_and_direction, perspective_proj_inv, pixels, scalar,
+    small_vec3, triangle, unit_vec3, uv_triangle, vec3,
 };
 use super::Entry;
 use glam::{Mat4, Quat, Vec2, Vec3, Vec4Swizzles};
@@ -69,17 +69,8 @@ pub fn rigid() -> BoxedStrategy<Mat4> {
 /// An inverse projection matrix: perspective (OpenGL or Vulkan, y-flipped), or arbitrary with
 /// moderate entries.
 pub fn proj_inv() -> BoxedStrategy<Mat4> {
-    let perspective =
-        (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>()).prop_map(|(fov, aspect, near, vulkan)| {
-            let projection = if vulkan {
-                glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)
-            } else {
-                glam::camera::rh::proj::opengl::perspective(fov, aspect, near, near * 1000.0)
-            };
-            projection.inverse()
-        });
     let arbitrary = prop::array::uniform16(-10.0f32..10.0).prop_map(|cols| Mat4::from_cols_array(&cols));
-    prop_oneof![3 => perspective, 1 => arbitrary].boxed()
+    prop_oneof![3 => perspective_proj_inv(), 1 => arbitrary].boxed()
 }
 
 /// A differential vector: ordinary, small (pixel-sized), or anywhere in the domain.

@@ -5,7 +5,7 @@
 //! ordinary range with the edges of that domain: zero, tiny and huge values, grazing angles and
 //! degenerate triangles.
 
-use glam::{Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
 
@@ -143,4 +143,19 @@ pub fn uv_triangle() -> BoxedStrategy<[Vec2; 3]> {
     let collinear = (uv(), uv(), 0.0f32..1.0).prop_map(|(a, b, t)| [a, b, a.lerp(b, t)]);
     let equal = uv().prop_map(|a| [a, a, a]);
     prop_oneof![5 => ordinary, 1 => tiny, 1 => collinear, 1 => equal].boxed()
+}
+
+/// The inverse projection matrix of a perspective camera, OpenGL's or Vulkan's (y-flipped): field of
+/// view, aspect ratio and near plane drawn, the far plane at 1000 times the near one.
+pub fn perspective_proj_inv() -> BoxedStrategy<Mat4> {
+    (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>())
+        .prop_map(|(fov, aspect, near, vulkan)| {
+            let projection = if vulkan {
+                glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)
+            } else {
+                glam::camera::rh::proj::opengl::perspective(fov, aspect, near, near * 1000.0)
+            };
+            projection.inverse()
+        })
+        .boxed()
 }

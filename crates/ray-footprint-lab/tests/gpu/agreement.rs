@@ -3,7 +3,7 @@
 //! Each test prints one line per function: cases checked, largest error, that error as a fraction
 //! of the function's tolerance, and the share of cases whose tolerance is vacuous.
 
-use super::gpu;
+use super::{assert_all_pass, gpu};
 use ray_footprint::ray_cone;
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::checks;
@@ -15,21 +15,12 @@ fn agree(module: Module, language: Language) {
     let checks = checks::checks(module);
     assert!(!checks.is_empty(), "module {} has no checks", module.stem());
     let shader = module.shader(language);
-    let mut failures = Vec::new();
-    for check in checks {
-        let report = check
-            .run(&gpu, &shader, &RunConfig::default())
-            .unwrap_or_else(|error| panic!("{} ({}): {error}", check.function(), language.name()));
-        println!("{report}");
-        if !report.passed() {
-            failures.push(report.to_string());
-        }
-    }
-    assert!(
-        failures.is_empty(),
-        "{} function(s) disagree:\n{}",
-        failures.len(),
-        failures.join("\n\n")
+    assert_all_pass(
+        &gpu,
+        &shader,
+        language,
+        checks.iter().map(AsRef::as_ref),
+        "disagree",
     );
 }
 

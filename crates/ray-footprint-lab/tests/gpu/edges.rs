@@ -4,31 +4,17 @@
 //! function's tolerance, which, where the function is ill-conditioned, widens to the documented
 //! clamp.
 
-use super::gpu;
+use super::{assert_all_pass, gpu};
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::checks::entries;
-use shader_proptest::{Language, RunConfig};
+use shader_proptest::Language;
 
 fn edges_agree(module: Module, language: Language) {
     let gpu = gpu();
     let shader = module.shader(language);
-    let mut failures = Vec::new();
-    for entry in entries(module) {
-        let report = entry
-            .edge
-            .run(&gpu, &shader, &RunConfig::default())
-            .unwrap_or_else(|error| panic!("{} ({}): {error}", entry.edge.function(), language.name()));
-        println!("{report}");
-        if !report.passed() {
-            failures.push(report.to_string());
-        }
-    }
-    assert!(
-        failures.is_empty(),
-        "{} function(s) failed on edge cases:\n{}",
-        failures.len(),
-        failures.join("\n\n")
-    );
+    let entries = entries(module);
+    let edges = entries.iter().map(|entry| entry.edge.as_ref());
+    assert_all_pass(&gpu, &shader, language, edges, "failed on edge cases");
 }
 
 #[test]

@@ -14,12 +14,14 @@
 mod abi;
 mod agreement;
 mod chains;
+#[path = "../../../../tests/common/mod.rs"]
+mod common;
 mod degenerate;
 mod edges;
 mod quality;
 mod rt;
 
-use shader_proptest::Gpu;
+use shader_proptest::{Check, Gpu, Language, RunConfig, Shader};
 
 /// The command that installs what the GPU tests need on Debian 12.
 const SETUP_COMMAND: &str = "scripts/setup.sh";
@@ -28,4 +30,31 @@ const SETUP_COMMAND: &str = "scripts/setup.sh";
 /// by skipping).
 fn gpu() -> Gpu {
     Gpu::new().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
+}
+
+/// Runs every check on `shader` in `language` with the default configuration, printing each report;
+/// fails with the reports of those that did not pass, as function(s) that `failed`.
+fn assert_all_pass<'a>(
+    gpu: &Gpu,
+    shader: &Shader,
+    language: Language,
+    checks: impl Iterator<Item = &'a dyn Check>,
+    failed: &str,
+) {
+    let mut failures = Vec::new();
+    for check in checks {
+        let report = check
+            .run(gpu, shader, &RunConfig::default())
+            .unwrap_or_else(|error| panic!("{} ({}): {error}", check.function(), language.name()));
+        println!("{report}");
+        if !report.passed() {
+            failures.push(report.to_string());
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} function(s) {failed}:\n{}",
+        failures.len(),
+        failures.join("\n\n")
+    );
 }

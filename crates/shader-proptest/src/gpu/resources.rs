@@ -196,21 +196,10 @@ impl<'g> Owner<'g> {
             bytes.len() as vk::DeviceSize <= buffer.size,
             "write past the end of a buffer"
         );
-        // SAFETY: host-visible memory mapped over the buffer's usable range, which holds `bytes`.
-        unsafe {
-            let ptr = self
-                .device()
-                .map_memory(
-                    buffer.memory,
-                    buffer.offset,
-                    buffer.size,
-                    vk::MemoryMapFlags::empty(),
-                )
-                .map_err(vulkan("vkMapMemory"))?;
-            std::ptr::copy_nonoverlapping(bytes.as_ptr(), ptr.cast::<u8>(), bytes.len());
-            self.device().unmap_memory(buffer.memory);
-        }
-        Ok(())
+        self.mapped(buffer, |mapped| {
+            // SAFETY: the mapping covers the buffer's usable range, which holds `bytes`.
+            unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), mapped, bytes.len()) }
+        })
     }
 
     /// The first `count` values of a [`Location::Host`] buffer.
@@ -220,22 +209,31 @@ impl<'g> Owner<'g> {
             bytes as vk::DeviceSize <= buffer.size,
             "read past the end of a buffer"
         );
-        // SAFETY: as in `write`; the GPU work that wrote the buffer has been waited for.
-        unsafe {
-            let ptr = self
-                .device()
-                .map_memory(
-                    buffer.memory,
-                    buffer.offset,
-                    buffer.size,
-                    vk::MemoryMapFlags::empty(),
-                )
-                .map_err(vulkan("vkMapMemory"))?;
-            let mut values = vec![T::zeroed(); count];
-            std::ptr::copy_nonoverlapping(ptr.cast::<u8>(), values.as_mut_ptr().cast::<u8>(), bytes);
-            self.device().unmap_memory(buffer.memory);
-            Ok(values)
+        let mut values = vec![T::zeroed(); count];
+        self.mapped(buffer, |mapped| {
+            // SAFETY: the mapping covers the buffer's usable range, which holds `bytes` bytes; the
+            // GPU work that wrote the buffer has been waited for.
+            unsafe { std::ptr::copy_nonoverlapping(mapped, values.as_mut_ptr().cast::<u8>(), bytes) }
+        })?;
+        Ok(values)
+    }
+
+    /// Maps a [`Location::Host`] buffer's usable range, hands its start to `access`, and unmaps it.
+    fn mapped<R>(&self, buffer: &Buffer, access: impl FnOnce(*mut u8) -> R) -> Result<R, Error> {
+        // SAFETY: host-visible memory, not mapped elsewhere, mapped over the buffer's usable range.
+        let start = unsafe {
+            self.device().map_memory(
+                buffer.memory,
+                buffer.offset,
+                buffer.size,
+                vk::MemoryMapFlags::empty(),
+            )
         }
+        .map_err(vulkan("vkMapMemory"))?;
+        let result = access(start.cast::<u8>());
+        // SAFETY: mapped above; `access` has returned and kept no pointer into it.
+        unsafe { self.device().unmap_memory(buffer.memory) };
+        Ok(result)
     }
 
     /// A host buffer holding `bytes`, for `usage`, its address aligned to `alignment`.

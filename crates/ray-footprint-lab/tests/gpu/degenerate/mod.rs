@@ -17,10 +17,12 @@ mod ray_diff_f64;
 mod table;
 mod wireframe;
 
+use super::common::assert_generated_block;
 use super::gpu;
 use ray_footprint::shaders::Module;
 use shader_proptest::{evaluate, Args, Error, Gpu, Language, Value};
 use std::fmt::Write as _;
+use std::path::Path;
 
 /// What a row documents.
 pub enum Expect<A> {
@@ -207,19 +209,8 @@ const END: &str = "<!-- end of degenerate table -->";
 
 #[test]
 fn the_docs_show_the_table() {
-    let doc = std::fs::read_to_string(DOC).expect("src/degenerate.md");
-    let (head, rest) = doc.split_once(START).expect("the start marker");
-    let (current, tail) = rest.split_once(END).expect("the end marker");
-    let rendered = render();
-    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
-        std::fs::write(DOC, format!("{head}{START}\n{rendered}\n{END}{tail}")).expect("writing");
-        return;
-    }
-    assert_eq!(
-        current.trim(),
-        rendered.trim(),
-        "src/degenerate.md is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
-    );
+    let block = format!("\n{}\n", render());
+    assert_generated_block(Path::new(DOC), START, END, &block, "src/degenerate.md");
 }
 
 fn all_tables() -> Vec<Box<dyn Degenerate>> {

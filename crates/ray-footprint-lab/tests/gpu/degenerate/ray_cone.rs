@@ -25,6 +25,24 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
     let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
     let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
     let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
+    // Rows of both normal spread angles (exact and small-angle): 0 for a flat surface and when the
+    // squares of the derivatives underflow.
+    let flat_normal = || {
+        value(
+            "zero normal derivatives (flat)",
+            "0",
+            (Vec3::ZERO, Vec3::ZERO),
+            vec![0.0],
+        )
+    };
+    let sub_normal_derivatives = || {
+        value(
+            "sub-normal derivatives (1e-40 each)",
+            "0 (the squares underflow)",
+            (Vec3::splat(1.0e-40), Vec3::splat(-1.0e-40)),
+            vec![0.0],
+        )
+    };
     vec![
         Box::new(Table {
             module: Module::RayCone,
@@ -330,24 +348,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             mirror: |(dx, dy)| rc::normal_spread_angle(dx, dy),
             tolerance: |_, e| ulps(4100.0, e),
             rows: vec![
-                value(
-                    "zero normal derivatives (flat)",
-                    "0",
-                    (Vec3::ZERO, Vec3::ZERO),
-                    vec![0.0],
-                ),
+                flat_normal(),
                 value(
                     "one derivative zero, the other of length 2",
                     "2 atan(1) = pi / 2",
                     (Vec3::ZERO, Vec3::new(0.0, 0.0, -2.0)),
                     vec![std::f32::consts::FRAC_PI_2],
                 ),
-                value(
-                    "sub-normal derivatives (1e-40 each)",
-                    "0 (the squares underflow)",
-                    (Vec3::splat(1.0e-40), Vec3::splat(-1.0e-40)),
-                    vec![0.0],
-                ),
+                sub_normal_derivatives(),
                 mirror(
                     "infinity in",
                     "CPU: pi (2 atan(inf))",
@@ -364,24 +372,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             // inversesqrt and a division: 4.5 ULP).
             tolerance: |_, e| ulps(6.0, e),
             rows: vec![
-                value(
-                    "zero normal derivatives (flat)",
-                    "0",
-                    (Vec3::ZERO, Vec3::ZERO),
-                    vec![0.0],
-                ),
+                flat_normal(),
                 value(
                     "derivatives (3, 0, 0) and (0, -4, 0)",
                     "5, the length of both together",
                     (Vec3::new(3.0, 0.0, 0.0), Vec3::new(0.0, -4.0, 0.0)),
                     vec![5.0],
                 ),
-                value(
-                    "sub-normal derivatives (1e-40 each)",
-                    "0 (the squares underflow)",
-                    (Vec3::splat(1.0e-40), Vec3::splat(-1.0e-40)),
-                    vec![0.0],
-                ),
+                sub_normal_derivatives(),
             ],
         }),
         Box::new(Table {

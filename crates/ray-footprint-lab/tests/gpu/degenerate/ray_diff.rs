@@ -1,9 +1,10 @@
 //! The degenerate-input rows of `ray_diff`.
 
 use super::table::{
-    direction_at, mirror, offset_args, parts, plane_offset_args, same, value, widest, INF, NAN, OFFSET,
+    delta_rows, direction_at, mirror, offset_rows, parts, plane_intersection_rows, same, value, widest, INF,
+    NAN, OFFSET,
 };
-use super::{Degenerate, Table};
+use super::{Degenerate, Row, Table};
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, GBufferSample, RayDiff, TriplanarGradients, DIFF_MAX_FOV_Y,
@@ -124,93 +125,21 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             function: "eye_ray_direction_from_matrices",
             mirror: |(p, s, v, pr)| rd::eye_ray_direction_from_matrices(p, s, v, pr),
             tolerance: |_, _| ulps(8.0, 1.0),
-            rows: vec![
-                same(
-                    "zero viewport (0 x 0)",
-                    "as a 1 x 1 image",
-                    (Vec2::ZERO, Vec2::ZERO, Mat4::IDENTITY, proj_inv),
-                    (Vec2::ZERO, Vec2::ONE, Mat4::IDENTITY, proj_inv),
-                ),
-                value(
-                    "zero inverse projection",
-                    "0 (the zero vector is not normalized)",
-                    (Vec2::ZERO, Vec2::splat(64.0), Mat4::IDENTITY, Mat4::ZERO),
-                    vec![0.0; 3],
-                ),
-                same(
-                    "inverse view with a translation (5, -6, 7)",
-                    "as without: directions ignore it (w = 0)",
-                    (
-                        Vec2::ZERO,
-                        Vec2::splat(64.0),
-                        Mat4::from_translation(Vec3::new(5.0, -6.0, 7.0)),
-                        proj_inv,
-                    ),
-                    (Vec2::ZERO, Vec2::splat(64.0), Mat4::IDENTITY, proj_inv),
-                ),
-            ],
+            rows: matrix_rows(proj_inv, "0 (the zero vector is not normalized)", vec![0.0; 3]),
         }),
         Box::new(Table {
             module: Module::RayDiff,
             function: "eye_ray_diff_from_matrices",
             mirror: |(p, s, v, pr)| rd::eye_ray_diff_from_matrices(p, s, v, pr),
             tolerance: |_, _| ulps(16.0, 1.0),
-            rows: vec![
-                same(
-                    "zero viewport (0 x 0)",
-                    "as a 1 x 1 image",
-                    (Vec2::ZERO, Vec2::ZERO, Mat4::IDENTITY, proj_inv),
-                    (Vec2::ZERO, Vec2::ONE, Mat4::IDENTITY, proj_inv),
-                ),
-                value(
-                    "zero inverse projection",
-                    "0",
-                    (Vec2::ZERO, Vec2::splat(64.0), Mat4::IDENTITY, Mat4::ZERO),
-                    parts(RayDiff::ZERO),
-                ),
-                same(
-                    "inverse view with a translation (5, -6, 7)",
-                    "as without: directions ignore it (w = 0)",
-                    (
-                        Vec2::ZERO,
-                        Vec2::splat(64.0),
-                        Mat4::from_translation(Vec3::new(5.0, -6.0, 7.0)),
-                        proj_inv,
-                    ),
-                    (Vec2::ZERO, Vec2::splat(64.0), Mat4::IDENTITY, proj_inv),
-                ),
-            ],
+            rows: matrix_rows(proj_inv, "0", parts(RayDiff::ZERO)),
         }),
         Box::new(Table {
             module: Module::RayDiff,
             function: "pixel_directions",
             mirror: |(p, s, v, pr)| rd::pixel_directions(p, s, v, pr),
             tolerance: |_, _| ulps(8.0, 1.0),
-            rows: vec![
-                same(
-                    "zero viewport (0 x 0)",
-                    "as a 1 x 1 image",
-                    (Vec2::ZERO, Vec2::ZERO, Mat4::IDENTITY, proj_inv),
-                    (Vec2::ZERO, Vec2::ONE, Mat4::IDENTITY, proj_inv),
-                ),
-                value(
-                    "zero inverse projection",
-                    "0",
-                    (Vec2::ZERO, Vec2::splat(64.0), Mat4::IDENTITY, Mat4::ZERO),
-                    vec![0.0; 6],
-                ),
-                same(
-                    "inverse view with a translation (5, -6, 7)",
-                    "as without: directions ignore it (w = 0)",
-                    (
-                        Vec2::ZERO,
-                        Vec2::splat(64.0),
-                        Mat4::from_translation(Vec3::new(5.0, -6.0, 7.0)),
-                        proj_inv,
-                    ),
-                    (Vec2::ZERO, Vec2::splat(64.0), Mat4::IDENTITY, proj_inv),
-                ),
-            ],
+            rows: matrix_rows(proj_inv, "0", vec![0.0; 6]),
         }),
         Box::new(Table {
             module: Module::RayDiff,
@@ -756,84 +685,27 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
             function: "intersect_triangle_plane",
             mirror: |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
             tolerance: |_, e| ulps(3.0, e),
-            rows: vec![
-                value(
-                    "ray parallel to the plane",
-                    "k clamped, u and v clamped to +-DIFF_MAX_VALUE",
-                    (z, x, Vec3::ZERO, x, y),
-                    vec![rd::DIFF_MAX_VALUE, -rd::DIFF_MAX_VALUE, 0.0],
-                ),
-                value(
-                    "zero-area triangle (one point)",
-                    "(1, 0, 0)",
-                    (z, -z, x, x, x),
-                    vec![1.0, 0.0, 0.0],
-                ),
-                value(
-                    "zero direction",
-                    "(1, 0, 0): every cross product with d is 0",
-                    (z, Vec3::ZERO, Vec3::ZERO, x, y),
-                    vec![1.0, 0.0, 0.0],
-                ),
-                value(
-                    "plane behind the origin",
-                    "the hit behind it: (0.25, 0.25, 0.5)",
-                    (Vec3::new(0.25, 0.5, -1.0), -z, Vec3::ZERO, x, y),
-                    vec![0.25, 0.25, 0.5],
-                ),
-            ],
+            rows: plane_intersection_rows(
+                "k clamped, u and v clamped to +-DIFF_MAX_VALUE",
+                rd::DIFF_MAX_VALUE,
+            ),
         }),
         Box::new(Table {
             module: Module::RayDiff,
             function: "barycentric_offsets",
             mirror: |(m, o, p0, p1, p2, dx, dy, hit)| rd::barycentric_offsets(m, o, p0, p1, p2, dx, dy, hit),
             tolerance: |_, e| ulps(3.0, e),
-            rows: vec![
-                value(
-                    "zero-area triangle (one point)",
-                    "(1, 0, 0) - hit, both ways",
-                    offset_args(),
-                    [OFFSET; 2].concat(),
-                ),
-                value(
-                    "right neighbour ray parallel to the plane, lower one through p0",
-                    "(DIFF_MAX_VALUE, -DIFF_MAX_VALUE, 0) - hit in f32 (clamped u, v), (1, 0, 0) - hit",
-                    plane_offset_args(x, -z),
-                    [vec![max, -max, -0.5], OFFSET.to_vec()].concat(),
-                ),
-                value(
-                    "zero neighbour directions",
-                    "(1, 0, 0) - hit, both ways",
-                    plane_offset_args(Vec3::ZERO, Vec3::ZERO),
-                    [OFFSET; 2].concat(),
-                ),
-            ],
+            rows: offset_rows(
+                "(DIFF_MAX_VALUE, -DIFF_MAX_VALUE, 0) - hit in f32 (clamped u, v), (1, 0, 0) - hit",
+                [vec![max, -max, -0.5], OFFSET.to_vec()].concat(),
+            ),
         }),
         Box::new(Table {
             module: Module::RayDiff,
             function: "barycentric_deltas",
             mirror: |(m, o, p0, p1, p2, dx, dy, hit)| rd::barycentric_deltas(m, o, p0, p1, p2, dx, dy, hit),
             tolerance: |_, e| ulps(3.0, e),
-            rows: vec![
-                value(
-                    "zero-area triangle (one point)",
-                    "2 |(1, 0, 0) - hit|",
-                    offset_args(),
-                    OFFSET.map(|v| 2.0 * v.abs()).to_vec(),
-                ),
-                value(
-                    "right neighbour ray parallel to the plane, lower one through p0",
-                    "(DIFF_MAX_VALUE, DIFF_MAX_VALUE, 1) in f32",
-                    plane_offset_args(x, -z),
-                    vec![max, max, 1.0],
-                ),
-                value(
-                    "zero neighbour directions",
-                    "2 |(1, 0, 0) - hit|",
-                    plane_offset_args(Vec3::ZERO, Vec3::ZERO),
-                    OFFSET.map(|v| 2.0 * v.abs()).to_vec(),
-                ),
-            ],
+            rows: delta_rows("(DIFF_MAX_VALUE, DIFF_MAX_VALUE, 1) in f32", vec![max, max, 1.0]),
         }),
         Box::new(Table {
             module: Module::RayDiff,
@@ -1014,5 +886,41 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 ),
             ],
         }),
+    ]
+}
+
+/// The rows of the functions of a pixel, the viewport size and the inverse view and projection
+/// matrices (`eye_ray_direction_from_matrices`, `eye_ray_diff_from_matrices`, `pixel_directions`):
+/// a zero inverse projection gives `zero`, described by `zero_output`.
+fn matrix_rows(
+    proj_inv: Mat4,
+    zero_output: &'static str,
+    zero: Vec<f32>,
+) -> Vec<Row<(Vec2, Vec2, Mat4, Mat4)>> {
+    let (centre, size) = (Vec2::ZERO, Vec2::splat(64.0));
+    vec![
+        same(
+            "zero viewport (0 x 0)",
+            "as a 1 x 1 image",
+            (centre, Vec2::ZERO, Mat4::IDENTITY, proj_inv),
+            (centre, Vec2::ONE, Mat4::IDENTITY, proj_inv),
+        ),
+        value(
+            "zero inverse projection",
+            zero_output,
+            (centre, size, Mat4::IDENTITY, Mat4::ZERO),
+            zero,
+        ),
+        same(
+            "inverse view with a translation (5, -6, 7)",
+            "as without: directions ignore it (w = 0)",
+            (
+                centre,
+                size,
+                Mat4::from_translation(Vec3::new(5.0, -6.0, 7.0)),
+                proj_inv,
+            ),
+            (centre, size, Mat4::IDENTITY, proj_inv),
+        ),
     ]
 }

@@ -75,10 +75,10 @@ pub(super) fn widest<A: Args, R: Value>(check: FunctionCheck<A, R>, args: &A) ->
 /// `(1, 0, 0) - hit` for the hit of [`offset_args`]: what a zero-area triangle gives.
 pub(super) const OFFSET: [f32; 3] = [0.75, -0.25, -0.5];
 
-pub(super) type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
+type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
 
 /// Re-intersection arguments with a triangle collapsed to one point and hit `(0.25, 0.25, 0.5)`.
-pub(super) fn offset_args() -> OffsetArgs {
+fn offset_args() -> OffsetArgs {
     let point = Vec3::new(0.0, 0.0, -5.0);
     (
         Mat4::IDENTITY,
@@ -94,7 +94,7 @@ pub(super) fn offset_args() -> OffsetArgs {
 
 /// Re-intersection arguments with the triangle `(0, 0, -5)`, `(1, 0, -5)`, `(0, 1, -5)` seen from
 /// the origin, hit `(0.25, 0.25, 0.5)` and the given neighbour directions.
-pub(super) fn plane_offset_args(direction_x: Vec3, direction_y: Vec3) -> OffsetArgs {
+fn plane_offset_args(direction_x: Vec3, direction_y: Vec3) -> OffsetArgs {
     let p0 = Vec3::new(0.0, 0.0, -5.0);
     (
         Mat4::IDENTITY,
@@ -106,4 +106,90 @@ pub(super) fn plane_offset_args(direction_x: Vec3, direction_y: Vec3) -> OffsetA
         direction_y,
         Vec3::new(0.25, 0.25, 0.5),
     )
+}
+
+/// The rows of `barycentric_offsets` and `barycentric_deltas`, f32 and f64: a triangle collapsed to
+/// a point, and zero neighbour directions, give `collapsed`; a right neighbour ray parallel to the
+/// plane gives the clamp, `parallel`. Each described by its `_output`.
+pub(super) fn reintersection_rows(
+    collapsed_output: &'static str,
+    collapsed: Vec<f32>,
+    parallel_output: &'static str,
+    parallel: Vec<f32>,
+) -> Vec<Row<OffsetArgs>> {
+    vec![
+        value(
+            "zero-area triangle (one point)",
+            collapsed_output,
+            offset_args(),
+            collapsed.clone(),
+        ),
+        value(
+            "right neighbour ray parallel to the plane, lower one through p0",
+            parallel_output,
+            plane_offset_args(Vec3::X, Vec3::NEG_Z),
+            parallel,
+        ),
+        value(
+            "zero neighbour directions",
+            collapsed_output,
+            plane_offset_args(Vec3::ZERO, Vec3::ZERO),
+            collapsed,
+        ),
+    ]
+}
+
+/// [`reintersection_rows`] of `barycentric_offsets`: `(1, 0, 0) - hit` both ways when collapsed.
+pub(super) fn offset_rows(parallel_output: &'static str, parallel: Vec<f32>) -> Vec<Row<OffsetArgs>> {
+    reintersection_rows(
+        "(1, 0, 0) - hit, both ways",
+        [OFFSET; 2].concat(),
+        parallel_output,
+        parallel,
+    )
+}
+
+/// [`reintersection_rows`] of `barycentric_deltas`: `2 |(1, 0, 0) - hit|` when collapsed.
+pub(super) fn delta_rows(parallel_output: &'static str, parallel: Vec<f32>) -> Vec<Row<OffsetArgs>> {
+    reintersection_rows(
+        "2 |(1, 0, 0) - hit|",
+        OFFSET.map(|v| 2.0 * v.abs()).to_vec(),
+        parallel_output,
+        parallel,
+    )
+}
+
+/// The arguments of `intersect_triangle_plane` (f32 and f64): ray origin, direction, three vertices.
+type PlaneArgs = (Vec3, Vec3, Vec3, Vec3, Vec3);
+
+/// The rows of `intersect_triangle_plane` in f32 and f64: a ray parallel to the plane gives the
+/// barycentrics clamped to `+-max`, described by `parallel_output`.
+pub(super) fn plane_intersection_rows(parallel_output: &'static str, max: f32) -> Vec<Row<PlaneArgs>> {
+    let (x, y, z) = (Vec3::X, Vec3::Y, Vec3::Z);
+    vec![
+        value(
+            "ray parallel to the plane",
+            parallel_output,
+            (z, x, Vec3::ZERO, x, y),
+            vec![max, -max, 0.0],
+        ),
+        value(
+            "zero-area triangle (one point)",
+            "(1, 0, 0)",
+            (z, -z, x, x, x),
+            vec![1.0, 0.0, 0.0],
+        ),
+        value(
+            "zero direction",
+            "(1, 0, 0): every cross product with d is 0",
+            (z, Vec3::ZERO, Vec3::ZERO, x, y),
+            vec![1.0, 0.0, 0.0],
+        ),
+        value(
+            "plane behind the origin",
+            "the hit behind it: (0.25, 0.25, 0.5)",
+            (Vec3::new(0.25, 0.5, -1.0), -z, Vec3::ZERO, x, y),
+            vec![0.25, 0.25, 0.5],
+        ),
+    ]
 }

@@ -1,0 +1,65 @@
+//! What the tests share (the lab's tests include this file too). Each test binary compiles this
+//! module and uses part of it.
+#![allow(dead_code)]
+
+use glam::DVec3;
+use std::path::Path;
+
+/// Asserts that the text between the markers `start` and `end` in the file at `path` is `block`
+/// (white space at either end aside); with `RAY_FOOTPRINT_BLESS` set, writes `block` there instead.
+/// `what` names the generated table in the failure message.
+pub fn assert_generated_block(path: &Path, start: &str, end: &str, block: &str, what: &str) {
+    let doc = std::fs::read_to_string(path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+    let (head, rest) = doc.split_once(start).expect("the start marker");
+    let (current, tail) = rest.split_once(end).expect("the end marker");
+    if std::env::var_os("RAY_FOOTPRINT_BLESS").is_some() {
+        std::fs::write(path, format!("{head}{start}{block}{end}{tail}")).expect("writing");
+        return;
+    }
+    assert_eq!(
+        current.trim(),
+        block.trim(),
+        "{what} is out of date; rerun with RAY_FOOTPRINT_BLESS=1"
+    );
+}
+
+/// A small deterministic generator (xorshift64*), so the tests need no extra crate and always see
+/// the same cases.
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// Uniform in `[0, 1)`.
+    pub fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in `[lo, hi)`.
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+
+    /// -1 or 1.
+    pub fn sign(&mut self) -> f64 {
+        if self.next() < 0.5 {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+
+    /// `10^e` for `e` uniform in `[lo, hi]`.
+    pub fn log_range(&mut self, lo: f64, hi: f64) -> f64 {
+        10f64.powf(self.range(lo, hi))
+    }
+
+    /// A unit vector uniform on the sphere.
+    pub fn unit(&mut self) -> DVec3 {
+        let z = self.range(-1.0, 1.0);
+        let phi = self.range(0.0, std::f64::consts::TAU);
+        let r = (1.0 - z * z).sqrt();
+        DVec3::new(r * phi.cos(), r * phi.sin(), z)
+    }
+}
