@@ -7,9 +7,11 @@
 #
 # Usage:
 #   scripts/fuzz.sh [SECONDS]           each target for SECONDS (default 60) in one process (CI)
-#   scripts/fuzz.sh --runs N [WORKERS]  each target until it has run N inputs, shared by WORKERS
-#                                       processes (default 2) that share one corpus (libFuzzer -jobs);
-#                                       the long run is `scripts/fuzz.sh --runs 1000000`
+#   scripts/fuzz.sh --runs N [WORKERS [TARGET...]]
+#                                       each target (default: all) until it has run N inputs, shared
+#                                       by WORKERS processes (default 2) that share one corpus
+#                                       (libFuzzer -jobs); the long run is
+#                                       `scripts/fuzz.sh --runs 1000000`
 #
 # FUZZ_BINARIES=DIR runs the target binaries in DIR instead of building them (a machine without
 # the nightly toolchain, given the binaries `cargo +nightly fuzz build` made elsewhere).
@@ -28,6 +30,9 @@ fi
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 targets=(abi_bytes cpu_mirror compose include)
+if [[ "${1:-}" == "--runs" && $# -gt 3 ]]; then
+    targets=("${@:4}")
+fi
 
 # The WGSL tokens, and every name the library's modules declare, for `compose`.
 dict="$scratch/wgsl.dict"
