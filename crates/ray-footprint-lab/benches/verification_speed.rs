@@ -2,16 +2,17 @@
 //! through the public API as `verify` runs them, at a fixed number of cases per check and
 //! language, with 1, 2, 4, ... up to all processors generating cases (`RunConfig::threads`).
 //! Prints, per thread count, the checks run and not run, the cases, the wall time (compiling
-//! each kernel and making its pipeline included) and the verified evaluations per second.
+//! each kernel and making its pipeline included: half the processors do it for the next checks
+//! while one runs) and the verified evaluations per second.
 //!
 //! `cargo bench -p ray-footprint-lab --bench verification_speed [-- --cases N] [--threads N]`
 //!
 //! `--cases` sets the cases per check and language (100,000, as `verify`); `--threads` measures
 //! one thread count only.
 
-use ray_footprint_lab::checks::all_checks;
+use ray_footprint_lab::checks::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
-use shader_proptest::{Gpu, Language, Outcome, RunConfig};
+use shader_proptest::{Gpu, Outcome, RunConfig};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -61,11 +62,9 @@ struct Pass {
 
 fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
     let mut totals = Pass::default();
-    for (module, check) in all_checks() {
-        for language in Language::ALL {
-            let report = check
-                .run(gpu, &module.shader(language), config)
-                .map_err(|e| format!("{} ({language}): {e}", check.function()))?;
+    let mut error = None;
+    run_all_checks(gpu, config, |_, check, language, result| match result {
+        Ok(report) => {
             totals.cases += report.cases;
             match report.outcome {
                 Outcome::Passed => totals.run += 1,
@@ -77,8 +76,12 @@ fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
                 Outcome::NotRun(_) => totals.not_run += 1,
             }
         }
-    }
-    Ok(totals)
+        Err(e) => {
+            error.get_or_insert(format!("{} ({language}): {e}", check.function()));
+        }
+    })
+    .map_err(|e| e.to_string())?;
+    error.map_or(Ok(totals), Err)
 }
 
 fn main() -> ExitCode {

@@ -9,9 +9,9 @@
 //!
 //! `cargo run --release -p ray-footprint-lab --example verify [-- --cases N] [--batch N]`
 
-use ray_footprint_lab::checks::all_checks;
+use ray_footprint_lab::checks::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
-use shader_proptest::{Gpu, Language, Outcome, RunConfig};
+use shader_proptest::{Gpu, Outcome, RunConfig};
 use std::process::ExitCode;
 
 /// Largest share of a check's cases whose tolerance may be vacuous.
@@ -44,37 +44,37 @@ fn main() -> ExitCode {
     );
     let started = std::time::Instant::now();
     let (mut failed, mut not_run, mut cases) = (0, 0, 0);
-    for (module, check) in all_checks() {
-        for language in Language::ALL {
-            match check.run(&gpu, &module.shader(language), &config) {
-                Ok(report) => {
-                    println!("{:<12} {report}", module.stem());
-                    cases += report.cases;
-                    match &report.outcome {
-                        Outcome::Passed if report.vacuous > MAX_VACUOUS => {
-                            println!(
-                                "    FAIL: {:.2}% of the cases have a vacuous tolerance (at most {:.0}%)",
-                                100.0 * report.vacuous,
-                                100.0 * MAX_VACUOUS
-                            );
-                            failed += 1;
-                        }
-                        Outcome::Passed => {}
-                        Outcome::Failed(_) => failed += 1,
-                        Outcome::NotRun(_) => not_run += 1,
-                    }
-                }
-                Err(error) => {
+    let suite = run_all_checks(&gpu, &config, |module, check, language, result| match result {
+        Ok(report) => {
+            println!("{:<12} {report}", module.stem());
+            cases += report.cases;
+            match &report.outcome {
+                Outcome::Passed if report.vacuous > MAX_VACUOUS => {
                     println!(
-                        "{:<12} {:<38} {:<5} error: {error}",
-                        module.stem(),
-                        check.function(),
-                        language.name()
+                        "    FAIL: {:.2}% of the cases have a vacuous tolerance (at most {:.0}%)",
+                        100.0 * report.vacuous,
+                        100.0 * MAX_VACUOUS
                     );
                     failed += 1;
                 }
+                Outcome::Passed => {}
+                Outcome::Failed(_) => failed += 1,
+                Outcome::NotRun(_) => not_run += 1,
             }
         }
+        Err(error) => {
+            println!(
+                "{:<12} {:<38} {:<5} error: {error}",
+                module.stem(),
+                check.function(),
+                language.name()
+            );
+            failed += 1;
+        }
+    });
+    if let Err(error) = suite {
+        eprintln!("error: {error}");
+        return ExitCode::FAILURE;
     }
     let seconds = started.elapsed().as_secs_f64();
     println!(

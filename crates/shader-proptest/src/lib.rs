@@ -74,9 +74,9 @@ pub use value::{Args, ShaderType, StructType, Value};
 
 #[cfg(feature = "gpu")]
 pub use gpu::{
-    barrier_shader_writes_to_host, echo, evaluate, vulkan, Buffer, Check, ComputeKernel, DeviceRequest,
-    Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, Report, RunConfig, DEVICE_ENV,
-    SEED_ENV,
+    barrier_shader_writes_to_host, echo, evaluate, run_checks, vulkan, Buffer, Check, ComputeKernel,
+    DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, PreparedCheck,
+    Report, RunConfig, DEVICE_ENV, SEED_ENV,
 };
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

@@ -17,7 +17,9 @@ use edge::Edge;
 use proptest::strategy::BoxedStrategy;
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::Interval;
-use shader_proptest::{Args, Check, FunctionCheck, Tolerance, Value};
+use shader_proptest::{
+    run_checks, Args, Check, Error, FunctionCheck, Gpu, Language, Report, RunConfig, Tolerance, Value,
+};
 
 /// One function's checks: the agreement check on its well-conditioned domain, and the same
 /// function, mirror and tolerance on edge cases ([`edge`]).
@@ -99,4 +101,28 @@ pub fn all_checks() -> Vec<(Module, Box<dyn Check>)> {
         .into_iter()
         .map(|entry| (entry.module, entry.check))
         .collect()
+}
+
+/// Runs every agreement check in every language ([`Language::ALL`]), in module order, and hands
+/// each result to `each` with the check's module and language. Half the processors (at least one)
+/// prepare the next checks while one runs ([`shader_proptest::run_checks`]).
+pub fn run_all_checks(
+    gpu: &Gpu,
+    config: &RunConfig,
+    mut each: impl FnMut(Module, &dyn Check, Language, Result<Report, Error>),
+) -> Result<(), Error> {
+    let checks = all_checks();
+    let runs: Vec<(Module, &dyn Check, Language)> = checks
+        .iter()
+        .flat_map(|(module, check)| Language::ALL.map(|language| (*module, check.as_ref(), language)))
+        .collect();
+    let shaders: Vec<(&dyn Check, shader_proptest::Shader)> = runs
+        .iter()
+        .map(|&(module, check, language)| (check, module.shader(language)))
+        .collect();
+    let preparers = (std::thread::available_parallelism().map_or(1, usize::from) / 2).max(1);
+    run_checks(gpu, &shaders, config, preparers, |index, result| {
+        let (module, check, language) = runs[index];
+        each(module, check, language, result);
+    })
 }

@@ -242,10 +242,26 @@ pub trait Check: Send + Sync {
     fn function(&self) -> &str;
     /// The source of the kernel that runs the function of `shader`.
     fn kernel(&self, shader: &Shader) -> String;
-    /// Runs the check on the function of `shader`. `Err`: the harness could not run (device,
-    /// compiler, validation layer); a disagreement is a [`Report`] whose outcome is
-    /// [`Outcome::Failed`].
+    /// Runs the check on the function of `shader`: [`Check::prepare`], then [`Check::run_prepared`].
+    /// `Err`: the harness could not run (device, compiler, validation layer); a disagreement is a
+    /// [`Report`] whose outcome is [`Outcome::Failed`].
     fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error>;
+    /// Everything [`Check::run`] does before the first case, which needs no cases: the layout
+    /// comparison, the kernel's compilation and its pipeline. Thread-safe, so that a suite can
+    /// prepare the next checks while one runs ([`crate::run_checks`]).
+    fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error>;
+    /// Runs the cases of a check that [`Check::prepare`] made ready.
+    fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error>;
+}
+
+/// A check made ready to run on one shader ([`Check::prepare`]): the kernel's source, and its
+/// pipeline, or the outcome that stands for running it (the device lacks a feature the shader
+/// needs; the Rust and shader layouts differ).
+pub struct PreparedCheck<'g> {
+    language: Language,
+    kernel: String,
+    pipeline: Result<ComputeKernel<'g>, Outcome>,
+    elapsed: Duration,
 }
 
 /// One shader function, its mirror, the inputs to try and the tolerance.
@@ -454,11 +470,44 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
 
     /// Runs the check on the function of `shader` (see [`Check::run`]).
     pub fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
+        let prepared = self.prepare(gpu, shader)?;
+        self.run_prepared(prepared, config)
+    }
+
+    /// Compares the layouts and compiles the kernel into a pipeline (see [`Check::prepare`]).
+    pub fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error> {
+        let started = Instant::now();
+        let kernel = self.kernel(shader);
+        let pipeline = if let Some(reason) = missing_feature(gpu, shader) {
+            Err(Outcome::NotRun(reason))
+        } else if let Err(error) = check_layouts(shader, A::TYPES, R::TYPE) {
+            Err(Outcome::Failed(Box::new(Failure {
+                reason: format!("the Rust and shader layouts differ: {error}"),
+                input: String::new(),
+                mirror: String::new(),
+                shader: String::new(),
+                shrink_steps: 0,
+                kernel: kernel.clone(),
+            })))
+        } else {
+            Ok(ComputeKernel::new(gpu, &compile(shader, &kernel)?, 0)?)
+        };
+        Ok(PreparedCheck {
+            language: shader.language(),
+            kernel,
+            pipeline,
+            elapsed: started.elapsed(),
+        })
+    }
+
+    /// Runs the cases on a prepared check (see [`Check::run_prepared`]). The report's time
+    /// includes the preparation's.
+    pub fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error> {
         let started = Instant::now();
         let seed = config.validate()?;
         let mut report = Report {
             function: self.function.clone(),
-            language: shader.language(),
+            language: prepared.language,
             cases: 0,
             max_error: 0.0,
             max_ratio: 0.0,
@@ -468,37 +517,27 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             elapsed: Duration::ZERO,
             outcome: Outcome::Passed,
         };
-        let kernel = self.kernel(shader);
-        if let Some(reason) = missing_feature(gpu, shader) {
-            report.outcome = Outcome::NotRun(reason);
-        } else if let Err(error) = check_layouts(shader, A::TYPES, R::TYPE) {
-            report.outcome = Outcome::Failed(Box::new(Failure {
-                reason: format!("the Rust and shader layouts differ: {error}"),
-                input: String::new(),
-                mirror: String::new(),
-                shader: String::new(),
-                shrink_steps: 0,
-                kernel,
-            }));
-        } else {
-            let pipeline = ComputeKernel::new(gpu, &compile(shader, &kernel)?, 0)?;
-            let mut stats = Stats::default();
-            let mismatch = self.run_batches(&pipeline, config, seed, &mut stats)?;
-            report.cases = stats.cases;
-            report.max_error = stats.max_error;
-            report.max_ratio = stats.max_ratio;
-            let share = |count: usize| count as f64 / stats.cases.max(1) as f64;
-            report.vacuous = share(stats.vacuous);
-            report.most_vacuous_component = (0..stats.vacuous_by_component.len())
-                .max_by_key(|&component| stats.vacuous_by_component[component])
-                .filter(|&component| stats.vacuous_by_component[component] > 0)
-                .map(|component| (component, share(stats.vacuous_by_component[component])));
-            if let Some(mismatch) = mismatch {
-                report.outcome =
-                    Outcome::Failed(Box::new(self.shrink(&pipeline, config, seed, mismatch, kernel)?));
+        match prepared.pipeline {
+            Err(outcome) => report.outcome = outcome,
+            Ok(pipeline) => {
+                let mut stats = Stats::default();
+                let mismatch = self.run_batches(&pipeline, config, seed, &mut stats)?;
+                report.cases = stats.cases;
+                report.max_error = stats.max_error;
+                report.max_ratio = stats.max_ratio;
+                let share = |count: usize| count as f64 / stats.cases.max(1) as f64;
+                report.vacuous = share(stats.vacuous);
+                report.most_vacuous_component = (0..stats.vacuous_by_component.len())
+                    .max_by_key(|&component| stats.vacuous_by_component[component])
+                    .filter(|&component| stats.vacuous_by_component[component] > 0)
+                    .map(|component| (component, share(stats.vacuous_by_component[component])));
+                if let Some(mismatch) = mismatch {
+                    let failure = self.shrink(&pipeline, config, seed, mismatch, prepared.kernel)?;
+                    report.outcome = Outcome::Failed(Box::new(failure));
+                }
             }
         }
-        report.elapsed = started.elapsed();
+        report.elapsed = prepared.elapsed + started.elapsed();
         Ok(report)
     }
 
@@ -526,7 +565,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
                         break;
                     }
                     let size = batch.min(total - index * batch);
-                    if sender.send(self.prepare(seed, index, size)).is_err() {
+                    if sender.send(self.prepare_batch(seed, index, size)).is_err() {
                         break;
                     }
                 });
@@ -561,7 +600,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     }
 
     /// Generates batch `index` (`size` cases) and runs the mirror and the tolerance on it.
-    fn prepare(&self, seed: u64, index: usize, size: usize) -> Result<Prepared<A>, Error> {
+    fn prepare_batch(&self, seed: u64, index: usize, size: usize) -> Result<Prepared<A>, Error> {
         let mut runner = batch_runner(seed, index);
         let mut prepared = Prepared {
             index,
@@ -700,6 +739,14 @@ impl<A: Args, R: Value> Check for FunctionCheck<A, R> {
 
     fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
         FunctionCheck::run(self, gpu, shader, config)
+    }
+
+    fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error> {
+        FunctionCheck::prepare(self, gpu, shader)
+    }
+
+    fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error> {
+        FunctionCheck::run_prepared(self, prepared, config)
     }
 }
 

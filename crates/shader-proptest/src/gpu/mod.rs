@@ -6,9 +6,13 @@ mod compute;
 mod device;
 mod echo;
 mod resources;
+mod suite;
 
-pub use check::{evaluate, Check, Failure, FunctionCheck, Outcome, Report, RunConfig, SEED_ENV};
+pub use check::{
+    evaluate, Check, Failure, FunctionCheck, Outcome, PreparedCheck, Report, RunConfig, SEED_ENV,
+};
 pub use compute::ComputeKernel;
 pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
 pub use echo::echo;
 pub use resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
+pub use suite::run_checks;
