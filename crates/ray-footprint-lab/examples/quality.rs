@@ -12,6 +12,7 @@
 //! [--samples N] [--frames K] [--scene NAME] [--out DIR] [--rebuild] [--convergence]`
 
 use indicatif::{ProgressBar, ProgressStyle};
+use ray_footprint_lab::cli::options_or_exit;
 use ray_footprint_lab::quality::{self, report, truth::TruthSettings, LabScene, LabSettings, Progress};
 use ray_footprint_lab::rt::{open_device, Mode};
 use std::path::PathBuf;
@@ -137,17 +138,7 @@ fn bar() -> Bar {
 }
 
 fn main() -> ExitCode {
-    let options = match parse_args(std::env::args().skip(1)) {
-        Ok(options) => options,
-        Err(message) if message.is_empty() => {
-            println!("{}", usage());
-            return ExitCode::SUCCESS;
-        }
-        Err(message) => {
-            eprintln!("error: {message}\n{}", usage());
-            return ExitCode::from(2);
-        }
-    };
+    let options = options_or_exit(parse_args(std::env::args().skip(1)), &usage());
     match run(&options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {

@@ -1,5 +1,5 @@
-//! What the lab's command-line programs (the `verify` and `gallery` examples and the benches)
-//! share: answering `--help`, reporting a bad option, and reading a positive count.
+//! What the lab's command-line programs (the `verify`, `gallery` and `quality` examples and the
+//! benches) share: answering `--help`, reporting a bad option, and reading a positive count.
 
 use std::process::exit;
 
