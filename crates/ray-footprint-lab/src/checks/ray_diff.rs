@@ -403,22 +403,19 @@ fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I
         ..k
     }
     .sqrt();
-    let transmitted_cos = if cosine.hi <= 0.0 {
-        -root
-    } else if cosine.lo > 0.0 {
-        root
-    } else {
-        root.hull(-root)
+    // A magnitude with the sign of `cosine`: both signs where `cosine` straddles 0.
+    let with_cosine_sign = |magnitude: I| {
+        if cosine.hi <= 0.0 {
+            -magnitude
+        } else if cosine.lo > 0.0 {
+            magnitude
+        } else {
+            magnitude.hull(-magnitude)
+        }
     };
+    let transmitted_cos = with_cosine_sign(root);
     let mu = eta * cosine - transmitted_cos;
-    let clamped_root = root.max_c(f64::from(DIFF_MIN_COS));
-    let clamped_cos = if cosine.hi <= 0.0 {
-        -clamped_root
-    } else if cosine.lo > 0.0 {
-        clamped_root
-    } else {
-        clamped_root.hull(-clamped_root)
-    };
+    let clamped_cos = with_cosine_sign(root.max_c(f64::from(DIFF_MIN_COS)));
     let rate = eta - (eta * eta * cosine).div_away(clamped_cos, f64::from(DIFF_MIN_COS));
     let refracted = |dd: Vec3, dnormal: Vec3| {
         let (dd, dnormal) = (v3(dd), v3(dnormal));

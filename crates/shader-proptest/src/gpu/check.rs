@@ -832,22 +832,28 @@ fn judge(finite_input: bool, got: &[f32], expected: &[f32], bounds: &[f32]) -> R
     }
     let (mut max_error, mut max_ratio) = (0.0f32, 0.0f32);
     for (index, ((&got, &expected), &bound)) in got.iter().zip(expected).zip(bounds).enumerate() {
-        let error = if got == expected {
-            0.0
-        } else {
-            (got - expected).abs()
-        };
-        if error.is_nan() || error > bound {
+        let Some((error, ratio)) = within_bound(finite_input, got, expected, bound) else {
+            let error = (got - expected).abs();
             return Err(format!(
                 "component {index} differs by {error:e} (tolerance {bound:e})"
             ));
-        }
+        };
         max_error = max_error.max(error);
-        if bound > 0.0 {
-            max_ratio = max_ratio.max(error / bound);
-        }
+        max_ratio = max_ratio.max(ratio);
     }
     Ok((max_error, max_ratio))
+}
+
+/// `got`'s error from `expected` and its share of `bound` (0 for a bound of 0), where the error
+/// is within the bound and `expected` is finite (where the inputs are).
+fn within_bound(finite_input: bool, got: f32, expected: f32, bound: f32) -> Option<(f32, f32)> {
+    let error = if got == expected {
+        0.0
+    } else {
+        (got - expected).abs()
+    };
+    let within = (expected.is_finite() || !finite_input) && error <= bound;
+    within.then_some((error, if bound > 0.0 { error / bound } else { 0.0 }))
 }
 
 /// Compares one case's components with several allowed results (components and bounds): each
@@ -863,16 +869,9 @@ fn judge_each_component(
     }
     let (mut max_error, mut max_ratio) = (0.0f32, 0.0f32);
     for (index, &got) in got.iter().enumerate() {
-        let matches = allowed.iter().filter_map(|(expected, bounds)| {
-            let (expected, bound) = (expected[index], bounds[index]);
-            let error = if got == expected {
-                0.0
-            } else {
-                (got - expected).abs()
-            };
-            let within = (expected.is_finite() || !finite_input) && error <= bound;
-            within.then_some((error, if bound > 0.0 { error / bound } else { 0.0 }))
-        });
+        let matches = allowed
+            .iter()
+            .filter_map(|(expected, bounds)| within_bound(finite_input, got, expected[index], bounds[index]));
         let Some((error, ratio)) = matches.min_by(|a, b| a.1.total_cmp(&b.1)) else {
             return Err(format!("component {index} matches no allowed result"));
         };
