@@ -187,6 +187,8 @@ pub struct TriplanarGradients {
     pub xy: Derivatives2,
 }
 
+// ---- Camera rays and their differentials (RTG Eq. 8-11; wireframe tutorial) ----
+
 /// Half extents of the image plane at distance 1 from a pinhole (RTG Eq. 9): `(a * f, f)` with
 /// `f = tan(fov_y / 2)` and aspect `a = W / H`; `fov_y` is clamped to `[0, DIFF_MAX_FOV_Y]`, W and H
 /// to `>= 1`.
@@ -308,6 +310,8 @@ pub fn pixel_directions(
     }
 }
 
+// ---- Transfer to a hit (Igehy) ----
+
 /// `value`, or `min_magnitude` with the sign of `value` (+ for 0) when `|value| < min_magnitude`.
 fn clamp_away_from_zero(value: f32, min_magnitude: f32) -> f32 {
     if value.abs() < min_magnitude {
@@ -368,6 +372,8 @@ pub fn transfer(diff: RayDiff, direction: Vec3, t: f32, normal: Vec3) -> RayDiff
         diff.d_direction_dy,
     )
 }
+
+// ---- Barycentric, texture and LOD derivatives (RTG Eq. 12-24) ----
 
 /// Barycentric differentials of a hit, optimized form (RTG Eq. 12-19): with `e1 = p1 - p0`,
 /// `e2 = p2 - p0`, `k = dot(cross(e1, e2), d)`, `q = dO/dx + t dD/dx`, `r = dO/dy + t dD/dy`:
@@ -472,6 +478,8 @@ pub fn sample_grad_gradients(uv_gradients: Derivatives2, tex_grad_scale: f32) ->
     let scale = tex_grad_scale.max(0.0);
     Derivatives2::new(uv_gradients.dx * scale, uv_gradients.dy * scale)
 }
+
+// ---- Reflection and refraction (Igehy) ----
 
 /// Differentials of the unit shading normal interpolated from vertex normals (Igehy):
 /// `n = (1 - u - v) n0 + u n1 + v n2`, `dn/dx = du/dx (n1 - n0) + dv/dx (n2 - n0)` and
@@ -589,6 +597,8 @@ pub fn refract_ray_diff(
     }
 }
 
+// ---- G-buffer differentials (RTG Sec. 20.3.3) ----
+
 /// Whether the G-buffer differential uses the backward (left / upper) neighbour (RTG Sec. 20.3.3):
 /// when `|t(+1) - t(0)| > depth_epsilon` and `|t(-1) - t(0)| < |t(+1) - t(0)|`.
 fn gbuffer_use_backward(
@@ -666,6 +676,8 @@ pub fn tangent_plane_offsets(rd: Vec3, rdx: Vec3, rdy: Vec3, t: f32, normal: Vec
     )
 }
 
+// ---- Planar and triplanar mapping (Quilez) ----
+
 /// Texture gradients of the planar mapping `uv = p.xz * scale` (Quilez): `duv/dx = dp/dx.xz * scale`,
 /// same for y.
 pub fn planar_mapping_gradients(d_position: Derivatives3, scale: Vec2) -> Derivatives2 {
@@ -696,6 +708,8 @@ pub fn triplanar_gradients(d_position: Derivatives3, scale: f32) -> TriplanarGra
         xy: Derivatives2::new(dx.xy(), dy.xy()),
     }
 }
+
+// ---- Re-intersection of the neighbour rays (RTG Eq. 13) ----
 
 /// `|v|` measured as `m * |v / m|` with `m` the largest `|component|` (at least `DIFF_MIN_MAGNITUDE`),
 /// so that squaring cannot overflow.
@@ -793,6 +807,8 @@ pub fn uv_gradients_from_offsets(offsets: Derivatives3, uv0: Vec2, uv1: Vec2, uv
         offsets.dy.x * uv0 + offsets.dy.y * uv1 + offsets.dy.z * uv2,
     )
 }
+
+// ---- Ray cones and ray differentials together ----
 
 /// Closed-form barycentric deltas from a ray cone, without re-intersection (as in nvpro's glTF
 /// renderer): `delta_i = |world_footprint| * |edge opposite vertex i| / |cross(e1, e2)|`, i.e. the

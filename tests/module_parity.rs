@@ -1,16 +1,28 @@
 //! Each concept is one WGSL file, one GLSL file, one Slang file and one Rust module with the same
 //! functions and constants in the same order: the shader names are the Rust names prefixed `rf_` /
-//! `RF_`. The three shader files also declare the same structs in the same order.
+//! `RF_`. The three shader files also declare the same structs in the same order. Section banners
+//! (`// ---- Title ----` lines) count as names, so each file has the same sections around the same
+//! functions.
 
 use ray_footprint::shaders::Module;
 
-/// Names declared at the top level, in order: functions and constants, without prefixes.
+/// A section banner line, `// ---- Title ----`, as it is.
+fn banner(line: &str) -> Option<String> {
+    (line.starts_with("// ---- ") && line.ends_with(" ----")).then(|| line.to_string())
+}
+
+/// Names declared at the top level, in order: functions and constants, without prefixes, and
+/// section banners.
 fn shader_names(source: &str, language: &str) -> Vec<String> {
     let mut names = Vec::new();
-    for line in source
-        .lines()
-        .filter(|line| !line.starts_with(' ') && !line.starts_with("//"))
-    {
+    for line in source.lines().filter(|line| !line.starts_with(' ')) {
+        if let Some(banner) = banner(line) {
+            names.push(banner);
+            continue;
+        }
+        if line.starts_with("//") {
+            continue;
+        }
         let words: Vec<&str> = line
             .split(|c: char| c.is_whitespace() || c == '(' || c == ':')
             .collect();
@@ -47,10 +59,14 @@ fn struct_names(source: &str) -> Vec<&str> {
         .collect()
 }
 
-/// Functions (public or not) and public constants of a Rust module, in order.
+/// Functions (public or not), public constants and section banners of a Rust module, in order.
 fn rust_names(source: &str) -> Vec<String> {
     let mut names = Vec::new();
     for line in source.lines() {
+        if let Some(banner) = banner(line) {
+            names.push(banner);
+            continue;
+        }
         let words: Vec<&str> = line
             .split(|c: char| c.is_whitespace() || c == '(' || c == ':' || c == '<')
             .collect();

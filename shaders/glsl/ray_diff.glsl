@@ -115,6 +115,8 @@ struct RfTriplanarGradients {
 };
 // end of generated code
 
+// ---- Camera rays and their differentials (RTG Eq. 8-11; wireframe tutorial) ----
+
 // Half extents of the image plane at distance 1 (RTG Eq. 9): (a f, f), f = tan(fov_y / 2), a = W / H.
 vec2 rf_eye_ray_extent(vec2 image_size, float fov_y) {
     vec2 size = max(image_size, vec2(1.0));
@@ -192,6 +194,8 @@ RfNeighbourDirections rf_pixel_directions(vec2 pixel, vec2 image_size, mat4 view
         rf_matrix_ray_direction(vec2(ndc.x, next.y), view_inv, proj_inv));
 }
 
+// ---- Transfer to a hit (Igehy) ----
+
 // value, or min_magnitude with the sign of value (+ for 0) when |value| < min_magnitude. mix with a
 // bool selector is OpSelect: no branch.
 float rf_clamp_away_from_zero(float value, float min_magnitude) {
@@ -217,6 +221,8 @@ RfRayDiff rf_transfer(RfRayDiff diff, vec3 direction, float t, vec3 normal) {
         diff.d_direction_dx, 0.0,
         diff.d_direction_dy, 0.0);
 }
+
+// ---- Barycentric, texture and LOD derivatives (RTG Eq. 12-24) ----
 
 // Barycentric differentials, optimized (RTG Eq. 12-19): du/dx = dot(cross(e2, d), q) / k,
 // dv/dx = dot(cross(d, e1), q) / k, k = dot(cross(e1, e2), d) clamped away from 0, results clamped.
@@ -284,6 +290,8 @@ RfDerivatives2 rf_sample_grad_gradients(RfDerivatives2 uv_gradients, float tex_g
     return RfDerivatives2(uv_gradients.dx * scale, uv_gradients.dy * scale);
 }
 
+// ---- Reflection and refraction (Igehy) ----
+
 // Differentials of the interpolated unit normal (Igehy): n = (1 - u - v) n0 + u n1 + v n2,
 // dn/dx = du/dx (n1 - n0) + dv/dx (n2 - n0), dN/dx = normalized derivative of n along dn/dx.
 RfDerivatives3 rf_normal_derivatives(vec3 n0, vec3 n1, vec3 n2, vec2 barycentrics,
@@ -345,6 +353,8 @@ RfRefractedRayDiff rf_refract_ray_diff(RfRayDiff diff, vec3 direction, vec3 norm
     return RfRefractedRayDiff(leaving, total_internal_reflection);
 }
 
+// ---- G-buffer differentials (RTG Sec. 20.3.3) ----
+
 // G-buffer neighbour choice (RTG Sec. 20.3.3): the backward neighbour when the forward distance step
 // exceeds depth_epsilon and the backward step is smaller.
 bool rf_gbuffer_use_backward(RfGBufferSample center, RfGBufferSample forward, RfGBufferSample backward,
@@ -402,6 +412,8 @@ RfDerivatives3 rf_tangent_plane_offsets(vec3 rd, vec3 rdx, vec3 rdy, float t, ve
     return RfDerivatives3(rf_tangent_plane_offset(rd, rdx, t, normal), rf_tangent_plane_offset(rd, rdy, t, normal));
 }
 
+// ---- Planar and triplanar mapping (Quilez) ----
+
 // Planar mapping uv = p.xz * scale (Quilez): duv/dx = dp/dx.xz * scale.
 RfDerivatives2 rf_planar_mapping_gradients(RfDerivatives3 d_position, vec2 scale) {
     return RfDerivatives2(d_position.dx.xz * scale, d_position.dy.xz * scale);
@@ -425,6 +437,8 @@ RfTriplanarGradients rf_triplanar_gradients(RfDerivatives3 d_position, float sca
         RfDerivatives2(dx.zx, dy.zx),
         RfDerivatives2(dx.xy, dy.xy));
 }
+
+// ---- Re-intersection of the neighbour rays (RTG Eq. 13) ----
 
 // |v| as m |v / m|, m the largest |component| (>= RF_DIFF_MIN_MAGNITUDE), so squaring cannot overflow.
 float rf_scaled_length(vec3 v) {
@@ -478,6 +492,8 @@ RfDerivatives2 rf_uv_gradients_from_offsets(RfDerivatives3 offsets, vec2 uv0, ve
         offsets.dx.x * uv0 + offsets.dx.y * uv1 + offsets.dx.z * uv2,
         offsets.dy.x * uv0 + offsets.dy.y * uv1 + offsets.dy.z * uv2);
 }
+
+// ---- Ray cones and ray differentials together ----
 
 // Closed-form barycentric deltas from a ray cone: |footprint| |edge opposite vertex i| / |cross(e1, e2)|,
 // |cross| clamped to >= RF_DIFF_MIN_MAGNITUDE, deltas to <= RF_DIFF_MAX_VALUE.

@@ -111,6 +111,8 @@ struct RfTriplanarGradients {
 }
 // end of generated code
 
+// ---- Camera rays and their differentials (RTG Eq. 8-11; wireframe tutorial) ----
+
 // Half extents of the image plane at distance 1 (RTG Eq. 9): (a f, f), f = tan(fov_y / 2), a = W / H.
 fn rf_eye_ray_extent(image_size: vec2<f32>, fov_y: f32) -> vec2<f32> {
     let size = max(image_size, vec2<f32>(1.0));
@@ -200,6 +202,8 @@ fn rf_pixel_directions(
     );
 }
 
+// ---- Transfer to a hit (Igehy) ----
+
 // value, or min_magnitude with the sign of value (+ for 0) when |value| < min_magnitude.
 fn rf_clamp_away_from_zero(value: f32, min_magnitude: f32) -> f32 {
     return select(value, select(-min_magnitude, min_magnitude, value >= 0.0), abs(value) < min_magnitude);
@@ -225,6 +229,8 @@ fn rf_transfer(diff: RfRayDiff, direction: vec3<f32>, t: f32, normal: vec3<f32>)
         diff.d_direction_dy, 0.0,
     );
 }
+
+// ---- Barycentric, texture and LOD derivatives (RTG Eq. 12-24) ----
 
 // Barycentric differentials, optimized (RTG Eq. 12-19): du/dx = dot(cross(e2, d), q) / k,
 // dv/dx = dot(cross(d, e1), q) / k, k = dot(cross(e1, e2), d) clamped away from 0, results clamped.
@@ -301,6 +307,8 @@ fn rf_sample_grad_gradients(uv_gradients: RfDerivatives2, tex_grad_scale: f32) -
     return RfDerivatives2(uv_gradients.dx * scale, uv_gradients.dy * scale);
 }
 
+// ---- Reflection and refraction (Igehy) ----
+
 // Differentials of the interpolated unit normal (Igehy): n = (1 - u - v) n0 + u n1 + v n2,
 // dn/dx = du/dx (n1 - n0) + dv/dx (n2 - n0), dN/dx = normalized derivative of n along dn/dx.
 fn rf_normal_derivatives(
@@ -372,6 +380,8 @@ fn rf_refract_ray_diff(
     return RfRefractedRayDiff(leaving, total_internal_reflection);
 }
 
+// ---- G-buffer differentials (RTG Sec. 20.3.3) ----
+
 // G-buffer neighbour choice (RTG Sec. 20.3.3): the backward neighbour when the forward distance step
 // exceeds depth_epsilon and the backward step is smaller.
 fn rf_gbuffer_use_backward(
@@ -435,6 +445,8 @@ fn rf_tangent_plane_offsets(
     return RfDerivatives3(rf_tangent_plane_offset(rd, rdx, t, normal), rf_tangent_plane_offset(rd, rdy, t, normal));
 }
 
+// ---- Planar and triplanar mapping (Quilez) ----
+
 // Planar mapping uv = p.xz * scale (Quilez): duv/dx = dp/dx.xz * scale.
 fn rf_planar_mapping_gradients(d_position: RfDerivatives3, scale: vec2<f32>) -> RfDerivatives2 {
     return RfDerivatives2(d_position.dx.xz * scale, d_position.dy.xz * scale);
@@ -459,6 +471,8 @@ fn rf_triplanar_gradients(d_position: RfDerivatives3, scale: f32) -> RfTriplanar
         RfDerivatives2(dx.xy, dy.xy),
     );
 }
+
+// ---- Re-intersection of the neighbour rays (RTG Eq. 13) ----
 
 // |v| as m |v / m|, m the largest |component| (>= RF_DIFF_MIN_MAGNITUDE), so squaring cannot overflow.
 fn rf_scaled_length(v: vec3<f32>) -> f32 {
@@ -523,6 +537,8 @@ fn rf_uv_gradients_from_offsets(
         offsets.dy.x * uv0 + offsets.dy.y * uv1 + offsets.dy.z * uv2,
     );
 }
+
+// ---- Ray cones and ray differentials together ----
 
 // Closed-form barycentric deltas from a ray cone: |footprint| |edge opposite vertex i| / |cross(e1, e2)|,
 // |cross| clamped to >= RF_DIFF_MIN_MAGNITUDE, deltas to <= RF_DIFF_MAX_VALUE.
