@@ -1,6 +1,9 @@
-//! Build script: exports the GLSL and Slang include directories to dependents and, with the
-//! `validate` feature, parses and validates every WGSL and GLSL module with naga so that a broken
-//! module fails `cargo build` with naga's message pointing at the file and line.
+//! Build script. Always: exports the GLSL and Slang include directories to dependents' build
+//! scripts. With the `validate` feature:
+//! - parses and validates every WGSL and GLSL module with naga, so that a broken module fails
+//!   `cargo build` with naga's message pointing at the file and line;
+//! - writes `layout_asserts.rs` (included by `src/abi.rs`): compile-time assertions that each shared
+//!   Rust struct has the size, alignment and field offsets of naga's layout of its WGSL declaration.
 
 use std::path::PathBuf;
 
