@@ -23,6 +23,7 @@ pub mod naga_oil;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
+pub mod registry;
 pub mod shaders;
 #[cfg(feature = "shader-proptest")]
 mod values;

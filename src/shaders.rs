@@ -77,6 +77,13 @@ macro_rules! modules {
                     $(Module::$variant => $slang,)+
                 }
             }
+
+            /// The source of the Rust mirror module `src/<stem>.rs`.
+            fn mirror_source(self) -> &'static str {
+                match self {
+                    $(Module::$variant => include_str!(concat!($stem, ".rs")),)+
+                }
+            }
         }
     };
 }
@@ -93,6 +100,17 @@ modules! {
 }
 
 impl Module {
+    /// The module's functions, in the module's order: the public functions of the Rust mirror
+    /// (each shader module declares them, prefixed `rf_`, in the same order, along with helper
+    /// functions the Rust mirror keeps private).
+    pub fn functions(self) -> Vec<&'static str> {
+        self.mirror_source()
+            .lines()
+            .filter_map(|line| line.strip_prefix("pub fn "))
+            .filter_map(|rest| rest.split(['(', '<']).next())
+            .collect()
+    }
+
     /// Whether the module uses 64-bit floats (naga `FLOAT64`, Vulkan `shaderFloat64`).
     pub fn needs_f64(self) -> bool {
         self.stem().ends_with("_f64")

@@ -22,6 +22,7 @@ use crate::ray_diff::{
     TriplanarGradients,
 };
 use crate::ray_diff_f64::{self as rd64, BarycentricOffsets};
+use crate::registry::{registry, Registered};
 use crate::shaders::Module;
 use crate::wireframe::{self as wf, WireframeSettings, WireframeSettingsIo};
 use glam::{Mat4, Quat, Vec2, Vec3, Vec3Swizzles};
@@ -306,15 +307,12 @@ floats! {
     WireframeSettings => |v| [v.thickness_var, v.thickness, v.smoothing, v.stipple_length];
 }
 
-/// One public mirror function, evaluated on drawn arguments.
-pub struct MirrorFunction {
-    /// The module.
-    pub module: Module,
-    /// The function's name in the Rust module.
-    pub name: &'static str,
-    /// Evaluates the function; returns its result's floats when one of them is not finite.
-    run: fn(&mut Draw) -> Option<Vec<f32>>,
-}
+/// Evaluates one public mirror function on drawn arguments; returns its result's floats when one
+/// of them is not finite.
+pub type Run = fn(&mut Draw) -> Option<Vec<f32>>;
+
+/// One public mirror function and how to evaluate it.
+pub type MirrorFunction = Registered<Run>;
 
 /// The `cpu_mirror` target.
 pub fn cpu_mirror(data: &[u8]) -> Result<(), String> {
@@ -328,7 +326,7 @@ pub fn cpu_mirror(data: &[u8]) -> Result<(), String> {
 
 fn evaluate(function: &MirrorFunction, data: &[u8], mode: Mode) -> Result<(), String> {
     let mut draw = Draw::new(data, mode);
-    let non_finite = (function.run)(&mut draw);
+    let non_finite = (function.item)(&mut draw);
     let promised = match mode {
         Mode::Domain => true,
         Mode::Raw => draw.finite && function.module == Module::Wireframe,
@@ -346,7 +344,7 @@ fn evaluate(function: &MirrorFunction, data: &[u8], mode: Mode) -> Result<(), St
         Err(format!(
             "{}::{} ({mode:?} inputs): {}",
             function.module.stem(),
-            function.name,
+            function.function,
             problems.join("; ")
         ))
     }
@@ -355,11 +353,7 @@ fn evaluate(function: &MirrorFunction, data: &[u8], mode: Mode) -> Result<(), St
 /// Declares a [`MirrorFunction`]: `f!(Module, name, |d| expression)`.
 macro_rules! f {
     ($module:ident, $name:ident, |$d:ident| $body:expr) => {
-        MirrorFunction {
-            module: Module::$module,
-            name: stringify!($name),
-            run: |$d| non_finite(&$body),
-        }
+        MirrorFunction::new(Module::$module, stringify!($name), |$d| non_finite(&$body))
     };
 }
 
@@ -398,17 +392,17 @@ const F64_MAX: f32 = rd64::F64_MAX_VALUE as f32;
 /// Every public function of the mirror modules, in module order (built once).
 pub fn functions() -> &'static [MirrorFunction] {
     static FUNCTIONS: std::sync::OnceLock<Vec<MirrorFunction>> = std::sync::OnceLock::new();
-    FUNCTIONS.get_or_init(|| {
-        [
-            ray_cone_functions(),
-            ray_diff_functions(),
-            ray_diff_f64_functions(),
-            wireframe_functions(),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
-    })
+    FUNCTIONS.get_or_init(|| registry(module_functions))
+}
+
+/// The public functions of `module`, in the module's order.
+fn module_functions(module: Module) -> Vec<MirrorFunction> {
+    match module {
+        Module::RayCone => ray_cone_functions(),
+        Module::RayDiff => ray_diff_functions(),
+        Module::RayDiffF64 => ray_diff_f64_functions(),
+        Module::Wireframe => wireframe_functions(),
+    }
 }
 
 fn ray_cone_functions() -> Vec<MirrorFunction> {

@@ -196,7 +196,7 @@ fn main() -> ExitCode {
     );
     let checks: Vec<_> = all_checks()
         .into_iter()
-        .filter(|(module, check)| filter.accepts(*module, check.function()))
+        .filter(|check| filter.accepts(check.module, check.item.function()))
         .collect();
     if checks.is_empty() {
         eprintln!("error: no function matches");
@@ -216,9 +216,9 @@ fn main() -> ExitCode {
     );
     print_header();
     let mut failed = 0;
-    for (module, check) in &checks {
-        let counts = Language::ALL.map(|language| measure(*module, check.as_ref(), language));
-        failed += usize::from(!print_row(*module, check.function(), counts));
+    for check in &checks {
+        let counts = Language::ALL.map(|language| measure(check.module, check.item.as_ref(), language));
+        failed += usize::from(!print_row(check.module, check.item.function(), counts));
     }
     if filter.accepts(Module::Wireframe, "rf_process_wireframe") {
         println!(

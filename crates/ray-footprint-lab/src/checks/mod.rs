@@ -15,6 +15,7 @@ pub mod wireframe;
 
 use edge::Edge;
 use proptest::strategy::BoxedStrategy;
+use ray_footprint::registry::{registry, Registered};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::Interval;
 use shader_proptest::{
@@ -24,8 +25,6 @@ use shader_proptest::{
 /// One function's checks: the agreement check on its well-conditioned domain, and the same
 /// function, mirror and tolerance on edge cases ([`edge`]).
 pub struct Entry {
-    /// The module declaring the function.
-    pub module: Module,
     /// The agreement check.
     pub check: Box<dyn Check>,
     /// The edge-case check.
@@ -33,19 +32,35 @@ pub struct Entry {
 }
 
 impl Entry {
-    /// The entry of `check`, a function of `module`, with its edge variant.
-    pub fn new<A: Args + Edge, R: Value>(module: Module, check: FunctionCheck<A, R>) -> Entry {
+    /// The entry of `check` with its edge variant.
+    pub fn new<A: Args + Edge, R: Value>(check: FunctionCheck<A, R>) -> Entry {
         let edge = Box::new(check.with_perturbation(|mut args: A, rng| {
             args.perturb(rng);
             args
         }));
         Entry {
-            module,
             check: Box::new(check),
             edge,
         }
     }
 }
+
+/// The entries of a module's functions: `registered_checks!(Module::RayCone, [width_at, propagate])`
+/// registers the check that `width_at()` builds as function `width_at` of `Module::RayCone`, and so
+/// on, in the order given (the module's function order), so that a check and the function it is
+/// registered for cannot carry different names.
+macro_rules! registered_checks {
+    ($module:path, [$($function:ident),+ $(,)?]) => {
+        vec![$(
+            ray_footprint::registry::Registered::new(
+                $module,
+                stringify!($function),
+                $crate::checks::Entry::new($function()),
+            ),
+        )+]
+    };
+}
+use registered_checks;
 
 /// A check of `rf_<function>` whose tolerance is `bound(arguments, component, expected)`.
 pub fn per_component<A: Args, R: Value>(
@@ -76,7 +91,7 @@ pub fn enclosed<A: Args, R: Value>(
 }
 
 /// Every function's entry in one module, in the module's function order.
-pub fn entries(module: Module) -> Vec<Entry> {
+pub fn entries(module: Module) -> Vec<Registered<Entry>> {
     match module {
         Module::RayCone => ray_cone::entries(),
         Module::RayDiff => ray_diff::entries(),
@@ -86,20 +101,23 @@ pub fn entries(module: Module) -> Vec<Entry> {
 }
 
 /// Every function's entry, in module order.
-pub fn all_entries() -> Vec<Entry> {
-    Module::ALL.iter().flat_map(|&module| entries(module)).collect()
+pub fn all_entries() -> Vec<Registered<Entry>> {
+    registry(entries)
 }
 
 /// The agreement checks of one module, in the module's function order.
 pub fn checks(module: Module) -> Vec<Box<dyn Check>> {
-    entries(module).into_iter().map(|entry| entry.check).collect()
+    entries(module)
+        .into_iter()
+        .map(|entry| entry.item.check)
+        .collect()
 }
 
-/// Every agreement check with its module, in module order.
-pub fn all_checks() -> Vec<(Module, Box<dyn Check>)> {
+/// Every agreement check, registered for its function, in module order.
+pub fn all_checks() -> Vec<Registered<Box<dyn Check>>> {
     all_entries()
         .into_iter()
-        .map(|entry| (entry.module, entry.check))
+        .map(|entry| entry.map(|entry| entry.check))
         .collect()
 }
 
@@ -114,7 +132,7 @@ pub fn run_all_checks(
     let checks = all_checks();
     let runs: Vec<(Module, &dyn Check, Language)> = checks
         .iter()
-        .flat_map(|(module, check)| Language::ALL.map(|language| (*module, check.as_ref(), language)))
+        .flat_map(|check| Language::ALL.map(|language| (check.module, check.item.as_ref(), language)))
         .collect();
     let shaders: Vec<(&dyn Check, shader_proptest::Shader)> = runs
         .iter()

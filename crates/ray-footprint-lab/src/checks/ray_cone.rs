@@ -8,14 +8,15 @@ use super::strategy::{
     angle, distance, fov_y, magnitude, normal_and_direction, perspective_proj_inv, pixels, scalar,
     small_vec3, triangle, uv_triangle, vec3,
 };
-use super::Entry;
 use super::{enclosed, per_component};
+use super::{registered_checks, Entry};
 use glam::{Mat4, Vec2, Vec3, Vec3Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{
     self as rc, PackedRayCone, RayCone, RefractedRayCone, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD,
     MIN_COS, MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
 };
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3 as v3, select, Interval as I, Interval2 as V2, IntervalVec as V};
 use shader_proptest::tolerance::{atan_error, dot_error, log2_error, tan_error, ulps, ULP};
@@ -774,35 +775,38 @@ pub fn roughness_spread_angle() -> FunctionCheck<(f32,), f32> {
 }
 
 /// Every function's checks, in the module's function order.
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry::new(Module::RayCone, pack_ray_cone()),
-        Entry::new(Module::RayCone, unpack_ray_cone()),
-        Entry::new(Module::RayCone, pixel_spread_angle()),
-        Entry::new(Module::RayCone, pixel_spread_angle_small()),
-        Entry::new(Module::RayCone, pixel_spread_angle_from_proj_inv()),
-        Entry::new(Module::RayCone, pinhole_ray_cone()),
-        Entry::new(Module::RayCone, pinhole_ray_cone_for_ray()),
-        Entry::new(Module::RayCone, orthographic_ray_cone()),
-        Entry::new(Module::RayCone, thin_lens_ray_cone()),
-        Entry::new(Module::RayCone, width_at()),
-        Entry::new(Module::RayCone, propagate()),
-        Entry::new(Module::RayCone, normal_spread_angle()),
-        Entry::new(Module::RayCone, normal_spread_angle_small()),
-        Entry::new(Module::RayCone, curvature_sign()),
-        Entry::new(Module::RayCone, surface_spread_angle()),
-        Entry::new(Module::RayCone, edge_curvature()),
-        Entry::new(Module::RayCone, triangle_curvature()),
-        Entry::new(Module::RayCone, curvature_spread_angle()),
-        Entry::new(Module::RayCone, world_footprint()),
-        Entry::new(Module::RayCone, triangle_world_area2()),
-        Entry::new(Module::RayCone, triangle_uv_area2()),
-        Entry::new(Module::RayCone, texel_density()),
-        Entry::new(Module::RayCone, triangle_base_lod()),
-        Entry::new(Module::RayCone, texture_lod()),
-        Entry::new(Module::RayCone, texture_gradient()),
-        Entry::new(Module::RayCone, environment_lod()),
-        Entry::new(Module::RayCone, refract_ray_cone()),
-        Entry::new(Module::RayCone, roughness_spread_angle()),
-    ]
+pub fn entries() -> Vec<Registered<Entry>> {
+    registered_checks!(
+        Module::RayCone,
+        [
+            pack_ray_cone,
+            unpack_ray_cone,
+            pixel_spread_angle,
+            pixel_spread_angle_small,
+            pixel_spread_angle_from_proj_inv,
+            pinhole_ray_cone,
+            pinhole_ray_cone_for_ray,
+            orthographic_ray_cone,
+            thin_lens_ray_cone,
+            width_at,
+            propagate,
+            normal_spread_angle,
+            normal_spread_angle_small,
+            curvature_sign,
+            surface_spread_angle,
+            edge_curvature,
+            triangle_curvature,
+            curvature_spread_angle,
+            world_footprint,
+            triangle_world_area2,
+            triangle_uv_area2,
+            texel_density,
+            triangle_base_lod,
+            texture_lod,
+            texture_gradient,
+            environment_lod,
+            refract_ray_cone,
+            roughness_spread_angle
+        ]
+    )
 }

@@ -12,13 +12,14 @@ use super::strategy::{
     angle, distance, fov_y, magnitude, normal_and_direction, perspective_proj_inv, pixels, scalar,
     small_vec3, triangle, unit_vec3, uv_triangle, vec3,
 };
-use super::Entry;
+use super::{registered_checks, Entry};
 use glam::{Mat4, Quat, Vec2, Vec3, Vec4Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, GBufferSample, NeighbourDirections, RayDiff, DIFF_MAX_FOV_Y,
     DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE, DIFF_MIN_SINE,
 };
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{
     interval2 as v2, interval3 as v3, mat_vec, Interval as I, Interval2 as V2, Interval3 as V3,
@@ -1258,39 +1259,42 @@ pub fn cone_from_ray_diff() -> FunctionCheck<(RayDiff, Vec3), Vec2> {
 }
 
 /// Every function's checks, in the module's function order.
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry::new(Module::RayDiff, eye_ray_direction()),
-        Entry::new(Module::RayDiff, normalized_derivative()),
-        Entry::new(Module::RayDiff, eye_ray_diff()),
-        Entry::new(Module::RayDiff, eye_ray_direction_from_matrices()),
-        Entry::new(Module::RayDiff, eye_ray_diff_from_matrices()),
-        Entry::new(Module::RayDiff, pixel_directions()),
-        Entry::new(Module::RayDiff, transfer()),
-        Entry::new(Module::RayDiff, barycentric_derivatives()),
-        Entry::new(Module::RayDiff, barycentric_w_derivatives()),
-        Entry::new(Module::RayDiff, texture_derivatives()),
-        Entry::new(Module::RayDiff, texel_derivatives()),
-        Entry::new(Module::RayDiff, secondary_origin_derivatives()),
-        Entry::new(Module::RayDiff, lod_isotropic()),
-        Entry::new(Module::RayDiff, lod_box()),
-        Entry::new(Module::RayDiff, sample_grad_gradients()),
-        Entry::new(Module::RayDiff, normal_derivatives()),
-        Entry::new(Module::RayDiff, reflect_ray_diff()),
-        Entry::new(Module::RayDiff, refract_ray_diff()),
-        Entry::new(Module::RayDiff, gbuffer_ray_diff()),
-        Entry::new(Module::RayDiff, tangent_plane_offsets()),
-        Entry::new(Module::RayDiff, planar_mapping_gradients()),
-        Entry::new(Module::RayDiff, triplanar_weights()),
-        Entry::new(Module::RayDiff, triplanar_gradients()),
-        Entry::new(Module::RayDiff, intersect_triangle_plane()),
-        Entry::new(Module::RayDiff, barycentric_offsets()),
-        Entry::new(Module::RayDiff, barycentric_deltas()),
-        Entry::new(Module::RayDiff, uv_gradients_from_offsets()),
-        Entry::new(Module::RayDiff, cone_barycentric_deltas()),
-        Entry::new(Module::RayDiff, anisotropic_cone_axes()),
-        Entry::new(Module::RayDiff, anisotropic_cone_gradients()),
-        Entry::new(Module::RayDiff, ray_diff_from_cone()),
-        Entry::new(Module::RayDiff, cone_from_ray_diff()),
-    ]
+pub fn entries() -> Vec<Registered<Entry>> {
+    registered_checks!(
+        Module::RayDiff,
+        [
+            eye_ray_direction,
+            normalized_derivative,
+            eye_ray_diff,
+            eye_ray_direction_from_matrices,
+            eye_ray_diff_from_matrices,
+            pixel_directions,
+            transfer,
+            barycentric_derivatives,
+            barycentric_w_derivatives,
+            texture_derivatives,
+            texel_derivatives,
+            secondary_origin_derivatives,
+            lod_isotropic,
+            lod_box,
+            sample_grad_gradients,
+            normal_derivatives,
+            reflect_ray_diff,
+            refract_ray_diff,
+            gbuffer_ray_diff,
+            tangent_plane_offsets,
+            planar_mapping_gradients,
+            triplanar_weights,
+            triplanar_gradients,
+            intersect_triangle_plane,
+            barycentric_offsets,
+            barycentric_deltas,
+            uv_gradients_from_offsets,
+            cone_barycentric_deltas,
+            anisotropic_cone_axes,
+            anisotropic_cone_gradients,
+            ray_diff_from_cone,
+            cone_from_ray_diff
+        ]
+    )
 }

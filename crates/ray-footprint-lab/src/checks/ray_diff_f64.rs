@@ -8,9 +8,10 @@ use super::edge::Edge;
 use super::enclosed;
 use super::ray_diff::{direction_well_conditioned, offset_args, OffsetArgs, WELL_CONDITIONED};
 use super::strategy::{triangle, unit_vec3, vec3};
-use super::Entry;
+use super::{registered_checks, Entry};
 use proptest::prelude::*;
 use ray_footprint::ray_diff_f64::{self as rd64, F64_MAX_VALUE, F64_MIN_MAGNITUDE};
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{
     interval3_f64 as v3_64, mat_vec, Interval as I, Interval3 as V3, IntervalVec as V, F64,
@@ -120,10 +121,13 @@ pub fn barycentric_deltas_f64() -> FunctionCheck<impl Args + Edge, impl Value> {
 }
 
 /// Every function's checks, in the module's function order.
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry::new(Module::RayDiffF64, intersect_triangle_plane_f64()),
-        Entry::new(Module::RayDiffF64, barycentric_offsets_f64()),
-        Entry::new(Module::RayDiffF64, barycentric_deltas_f64()),
-    ]
+pub fn entries() -> Vec<Registered<Entry>> {
+    registered_checks!(
+        Module::RayDiffF64,
+        [
+            intersect_triangle_plane_f64,
+            barycentric_offsets_f64,
+            barycentric_deltas_f64
+        ]
+    )
 }

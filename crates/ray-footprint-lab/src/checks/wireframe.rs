@@ -10,9 +10,10 @@
 use super::edge::Edge;
 use super::per_component;
 use super::strategy::{magnitude, scalar, HUGE, TINY};
-use super::Entry;
+use super::{registered_checks, Entry};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{
     self as wf, WireframeSettings, WireframeSettingsIo, MAX_LINE_THICKNESS, MIN_LINE_RAMP,
@@ -446,14 +447,17 @@ pub fn process_wireframe() -> FunctionCheck<(WireframeSettings, Vec3, Vec3), f32
 }
 
 /// Every function's checks, in the module's function order.
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry::new(Module::Wireframe, unpack_wireframe_settings()),
-        Entry::new(Module::Wireframe, edge_position()),
-        Entry::new(Module::Wireframe, edge_thickness()),
-        Entry::new(Module::Wireframe, stipple()),
-        Entry::new(Module::Wireframe, edge_ramp()),
-        Entry::new(Module::Wireframe, line_width()),
-        Entry::new(Module::Wireframe, process_wireframe()),
-    ]
+pub fn entries() -> Vec<Registered<Entry>> {
+    registered_checks!(
+        Module::Wireframe,
+        [
+            unpack_wireframe_settings,
+            edge_position,
+            edge_thickness,
+            stipple,
+            edge_ramp,
+            line_width,
+            process_wireframe
+        ]
+    )
 }

@@ -5,6 +5,7 @@
 
 use super::{assert_all_pass, gpu};
 use ray_footprint::ray_cone;
+use ray_footprint::registry::{check_registry, Coverage, Registered};
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::checks;
 use shader_proptest::{FunctionCheck, Language, Outcome, RunConfig};
@@ -22,6 +23,26 @@ fn agree(module: Module, language: Language) {
         checks.iter().map(AsRef::as_ref),
         "disagree",
     );
+}
+
+/// Every public function of every module has an agreement check, registered in module order
+/// under the name of the function the check calls. (The helper functions the shader modules
+/// declare and the Rust mirror keeps private are checked through the public functions that call
+/// them.)
+#[test]
+fn every_function_has_a_check_in_module_order() {
+    let entries = checks::all_entries();
+    check_registry(&entries, Coverage::Complete).unwrap_or_else(|error| panic!("{error}"));
+    for entry in &entries {
+        let calls = format!("rf_{}", entry.function);
+        assert_eq!(entry.item.check.function(), calls, "{}", module_name(entry));
+        assert_eq!(entry.item.edge.function(), calls, "{}", module_name(entry));
+    }
+    println!("{} functions, each with an agreement check", entries.len());
+}
+
+fn module_name(entry: &Registered<checks::Entry>) -> String {
+    format!("{}::{}", entry.module.stem(), entry.function)
 }
 
 #[test]

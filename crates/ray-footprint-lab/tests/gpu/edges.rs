@@ -13,7 +13,7 @@ fn edges_agree(module: Module, language: Language) {
     let gpu = gpu();
     let shader = module.shader(language);
     let entries = entries(module);
-    let edges = entries.iter().map(|entry| entry.edge.as_ref());
+    let edges = entries.iter().map(|entry| entry.item.edge.as_ref());
     assert_all_pass(&gpu, &shader, language, edges, "failed on edge cases");
 }
 

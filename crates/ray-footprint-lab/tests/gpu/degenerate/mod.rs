@@ -19,6 +19,7 @@ mod wireframe;
 
 use super::common::assert_generated_block;
 use super::gpu;
+use ray_footprint::registry::{check_registry, registry, Coverage, Registered};
 use ray_footprint::shaders::Module;
 use shader_proptest::{evaluate, Args, Error, Gpu, Language, Value};
 use std::fmt::Write as _;
@@ -47,13 +48,33 @@ pub struct Row<A> {
 }
 
 /// The rows of one function.
-pub struct Table<A, R> {
-    pub module: Module,
-    pub function: &'static str,
-    pub mirror: fn(A) -> R,
+struct Table<A, R> {
+    module: Module,
+    function: &'static str,
+    mirror: fn(A) -> R,
     /// Allowed `|shader - expected|` for an output component whose expected value is `expected`.
-    pub tolerance: fn(&A, f32) -> f32,
-    pub rows: Vec<Row<A>>,
+    tolerance: fn(&A, f32) -> f32,
+    rows: Vec<Row<A>>,
+}
+
+/// The rows of `function` of `module`, registered for it: `mirror` is the function's Rust mirror,
+/// `tolerance(args, expected)` the allowed `|shader - expected|` for an output component whose
+/// expected value is `expected`.
+pub fn register<A: Args, R: Value>(
+    module: Module,
+    function: &'static str,
+    mirror: fn(A) -> R,
+    tolerance: fn(&A, f32) -> f32,
+    rows: Vec<Row<A>>,
+) -> Registered<Box<dyn Degenerate>> {
+    let table = Table {
+        module,
+        function,
+        mirror,
+        tolerance,
+        rows,
+    };
+    Registered::new(module, function, Box::new(table))
 }
 
 /// A type-erased [`Table`].
@@ -195,7 +216,7 @@ fn render() -> String {
         writeln!(out, "\n### `{}`\n", module.stem()).expect("a String");
         out.push_str("| function | degenerate input | documented output |\n| --- | --- | --- |\n");
         for table in table::tables(module) {
-            table.markdown(&mut out);
+            table.item.markdown(&mut out);
         }
     }
     out
@@ -214,10 +235,19 @@ fn the_docs_show_the_table() {
 }
 
 fn all_tables() -> Vec<Box<dyn Degenerate>> {
-    Module::ALL
-        .iter()
-        .flat_map(|&module| table::tables(module))
+    registry(table::tables)
+        .into_iter()
+        .map(|table| table.item)
         .collect()
+}
+
+/// Every public function has degenerate rows (the crate documents the degenerate output of every
+/// function), registered in module order, so the table lists the functions in that order.
+#[test]
+fn every_function_has_rows_in_module_order() {
+    let tables = registry(table::tables);
+    check_registry(&tables, Coverage::Complete).unwrap_or_else(|error| panic!("{error}"));
+    println!("{} functions with degenerate rows", tables.len());
 }
 
 #[test]

@@ -1,12 +1,13 @@
 //! The degenerate-input rows of `ray_cone`.
 
 use super::table::{cone, direction_at, mirror, same, value, widest, INF, NAN};
-use super::{Degenerate, Table};
+use super::{register, Degenerate};
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_cone::{
     self as rc, PackedRayCone, F16_MAX, MAX_FOV_Y, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS,
     MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
 };
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::checks::ray_cone as cone_suite;
 use shader_proptest::tolerance::{log2_error, tan_error, ulps};
@@ -17,7 +18,7 @@ fn spread_tolerance(fov: f32, height: f32, expected: f32) -> f32 {
     2.0 * tan_error(0.5 * fov.clamp(0.0, MAX_FOV_Y)) / height.max(1.0) + ulps(4100.0, expected)
 }
 
-pub fn tables() -> Vec<Box<dyn Degenerate>> {
+pub fn tables() -> Vec<Registered<Box<dyn Degenerate>>> {
     let proj_inv = glam::camera::rh::proj::vulkan::perspective(1.0, 1.5, 0.1, 100.0).inverse();
     let (x, z) = (Vec3::X, Vec3::Z);
     let (head_on, in_plane, grazing) = (Vec3::NEG_Z, Vec3::X, direction_at(1.0e-6));
@@ -44,14 +45,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
         )
     };
     vec![
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "pack_ray_cone",
-            mirror: |(c,)| rc::pack_ray_cone(c),
+        register(
+            Module::RayCone,
+            "pack_ray_cone",
+            |(c,)| rc::pack_ray_cone(c),
             // Compared unpacked; packHalf2x16's rounding is the implementation's (one f16 ULP:
             // 2^-10 relative, 2^-24 absolute for f16 sub-normals).
-            tolerance: |_, e| (e.abs() / 1024.0).max(1.0 / 16_777_216.0),
-            rows: vec![
+            |_, e| (e.abs() / 1024.0).max(1.0 / 16_777_216.0),
+            vec![
                 value(
                     "values beyond f16 (1e9, -1e9)",
                     "(F16_MAX, -F16_MAX), never infinite",
@@ -77,14 +78,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![F16_MAX, 0.5],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "unpack_ray_cone",
-            mirror: |(packed,)| rc::unpack_ray_cone(packed),
+        ),
+        register(
+            Module::RayCone,
+            "unpack_ray_cone",
+            |(packed,)| rc::unpack_ray_cone(packed),
             // f16 to f32 is exact.
-            tolerance: |_, _| 0.0,
-            rows: vec![
+            |_, _| 0.0,
+            vec![
                 value("zero bits", "(0, 0)", (PackedRayCone(0),), vec![0.0, 0.0]),
                 value(
                     "largest finite f16 (0x7bff, 0xfbff)",
@@ -105,13 +106,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![INF, NAN],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "pixel_spread_angle",
-            mirror: |(fov, h)| rc::pixel_spread_angle(fov, h),
-            tolerance: |&(fov, h), e| spread_tolerance(fov, h, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "pixel_spread_angle",
+            |(fov, h)| rc::pixel_spread_angle(fov, h),
+            |&(fov, h), e| spread_tolerance(fov, h, e),
+            vec![
                 same(
                     "zero viewport (H = 0)",
                     "as H = 1 (H is clamped to >= 1)",
@@ -134,13 +135,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 mirror("NaN in (fov_y)", "CPU: NaN", (NAN, 1080.0), vec![NAN]),
                 mirror("infinity in (H = +inf)", "CPU: 0", (1.0, INF), vec![0.0]),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "pixel_spread_angle_small",
-            mirror: |(fov, h)| rc::pixel_spread_angle_small(fov, h),
-            tolerance: |&(fov, h), e| spread_tolerance(fov, h, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "pixel_spread_angle_small",
+            |(fov, h)| rc::pixel_spread_angle_small(fov, h),
+            |&(fov, h), e| spread_tolerance(fov, h, e),
+            vec![
                 same("zero viewport (H = 0)", "as H = 1", (1.0, 0.0), (1.0, 1.0)),
                 mirror(
                     "NaN in (H)",
@@ -155,14 +156,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![rc::pixel_spread_angle_small(MAX_FOV_Y, 1080.0)],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "pixel_spread_angle_from_proj_inv",
-            mirror: |(m, h)| rc::pixel_spread_angle_from_proj_inv(m, h),
+        ),
+        register(
+            Module::RayCone,
+            "pixel_spread_angle_from_proj_inv",
+            |(m, h)| rc::pixel_spread_angle_from_proj_inv(m, h),
             // atan (4096 ULP) of 2 |m11| / H (2.5 ULP division).
-            tolerance: |&(m, h), e| ulps(4100.0, e) + ulps(3.0, 2.0 * m.y_axis.y.abs() / h.max(1.0)),
-            rows: vec![
+            |&(m, h), e| ulps(4100.0, e) + ulps(3.0, 2.0 * m.y_axis.y.abs() / h.max(1.0)),
+            vec![
                 same(
                     "zero viewport (H = 0)",
                     "as H = 1",
@@ -177,13 +178,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![std::f32::consts::FRAC_PI_2],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "pinhole_ray_cone",
-            mirror: |(alpha,)| rc::pinhole_ray_cone(alpha),
-            tolerance: |_, _| 0.0,
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "pinhole_ray_cone",
+            |(alpha,)| rc::pinhole_ray_cone(alpha),
+            |_, _| 0.0,
+            vec![
                 value("zero spread", "(0, 0)", (0.0,), vec![0.0, 0.0]),
                 value(
                     "negative spread (-0.01)",
@@ -193,14 +194,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 ),
                 mirror("NaN in", "CPU: (0, NaN)", (NAN,), vec![0.0, NAN]),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "pinhole_ray_cone_for_ray",
-            mirror: |(alpha, d, axis)| rc::pinhole_ray_cone_for_ray(alpha, d, axis),
+        ),
+        register(
+            Module::RayCone,
+            "pinhole_ray_cone_for_ray",
+            |(alpha, d, axis)| rc::pinhole_ray_cone_for_ray(alpha, d, axis),
             // One product; the dot product is exact at these inputs.
-            tolerance: |_, e| ulps(1.0, e),
-            rows: vec![
+            |_, e| ulps(1.0, e),
+            vec![
                 value(
                     "ray along the view axis",
                     "(0, alpha)",
@@ -238,13 +239,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0, NAN],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "orthographic_ray_cone",
-            mirror: |(view_height, h)| rc::orthographic_ray_cone(view_height, h),
-            tolerance: |_, e| ulps(2.5, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "orthographic_ray_cone",
+            |(view_height, h)| rc::orthographic_ray_cone(view_height, h),
+            |_, e| ulps(2.5, e),
+            vec![
                 value(
                     "zero viewport (H = 0)",
                     "(view_height, 0): H is clamped to >= 1",
@@ -260,13 +261,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![INF, 0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "thin_lens_ray_cone",
-            mirror: |(alpha, aperture, focus)| rc::thin_lens_ray_cone(alpha, aperture, focus),
-            tolerance: |_, e| ulps(3.5, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "thin_lens_ray_cone",
+            |(alpha, aperture, focus)| rc::thin_lens_ray_cone(alpha, aperture, focus),
+            |_, e| ulps(3.5, e),
+            vec![
                 value(
                     "zero focus distance",
                     "(A, alpha - A / MIN_MAGNITUDE)",
@@ -286,14 +287,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.01, 0.001 - 0.01 / MIN_MAGNITUDE],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "width_at",
-            mirror: |(c, t)| rc::width_at(c, t),
+        ),
+        register(
+            Module::RayCone,
+            "width_at",
+            |(c, t)| rc::width_at(c, t),
             // A possibly fused multiply-add: 2 ULP of its terms.
-            tolerance: |&(c, t), _| ulps(2.0, c.width.abs() + (c.spread_angle * t).abs()),
-            rows: vec![
+            |&(c, t), _| ulps(2.0, c.width.abs() + (c.spread_angle * t).abs()),
+            vec![
                 value("t = 0", "width", (cone(0.5, 0.001), 0.0), vec![0.5]),
                 value(
                     "huge t (1e12)",
@@ -310,18 +311,18 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 mirror("NaN in (t)", "CPU: NaN", (cone(0.5, 0.001), NAN), vec![NAN]),
                 mirror("infinity in (t)", "CPU: inf", (cone(0.5, 0.001), INF), vec![INF]),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "propagate",
-            mirror: |(c, t, beta)| rc::propagate(c, t, beta),
-            tolerance: |&(c, t, beta), _| {
+        ),
+        register(
+            Module::RayCone,
+            "propagate",
+            |(c, t, beta)| rc::propagate(c, t, beta),
+            |&(c, t, beta), _| {
                 ulps(
                     2.0,
                     c.width.abs() + (c.spread_angle * t).abs() + c.spread_angle.abs() + beta.abs(),
                 )
             },
-            rows: vec![
+            vec![
                 value(
                     "t = 0",
                     "(width, spread + beta)",
@@ -341,13 +342,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.5 + 0.001, INF],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "normal_spread_angle",
-            mirror: |(dx, dy)| rc::normal_spread_angle(dx, dy),
-            tolerance: |_, e| ulps(4100.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "normal_spread_angle",
+            |(dx, dy)| rc::normal_spread_angle(dx, dy),
+            |_, e| ulps(4100.0, e),
+            vec![
                 flat_normal(),
                 value(
                     "one derivative zero, the other of length 2",
@@ -363,15 +364,15 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![std::f32::consts::PI],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "normal_spread_angle_small",
-            mirror: |(dx, dy)| rc::normal_spread_angle_small(dx, dy),
+        ),
+        register(
+            Module::RayCone,
+            "normal_spread_angle_small",
+            |(dx, dy)| rc::normal_spread_angle_small(dx, dy),
             // A sum of squares (3 roundings, 1.5 after the root) and a square root (inherited from
             // inversesqrt and a division: 4.5 ULP).
-            tolerance: |_, e| ulps(6.0, e),
-            rows: vec![
+            |_, e| ulps(6.0, e),
+            vec![
                 flat_normal(),
                 value(
                     "derivatives (3, 0, 0) and (0, -4, 0)",
@@ -381,13 +382,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 ),
                 sub_normal_derivatives(),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "curvature_sign",
-            mirror: |(a, b, c, d)| rc::curvature_sign(a, b, c, d),
-            tolerance: |_, _| 0.0,
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "curvature_sign",
+            |(a, b, c, d)| rc::curvature_sign(a, b, c, d),
+            |_, _| 0.0,
+            vec![
                 value(
                     "zero derivatives",
                     "-1 (sign(0) = -1)",
@@ -413,14 +414,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![-1.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "surface_spread_angle",
-            mirror: |(phi, s, k1, k2)| rc::surface_spread_angle(phi, s, k1, k2),
+        ),
+        register(
+            Module::RayCone,
+            "surface_spread_angle",
+            |(phi, s, k1, k2)| rc::surface_spread_angle(phi, s, k1, k2),
             // Three products and a sum: 4 roundings of the terms.
-            tolerance: |&(phi, s, k1, k2), _| ulps(4.0, (2.0 * k1 * s * phi).abs() + k2.abs()),
-            rows: vec![
+            |&(phi, s, k1, k2), _| ulps(4.0, (2.0 * k1 * s * phi).abs() + k2.abs()),
+            vec![
                 value(
                     "flat (phi = 0), RTG's k1 = 1, k2 = 0",
                     "0",
@@ -440,13 +441,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.125],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "edge_curvature",
-            mirror: |(pi, pj, ni, nj)| rc::edge_curvature(pi, pj, ni, nj),
-            tolerance: |_, e| ulps(6.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "edge_curvature",
+            |(pi, pj, ni, nj)| rc::edge_curvature(pi, pj, ni, nj),
+            |_, e| ulps(6.0, e),
+            vec![
                 value("zero-length edge", "0", (x, x, z, x), vec![0.0]),
                 value(
                     "edge of the unit sphere (p = n: x, then y)",
@@ -462,14 +463,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![1.0e-12 / MIN_MAGNITUDE],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "triangle_curvature",
-            mirror: |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
+        ),
+        register(
+            Module::RayCone,
+            "triangle_curvature",
+            |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
             // Three curvatures (dot 3 ULP, division 2.5 ULP) of magnitude <= 1, summed and divided.
-            tolerance: |_, _| ulps(10.0, 1.0),
-            rows: vec![
+            |_, _| ulps(10.0, 1.0),
+            vec![
                 value(
                     "zero-area triangle (p2 = p0)",
                     "the mean of the two real edges' curvatures (the zero edge counts 0): 2/3 here",
@@ -495,14 +496,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "curvature_spread_angle",
-            mirror: |(k, w, n, d)| rc::curvature_spread_angle(k, w, n, d),
+        ),
+        register(
+            Module::RayCone,
+            "curvature_spread_angle",
+            |(k, w, n, d)| rc::curvature_spread_angle(k, w, n, d),
             // Two products and a division (5 ULP); dn is exact here (+-1 or clamped).
-            tolerance: |_, e| ulps(5.0, e),
-            rows: vec![
+            |_, e| ulps(5.0, e),
+            vec![
                 value(
                     "ray in the surface plane (dot(n, d) = +0)",
                     "2 k width / MIN_COS: dn = 0 counts as the normal's side",
@@ -547,16 +548,16 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 ),
                 value("zero width (at a focus)", "0", (0.5, 0.0, z, head_on), vec![0.0]),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "world_footprint",
-            mirror: |(c, t, n, d)| rc::world_footprint(c, t, n, d),
-            tolerance: |&(c, t, n, d), e| {
+        ),
+        register(
+            Module::RayCone,
+            "world_footprint",
+            |(c, t, n, d)| rc::world_footprint(c, t, n, d),
+            |&(c, t, n, d), e| {
                 ulps(2.0, c.width.abs() + (c.spread_angle * t).abs()) / n.dot(d).abs().max(MIN_COS)
                     + ulps(3.0, e)
             },
-            rows: vec![
+            vec![
                 value(
                     "ray in the surface plane (dot(n, d) = 0)",
                     "|width + spread t| / MIN_COS",
@@ -588,13 +589,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![NAN],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "triangle_world_area2",
-            mirror: |(p0, p1, p2)| rc::triangle_world_area2(p0, p1, p2),
-            tolerance: |_, e| ulps(11.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "triangle_world_area2",
+            |(p0, p1, p2)| rc::triangle_world_area2(p0, p1, p2),
+            |_, e| ulps(11.0, e),
+            vec![
                 value(
                     "zero-area triangle (repeated vertex)",
                     "0",
@@ -614,13 +615,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![NAN],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "triangle_uv_area2",
-            mirror: |(a, b, c)| rc::triangle_uv_area2(a, b, c),
-            tolerance: |_, e| ulps(2.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "triangle_uv_area2",
+            |(a, b, c)| rc::triangle_uv_area2(a, b, c),
+            |_, e| ulps(2.0, e),
+            vec![
                 value("collinear UVs", "0", collinear_uv, vec![0.0]),
                 value(
                     "repeated vertex",
@@ -636,14 +637,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![1.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "texel_density",
-            mirror: |(p0, p1, p2, t0, t1, t2)| rc::texel_density(p0, p1, p2, t0, t1, t2),
+        ),
+        register(
+            Module::RayCone,
+            "texel_density",
+            |(p0, p1, p2, t0, t1, t2)| rc::texel_density(p0, p1, p2, t0, t1, t2),
             // Two square roots (3 ULP each) and a division (2.5 ULP).
-            tolerance: |_, e| ulps(9.0, e),
-            rows: vec![
+            |_, e| ulps(9.0, e),
+            vec![
                 value(
                     "zero-area triangle",
                     "sqrt(uv_area2) / sqrt(MIN_MAGNITUDE)",
@@ -690,15 +691,15 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![1.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "triangle_base_lod",
-            mirror: |(p0, p1, p2, t0, t1, t2)| rc::triangle_base_lod(p0, p1, p2, t0, t1, t2),
+        ),
+        register(
+            Module::RayCone,
+            "triangle_base_lod",
+            |(p0, p1, p2, t0, t1, t2)| rc::triangle_base_lod(p0, p1, p2, t0, t1, t2),
             // Half a difference of two log2 (3 ULP each); here one term is 0 (log2 1) or both are
             // the same clamped value, so the larger term is 2 |expected|.
-            tolerance: |_, e| log2_error(2.0 * e) + ulps(1.0, e),
-            rows: vec![
+            |_, e| log2_error(2.0 * e) + ulps(1.0, e),
+            vec![
                 value(
                     "zero-area triangle",
                     "0.5 (log2(uv_area2) - log2(MIN_MAGNITUDE))",
@@ -732,13 +733,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "texture_lod",
-            mirror: |(base, w, size, n, d)| rc::texture_lod(base, w, size, n, d),
+        ),
+        register(
+            Module::RayCone,
+            "texture_lod",
+            |(base, w, size, n, d)| rc::texture_lod(base, w, size, n, d),
             // Four log2 (3 ULP of each term, 2^-21 near 0) and the sum's roundings.
-            tolerance: |&(base, w, size, n, d), _| {
+            |&(base, w, size, n, d), _| {
                 let size = size.max(Vec2::ONE);
                 let terms = [
                     w.abs().max(MIN_MAGNITUDE).log2(),
@@ -749,7 +750,7 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 terms.iter().map(|&t| log2_error(t)).sum::<f32>()
                     + ulps(4.0, base.abs() + terms.iter().map(|t| t.abs()).sum::<f32>())
             },
-            rows: vec![
+            vec![
                 value(
                     "zero width",
                     "base + log2(MIN_MAGNITUDE) + 0.5 (log2 W + log2 H) - log2 |dot|",
@@ -781,13 +782,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![MIN_MAGNITUDE.log2() + 10.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "texture_gradient",
-            mirror: |(footprint, scale)| rc::texture_gradient(footprint, scale),
-            tolerance: |_, e| ulps(1.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayCone,
+            "texture_gradient",
+            |(footprint, scale)| rc::texture_gradient(footprint, scale),
+            |_, e| ulps(1.0, e),
+            vec![
                 value(
                     "negative scale",
                     "0 (scale clamped to >= 0)",
@@ -798,14 +799,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 value("scale 0", "0 (samples mip 0)", (0.5, 0.0), vec![0.0]),
                 value("zero footprint", "0", (0.0, 2.0), vec![0.0]),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "environment_lod",
-            mirror: |(spread, h)| rc::environment_lod(spread, h),
+        ),
+        register(
+            Module::RayCone,
+            "environment_lod",
+            |(spread, h)| rc::environment_lod(spread, h),
             // log2 of a product and a division (3.5 ULP relative, 3.5 / ln 2 ULP absolute after log2).
-            tolerance: |_, e| log2_error(e) + ulps(5.0, 1.0),
-            rows: vec![
+            |_, e| log2_error(e) + ulps(5.0, 1.0),
+            vec![
                 value(
                     "zero spread",
                     "log2(MIN_MAGNITUDE)",
@@ -821,14 +822,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![MIN_MAGNITUDE.log2()],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "refract_ray_cone",
-            mirror: |(c, n, d, beta, eta)| rc::refract_ray_cone(c, n, d, beta, eta),
+        ),
+        register(
+            Module::RayCone,
+            "refract_ray_cone",
+            |(c, n, d, beta, eta)| rc::refract_ray_cone(c, n, d, beta, eta),
             // The agreement check's enclosure, widest over the three components.
-            tolerance: |a, _| widest(cone_suite::refract_ray_cone(), a),
-            rows: vec![
+            |a, _| widest(cone_suite::refract_ray_cone(), a),
+            vec![
                 value(
                     "normal incidence, flat, no spread (eta 1.5)",
                     "(width, 0), not reflected",
@@ -884,14 +885,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     (cone(0.5, 0.01), z, head_on, 0.0, 1.5),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayCone,
-            function: "roughness_spread_angle",
-            mirror: |(r,)| rc::roughness_spread_angle(r),
+        ),
+        register(
+            Module::RayCone,
+            "roughness_spread_angle",
+            |(r,)| rc::roughness_spread_angle(r),
             // The agreement check's enclosure.
-            tolerance: |a, e| cone_suite::roughness_spread_angle().bounds(a, &e)[0],
-            rows: vec![
+            |a, e| cone_suite::roughness_spread_angle().bounds(a, &e)[0],
+            vec![
                 value("roughness 0", "0", (0.0,), vec![0.0]),
                 value(
                     "roughness 1",
@@ -902,6 +903,6 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 same("negative roughness", "as roughness 0", (-0.5,), (0.0,)),
                 same("roughness 2", "as roughness 1", (2.0,), (1.0,)),
             ],
-        }),
+        ),
     ]
 }

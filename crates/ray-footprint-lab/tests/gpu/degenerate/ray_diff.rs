@@ -4,17 +4,18 @@ use super::table::{
     delta_rows, direction_at, mirror, offset_rows, parts, plane_intersection_rows, same, value, widest, INF,
     NAN, OFFSET,
 };
-use super::{Degenerate, Row, Table};
+use super::{register, Degenerate, Row};
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, GBufferSample, RayDiff, TriplanarGradients, DIFF_MAX_FOV_Y,
     DIFF_MAX_VALUE, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
 };
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::checks::ray_diff as diff_suite;
 use shader_proptest::tolerance::{log2_error, tan_error, ulps};
 
-pub fn tables() -> Vec<Box<dyn Degenerate>> {
+pub fn tables() -> Vec<Registered<Box<dyn Degenerate>>> {
     let (x, y, z) = (Vec3::X, Vec3::Y, Vec3::Z);
     let proj_inv = glam::camera::rh::proj::vulkan::perspective(1.0, 1.5, 0.1, 100.0).inverse();
     let camera = |size: Vec2, fov: f32| (Vec2::ZERO, size, fov, x, y, z);
@@ -31,14 +32,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
         normal: z,
     };
     vec![
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "eye_ray_direction",
-            mirror: |(p, s, fov, r, u, v)| rd::eye_ray_direction(p, s, fov, r, u, v),
-            tolerance: |&(_, s, fov, ..), _| {
+        register(
+            Module::RayDiff,
+            "eye_ray_direction",
+            |(p, s, fov, r, u, v)| rd::eye_ray_direction(p, s, fov, r, u, v),
+            |&(_, s, fov, ..), _| {
                 2.0 * tan_error(0.5 * fov.clamp(0.0, 3.1)) * s.x.max(1.0) / s.y.max(1.0) + ulps(8.0, 1.0)
             },
-            rows: vec![
+            vec![
                 value(
                     "zero viewport (0 x 0)",
                     "-view (a 1 x 1 image: the centre ray)",
@@ -58,20 +59,20 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![NAN; 3],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "normalized_derivative",
-            mirror: |(v, dv)| rd::normalized_derivative(v, dv),
+        ),
+        register(
+            Module::RayDiff,
+            "normalized_derivative",
+            |(v, dv)| rd::normalized_derivative(v, dv),
             // dv less its part along v (each at most |dv|), divided by |v|: 6 roundings of the
             // result and of the terms, 2 |dv| / |v| (|v| clamped as the function clamps it).
-            tolerance: |&(v, dv), e| {
+            |&(v, dv), e| {
                 ulps(
                     6.0,
                     e.abs() + 2.0 * dv.length() / v.length().max(DIFF_MIN_MAGNITUDE.sqrt()),
                 )
             },
-            rows: vec![
+            vec![
                 value(
                     "zero vector",
                     "dv / sqrt(DIFF_MIN_MAGNITUDE)",
@@ -91,15 +92,15 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.5, 0.0, 0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "eye_ray_diff",
-            mirror: |(p, s, fov, r, u, v)| rd::eye_ray_diff(p, s, fov, r, u, v),
-            tolerance: |&(_, s, fov, ..), _| {
+        ),
+        register(
+            Module::RayDiff,
+            "eye_ray_diff",
+            |(p, s, fov, r, u, v)| rd::eye_ray_diff(p, s, fov, r, u, v),
+            |&(_, s, fov, ..), _| {
                 4.0 * tan_error(0.5 * fov.clamp(0.0, 3.1)) / s.min_element().max(1.0) + ulps(16.0, 1.0)
             },
-            rows: vec![
+            vec![
                 same(
                     "zero viewport (0 x 0)",
                     "as a 1 x 1 image",
@@ -119,34 +120,34 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     camera(Vec2::splat(64.0), DIFF_MAX_FOV_Y),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "eye_ray_direction_from_matrices",
-            mirror: |(p, s, v, pr)| rd::eye_ray_direction_from_matrices(p, s, v, pr),
-            tolerance: |_, _| ulps(8.0, 1.0),
-            rows: matrix_rows(proj_inv, "0 (the zero vector is not normalized)", vec![0.0; 3]),
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "eye_ray_diff_from_matrices",
-            mirror: |(p, s, v, pr)| rd::eye_ray_diff_from_matrices(p, s, v, pr),
-            tolerance: |_, _| ulps(16.0, 1.0),
-            rows: matrix_rows(proj_inv, "0", parts(RayDiff::ZERO)),
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "pixel_directions",
-            mirror: |(p, s, v, pr)| rd::pixel_directions(p, s, v, pr),
-            tolerance: |_, _| ulps(8.0, 1.0),
-            rows: matrix_rows(proj_inv, "0", vec![0.0; 6]),
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "transfer",
-            mirror: |(diff, d, t, n)| rd::transfer(diff, d, t, n),
-            tolerance: |_, e| ulps(8.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "eye_ray_direction_from_matrices",
+            |(p, s, v, pr)| rd::eye_ray_direction_from_matrices(p, s, v, pr),
+            |_, _| ulps(8.0, 1.0),
+            matrix_rows(proj_inv, "0 (the zero vector is not normalized)", vec![0.0; 3]),
+        ),
+        register(
+            Module::RayDiff,
+            "eye_ray_diff_from_matrices",
+            |(p, s, v, pr)| rd::eye_ray_diff_from_matrices(p, s, v, pr),
+            |_, _| ulps(16.0, 1.0),
+            matrix_rows(proj_inv, "0", parts(RayDiff::ZERO)),
+        ),
+        register(
+            Module::RayDiff,
+            "pixel_directions",
+            |(p, s, v, pr)| rd::pixel_directions(p, s, v, pr),
+            |_, _| ulps(8.0, 1.0),
+            matrix_rows(proj_inv, "0", vec![0.0; 6]),
+        ),
+        register(
+            Module::RayDiff,
+            "transfer",
+            |(diff, d, t, n)| rd::transfer(diff, d, t, n),
+            |_, e| ulps(8.0, e),
+            vec![
                 value(
                     "ray in the plane (dot(D, N) = 0)",
                     "dot(D, N) clamped to +DIFF_MIN_COS: dP = q - dot(q, N) / DIFF_MIN_COS * D",
@@ -176,13 +177,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     )),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "barycentric_derivatives",
-            mirror: |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
-            tolerance: |_, e| ulps(3.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "barycentric_derivatives",
+            |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
+            |_, e| ulps(3.0, e),
+            vec![
                 value(
                     "zero-area triangle (p1 = p2)",
                     "k clamped to DIFF_MIN_MAGNITUDE, results clamped to +-DIFF_MAX_VALUE",
@@ -202,14 +203,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![-max, 0.0, 0.0, 0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "barycentric_w_derivatives",
-            mirror: |(b,)| rd::barycentric_w_derivatives(b),
+        ),
+        register(
+            Module::RayDiff,
+            "barycentric_w_derivatives",
+            |(b,)| rd::barycentric_w_derivatives(b),
             // Negations are exact; one rounding of the difference.
-            tolerance: |&(b,), _| ulps(1.0, (b.dx.abs() + b.dy.abs()).max_element()),
-            rows: vec![
+            |&(b,), _| ulps(1.0, (b.dx.abs() + b.dy.abs()).max_element()),
+            vec![
                 value("zero", "0", (Derivatives2::default(),), vec![0.0; 2]),
                 value(
                     "du = -dv",
@@ -224,13 +225,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![-2.0 * max, 0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "texture_derivatives",
-            mirror: |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
-            tolerance: |_, e| ulps(2.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "texture_derivatives",
+            |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
+            |_, e| ulps(2.0, e),
+            vec![
                 value(
                     "collinear UVs",
                     "finite, parallel gradients",
@@ -265,13 +266,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![max, 0.0, 0.0, max],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "texel_derivatives",
-            mirror: |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
-            tolerance: |_, e| ulps(2.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "texel_derivatives",
+            |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
+            |_, e| ulps(2.0, e),
+            vec![
                 same(
                     "zero texture size",
                     "as a 1 x 1 texture",
@@ -297,17 +298,17 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0; 4],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "secondary_origin_derivatives",
-            mirror: |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
+        ),
+        register(
+            Module::RayDiff,
+            "secondary_origin_derivatives",
+            |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
             // Two edge differences, two products and a sum: 4 roundings of |du| |e1| + |dv| |e2|.
-            tolerance: |&(b, p0, p1, p2), _| {
+            |&(b, p0, p1, p2), _| {
                 let edges = (p1 - p0).abs().max_element() + (p2 - p0).abs().max_element();
                 ulps(4.0, (b.dx.abs() + b.dy.abs()).max_element() * edges)
             },
-            rows: vec![
+            vec![
                 value(
                     "zero-area triangle (one point)",
                     "0: the hit cannot move",
@@ -332,13 +333,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![max, 0.0, 0.0, 0.0, -max, 0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "lod_isotropic",
-            mirror: |(g,)| rd::lod_isotropic(g),
-            tolerance: |_, e| 0.5 * log2_error(2.0 * e) + ulps(1.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "lod_isotropic",
+            |(g,)| rd::lod_isotropic(g),
+            |_, e| 0.5 * log2_error(2.0 * e) + ulps(1.0, e),
+            vec![
                 value(
                     "zero gradients",
                     "0.5 log2(DIFF_MIN_MAGNITUDE)",
@@ -364,13 +365,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.5 * DIFF_MIN_MAGNITUDE.log2()],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "lod_box",
-            mirror: |(g,)| rd::lod_box(g),
-            tolerance: |_, e| log2_error(e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "lod_box",
+            |(g,)| rd::lod_box(g),
+            |_, e| log2_error(e),
+            vec![
                 value(
                     "zero gradients",
                     "log2(DIFF_MIN_MAGNITUDE)",
@@ -396,13 +397,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![1.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "sample_grad_gradients",
-            mirror: |(g, scale)| rd::sample_grad_gradients(g, scale),
-            tolerance: |_, _| 0.0,
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "sample_grad_gradients",
+            |(g, scale)| rd::sample_grad_gradients(g, scale),
+            |_, _| 0.0,
+            vec![
                 value(
                     "negative scale",
                     "0 (scale clamped to >= 0)",
@@ -422,13 +423,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.5, -0.25, 2.0, 1.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "normal_derivatives",
-            mirror: |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
-            tolerance: |_, e| ulps(6.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "normal_derivatives",
+            |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
+            |_, e| ulps(6.0, e),
+            vec![
                 value(
                     "interpolated normal of length 0 (opposite vertex normals)",
                     "dn / sqrt(DIFF_MIN_MAGNITUDE)",
@@ -448,13 +449,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0; 6],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "reflect_ray_diff",
-            mirror: |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
-            tolerance: |_, e| ulps(4.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "reflect_ray_diff",
+            |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
+            |_, e| ulps(4.0, e),
+            vec![
                 value(
                     "ray in the surface plane, flat surface",
                     "dD - 2 dot(dD, N) N",
@@ -474,13 +475,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     parts(RayDiff::new(Vec3::ZERO, Vec3::ZERO, 2.0 * x, Vec3::ZERO)),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "refract_ray_diff",
-            mirror: |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
-            tolerance: |_, e| ulps(8.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "refract_ray_diff",
+            |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
+            |_, e| ulps(8.0, e),
+            vec![
                 value(
                     "ray in the surface plane, eta = 1",
                     "dot(T, N) = 0 clamped to DIFF_MIN_COS: dT = 0 here, no reflection",
@@ -500,21 +501,21 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     [parts(direction_dx(x)), vec![0.0]].concat(),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "gbuffer_ray_diff",
-            mirror: |(c, r, l, b, a, epsilon)| rd::gbuffer_ray_diff(c, r, l, b, a, epsilon),
+        ),
+        register(
+            Module::RayDiff,
+            "gbuffer_ray_diff",
+            |(c, r, l, b, a, epsilon)| rd::gbuffer_ray_diff(c, r, l, b, a, epsilon),
             // A difference of two products t e (3 roundings of 2 t) and of two reflections (each at
             // most 3 long: a dot product, two products and a difference, 5 roundings of 3).
-            tolerance: |&(c, r, l, b, a, _), _| {
+            |&(c, r, l, b, a, _), _| {
                 let largest = [c, r, l, b, a]
                     .iter()
                     .map(|s| s.distance.abs())
                     .fold(0.0, f32::max);
                 ulps(3.0, 2.0 * largest) + ulps(6.0, 6.0)
             },
-            rows: vec![
+            vec![
                 value(
                     "all five samples equal",
                     "zero differential",
@@ -571,13 +572,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     parts(RayDiff::new(Vec3::ZERO, Vec3::ZERO, -2.0 * z, Vec3::ZERO)),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "tangent_plane_offsets",
-            mirror: |(r, rx, ry, t, n)| rd::tangent_plane_offsets(r, rx, ry, t, n),
-            tolerance: |_, e| ulps(4.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "tangent_plane_offsets",
+            |(r, rx, ry, t, n)| rd::tangent_plane_offsets(r, rx, ry, t, n),
+            |_, e| ulps(4.0, e),
+            vec![
                 value("t = 0", "0", (-z, x, -z, 0.0, z), vec![0.0; 6]),
                 value(
                     "neighbour ray in the tangent plane",
@@ -592,14 +593,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0; 6],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "planar_mapping_gradients",
-            mirror: |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
+        ),
+        register(
+            Module::RayDiff,
+            "planar_mapping_gradients",
+            |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
             // One product per component.
-            tolerance: |_, e| ulps(1.0, e),
-            rows: vec![
+            |_, e| ulps(1.0, e),
+            vec![
                 value(
                     "zero scale",
                     "0",
@@ -622,13 +623,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![-1.0, 1.0, 0.0, -2.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "triplanar_weights",
-            mirror: |(n, k)| rd::triplanar_weights(n, k),
-            tolerance: |_, e| ulps(8.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "triplanar_weights",
+            |(n, k)| rd::triplanar_weights(n, k),
+            |_, e| ulps(8.0, e),
+            vec![
                 value(
                     "zero normal, sharpness 1",
                     "1/3 each",
@@ -648,14 +649,14 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![1.0 / 3.0; 3],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "triplanar_gradients",
-            mirror: |(dp, scale)| rd::triplanar_gradients(dp, scale),
+        ),
+        register(
+            Module::RayDiff,
+            "triplanar_gradients",
+            |(dp, scale)| rd::triplanar_gradients(dp, scale),
             // One product per component.
-            tolerance: |_, e| ulps(1.0, e),
-            rows: vec![
+            |_, e| ulps(1.0, e),
+            vec![
                 value(
                     "zero scale",
                     "0 for every projection",
@@ -679,41 +680,41 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     }),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "intersect_triangle_plane",
-            mirror: |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
-            tolerance: |_, e| ulps(3.0, e),
-            rows: plane_intersection_rows(
+        ),
+        register(
+            Module::RayDiff,
+            "intersect_triangle_plane",
+            |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
+            |_, e| ulps(3.0, e),
+            plane_intersection_rows(
                 "k clamped, u and v clamped to +-DIFF_MAX_VALUE",
                 rd::DIFF_MAX_VALUE,
             ),
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "barycentric_offsets",
-            mirror: |(m, o, p0, p1, p2, dx, dy, hit)| rd::barycentric_offsets(m, o, p0, p1, p2, dx, dy, hit),
-            tolerance: |_, e| ulps(3.0, e),
-            rows: offset_rows(
+        ),
+        register(
+            Module::RayDiff,
+            "barycentric_offsets",
+            |(m, o, p0, p1, p2, dx, dy, hit)| rd::barycentric_offsets(m, o, p0, p1, p2, dx, dy, hit),
+            |_, e| ulps(3.0, e),
+            offset_rows(
                 "(DIFF_MAX_VALUE, -DIFF_MAX_VALUE, 0) - hit in f32 (clamped u, v), (1, 0, 0) - hit",
                 [vec![max, -max, -0.5], OFFSET.to_vec()].concat(),
             ),
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "barycentric_deltas",
-            mirror: |(m, o, p0, p1, p2, dx, dy, hit)| rd::barycentric_deltas(m, o, p0, p1, p2, dx, dy, hit),
-            tolerance: |_, e| ulps(3.0, e),
-            rows: delta_rows("(DIFF_MAX_VALUE, DIFF_MAX_VALUE, 1) in f32", vec![max, max, 1.0]),
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "uv_gradients_from_offsets",
-            mirror: |(offsets, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(offsets, uv0, uv1, uv2),
+        ),
+        register(
+            Module::RayDiff,
+            "barycentric_deltas",
+            |(m, o, p0, p1, p2, dx, dy, hit)| rd::barycentric_deltas(m, o, p0, p1, p2, dx, dy, hit),
+            |_, e| ulps(3.0, e),
+            delta_rows("(DIFF_MAX_VALUE, DIFF_MAX_VALUE, 1) in f32", vec![max, max, 1.0]),
+        ),
+        register(
+            Module::RayDiff,
+            "uv_gradients_from_offsets",
+            |(offsets, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(offsets, uv0, uv1, uv2),
             // The agreement check's enclosure, widest over the four components.
-            tolerance: |a, _| widest(diff_suite::uv_gradients_from_offsets(), a),
-            rows: vec![
+            |a, _| widest(diff_suite::uv_gradients_from_offsets(), a),
+            vec![
                 value(
                     "zero offsets",
                     "0",
@@ -743,13 +744,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![-max, 0.0, 0.0, 0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "cone_barycentric_deltas",
-            mirror: |(footprint, p0, p1, p2)| rd::cone_barycentric_deltas(footprint, p0, p1, p2),
-            tolerance: |_, e| ulps(3.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "cone_barycentric_deltas",
+            |(footprint, p0, p1, p2)| rd::cone_barycentric_deltas(footprint, p0, p1, p2),
+            |_, e| ulps(3.0, e),
+            vec![
                 value(
                     "zero-area triangle",
                     "DIFF_MAX_VALUE each",
@@ -769,13 +770,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     (1.0, Vec3::ZERO, x, 2.0 * x),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "anisotropic_cone_axes",
-            mirror: |(w, n, d)| rd::anisotropic_cone_axes(w, n, d),
-            tolerance: |a, _| widest(diff_suite::anisotropic_cone_axes(), a),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "anisotropic_cone_axes",
+            |(w, n, d)| rd::anisotropic_cone_axes(w, n, d),
+            |a, _| widest(diff_suite::anisotropic_cone_axes(), a),
+            vec![
                 value(
                     "normal incidence (d = -n)",
                     "a circle: |width| along Duff et al.'s tangent of n and along cross(n, tangent)",
@@ -797,15 +798,15 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                 value("zero width", "zero axes", (0.0, z, -z), vec![0.0; 6]),
                 same("negative width", "as |width|", (-0.5, z, -z), (0.5, z, -z)),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "anisotropic_cone_gradients",
-            mirror: |(w, d, p0, p1, p2, uv0, uv1, uv2)| {
+        ),
+        register(
+            Module::RayDiff,
+            "anisotropic_cone_gradients",
+            |(w, d, p0, p1, p2, uv0, uv1, uv2)| {
                 rd::anisotropic_cone_gradients(w, d, p0, p1, p2, uv0, uv1, uv2)
             },
-            tolerance: |a, _| widest(diff_suite::anisotropic_cone_gradients(), a),
-            rows: vec![
+            |a, _| widest(diff_suite::anisotropic_cone_gradients(), a),
+            vec![
                 value(
                     "normal incidence, unit triangle, uv = xy",
                     "(|width|, 0), (0, |width|)",
@@ -831,13 +832,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0; 4],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "ray_diff_from_cone",
-            mirror: |(c, d)| rd::ray_diff_from_cone(c, d),
-            tolerance: |a, _| widest(diff_suite::ray_diff_from_cone(), a),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "ray_diff_from_cone",
+            |(c, d)| rd::ray_diff_from_cone(c, d),
+            |a, _| widest(diff_suite::ray_diff_from_cone(), a),
+            vec![
                 value("zero cone", "zero differential", (Vec2::ZERO, -z), vec![0.0; 16]),
                 value(
                     "direction -Z",
@@ -858,13 +859,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     parts(RayDiff::new(0.5 * x, Vec3::ZERO, 0.25 * x, Vec3::ZERO)),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::RayDiff,
-            function: "cone_from_ray_diff",
-            mirror: |(diff, d)| rd::cone_from_ray_diff(diff, d),
-            tolerance: |a, _| widest(diff_suite::cone_from_ray_diff(), a),
-            rows: vec![
+        ),
+        register(
+            Module::RayDiff,
+            "cone_from_ray_diff",
+            |(diff, d)| rd::cone_from_ray_diff(diff, d),
+            |a, _| widest(diff_suite::cone_from_ray_diff(), a),
+            vec![
                 value("zero differential", "(0, 0)", (RayDiff::ZERO, -z), vec![0.0, 0.0]),
                 value(
                     "pinhole eye ray (dO = 0), |dD/dx| = 0.01, |dD/dy| = 0.02",
@@ -885,7 +886,7 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0, 0.0],
                 ),
             ],
-        }),
+        ),
     ]
 }
 

@@ -5,6 +5,7 @@
 use super::{Degenerate, Expect, Row};
 use glam::{Mat4, Vec3};
 use ray_footprint::ray_cone::RayCone;
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use shader_proptest::{Args, FunctionCheck, Value};
 
@@ -55,7 +56,7 @@ pub(super) fn direction_at(cos: f32) -> Vec3 {
 }
 
 /// The tables of `module`, in the module's function order.
-pub fn tables(module: Module) -> Vec<Box<dyn Degenerate>> {
+pub fn tables(module: Module) -> Vec<Registered<Box<dyn Degenerate>>> {
     match module {
         Module::RayCone => super::ray_cone::tables(),
         Module::RayDiff => super::ray_diff::tables(),

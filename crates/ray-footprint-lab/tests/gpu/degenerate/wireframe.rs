@@ -1,8 +1,9 @@
 //! The degenerate-input rows of `wireframe`.
 
 use super::table::{mirror, parts, same, value, NAN};
-use super::{Degenerate, Table};
+use super::{register, Degenerate};
 use glam::{Vec2, Vec3};
+use ray_footprint::registry::Registered;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{self as wf, WireframeSettings, WireframeSettingsIo, WIREFRAME_DEFAULT};
 use shader_proptest::tolerance::ulps;
@@ -13,7 +14,7 @@ fn settings(f: impl FnOnce(&mut WireframeSettings)) -> WireframeSettings {
     settings
 }
 
-pub fn tables() -> Vec<Box<dyn Degenerate>> {
+pub fn tables() -> Vec<Registered<Box<dyn Degenerate>>> {
     let on_edge = Vec3::new(0.0, 0.5, 0.5);
     let near_edge = Vec3::new(0.004, 0.496, 0.5);
     let deltas = Vec3::splat(0.01);
@@ -22,12 +23,12 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
         ..WIREFRAME_DEFAULT.pack()
     };
     vec![
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "unpack_wireframe_settings",
-            mirror: |(io,)| wf::unpack_wireframe_settings(io),
-            tolerance: |_, _| 0.0,
-            rows: vec![
+        register(
+            Module::Wireframe,
+            "unpack_wireframe_settings",
+            |(io,)| wf::unpack_wireframe_settings(io),
+            |_, _| 0.0,
+            vec![
                 value(
                     "flag 7 (any non-zero)",
                     "true (packed again as 1)",
@@ -78,13 +79,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     }),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "edge_position",
-            mirror: |(b,)| wf::edge_position(b),
-            tolerance: |_, _| 0.0,
-            rows: vec![
+        ),
+        register(
+            Module::Wireframe,
+            "edge_position",
+            |(b,)| wf::edge_position(b),
+            |_, _| 0.0,
+            vec![
                 mirror(
                     "NaN in (b.x)",
                     "CPU: max(b.y, b.z) (Rust's `max` ignores NaN)",
@@ -105,13 +106,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.75],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "edge_thickness",
-            mirror: |(var, e)| wf::edge_thickness(var, e),
-            tolerance: |_, e| ulps(4.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::Wireframe,
+            "edge_thickness",
+            |(var, e)| wf::edge_thickness(var, e),
+            |_, e| ulps(4.0, e),
+            vec![
                 same(
                     "edge position 2",
                     "as edge position 1 (clamped to `[0, 1]`)",
@@ -131,13 +132,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     (Vec2::new(0.0, 2.0), 0.5),
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "stipple",
-            mirror: |(repeats, length, e)| wf::stipple(repeats, length, e),
-            tolerance: |_, _| 0.0,
-            rows: vec![
+        ),
+        register(
+            Module::Wireframe,
+            "stipple",
+            |(repeats, length, e)| wf::stipple(repeats, length, e),
+            |_, _| 0.0,
+            vec![
                 value("repeats 0", "1 (no dashes)", (0, 0.5, 0.3), vec![1.0]),
                 value("negative repeats", "1 (no dashes)", (-3, 0.5, 0.3), vec![1.0]),
                 value("stipple length 0", "0 (nothing drawn)", (5, 0.0, 0.3), vec![0.0]),
@@ -148,13 +149,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "edge_ramp",
-            mirror: |(v, start, width)| wf::edge_ramp(v, start, width),
-            tolerance: |_, e| ulps(4.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::Wireframe,
+            "edge_ramp",
+            |(v, start, width)| wf::edge_ramp(v, start, width),
+            |_, e| ulps(4.0, e),
+            vec![
                 value(
                     "zero ramp width, x = start",
                     "1 (hard step)",
@@ -174,13 +175,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![1.0; 3],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "line_width",
-            mirror: |(d, th, sm, b)| wf::line_width(d, th, sm, b),
-            tolerance: |_, e| ulps(4.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::Wireframe,
+            "line_width",
+            |(d, th, sm, b)| wf::line_width(d, th, sm, b),
+            |_, e| ulps(4.0, e),
+            vec![
                 value(
                     "smoothing 0, inside the line",
                     "1 (hard step)",
@@ -200,13 +201,13 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0],
                 ),
             ],
-        }),
-        Box::new(Table {
-            module: Module::Wireframe,
-            function: "process_wireframe",
-            mirror: |(s, b, d)| wf::process_wireframe(s, b, d),
-            tolerance: |_, e| ulps(8.0, e),
-            rows: vec![
+        ),
+        register(
+            Module::Wireframe,
+            "process_wireframe",
+            |(s, b, d)| wf::process_wireframe(s, b, d),
+            |_, e| ulps(8.0, e),
+            vec![
                 value(
                     "smoothing 0, on an edge",
                     "1 (hard step)",
@@ -239,6 +240,6 @@ pub fn tables() -> Vec<Box<dyn Degenerate>> {
                     vec![0.0],
                 ),
             ],
-        }),
+        ),
     ]
 }
