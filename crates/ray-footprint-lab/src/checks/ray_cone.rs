@@ -12,12 +12,12 @@ mod strategy;
 
 use super::edge::Edge;
 use super::strategy::{
-    angle, distance, fov_y, magnitude, normal_and_direction, pixels, scalar, small_vec3, triangle,
-    uv_triangle, vec3,
+    angle, distance, fov_y, image_size, magnitude, normal_and_direction, one_argument, pixels, scalar,
+    small_vec3, triangle, uv_triangle, vec3,
 };
 use super::Entry;
-use super::{enclosed, per_component};
-use bound::{clamped_cos, tan_ratio_error, uv_area2_error, world_area2_error};
+use super::{enclosed, exact, per_component};
+use bound::{clamped_cos, tan_ratio_error, uv_area2_error, width_at_error, world_area2_error};
 use enclosure::{b_refract_ray_cone, b_roughness_spread_angle, refraction_decided};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
@@ -25,7 +25,7 @@ use ray_footprint::ray_cone::{self as rc, RayCone, RefractedRayCone, MIN_MAGNITU
 use ray_footprint::shaders::Module;
 use shader_proptest::tolerance::{atan_error, dot_error, log2_error, ulps, ULP};
 use shader_proptest::{Args, FunctionCheck, Value};
-use strategy::{eta, off_the_plane, packed_ray_cone, proj_inv, ray_cone};
+use strategy::{eta, off_the_plane, packed_ray_cone, proj_inv, ray_cone, triangle_with_uvs};
 
 pub use bound::{area_corners, curvature_spread_angle_error, edge_curvature_error};
 
@@ -39,7 +39,7 @@ type RefractArgs = (RayCone, Vec3, Vec3, f32, f32);
 pub fn pack_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "pack_ray_cone",
-        || ray_cone().prop_map(|c| (c,)).boxed(),
+        || one_argument(ray_cone()),
         |(cone,)| rc::pack_ray_cone(cone),
         // The rounding mode of packHalf2x16 is the implementation's: one f16 ULP (2^-10
         // relative, 2^-24 absolute for f16 subnormals).
@@ -49,12 +49,11 @@ pub fn pack_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
 
 /// `rf_unpack_ray_cone`.
 pub fn unpack_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
-    per_component(
+    // f16 to f32 is exact.
+    exact(
         "unpack_ray_cone",
-        || packed_ray_cone().prop_map(|p| (p,)).boxed(),
+        || one_argument(packed_ray_cone()),
         |(packed,)| rc::unpack_ray_cone(packed),
-        // f16 to f32 is exact.
-        |_, _, _| 0.0,
     )
 }
 
@@ -101,12 +100,11 @@ pub fn pixel_spread_angle_from_proj_inv() -> FunctionCheck<impl Args + Edge, imp
 
 /// `rf_pinhole_ray_cone`.
 pub fn pinhole_ray_cone() -> FunctionCheck<impl Args + Edge, impl Value> {
-    per_component(
+    // No arithmetic.
+    exact(
         "pinhole_ray_cone",
-        || angle().prop_map(|a| (a,)).boxed(),
+        || one_argument(angle()),
         |(spread,)| rc::pinhole_ray_cone(spread),
-        // No arithmetic.
-        |_, _, _| 0.0,
     )
 }
 
@@ -174,8 +172,7 @@ pub fn width_at() -> FunctionCheck<impl Args + Edge, impl Value> {
         "width_at",
         || (ray_cone(), distance()).boxed(),
         |(cone, t)| rc::width_at(cone, t),
-        // width + spread * t, possibly fused: 2 ULP of the larger term.
-        |&(cone, t), _, _| ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()),
+        |&(cone, t), _, _| width_at_error(cone, t),
     )
 }
 
@@ -188,7 +185,7 @@ pub fn propagate() -> FunctionCheck<impl Args + Edge, impl Value> {
         // Width as width_at; spread: one correctly rounded addition, identical.
         |&(cone, t, _), index, _| {
             if index == 0 {
-                ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs())
+                width_at_error(cone, t)
             } else {
                 0.0
             }
@@ -333,7 +330,7 @@ pub fn world_footprint() -> FunctionCheck<impl Args + Edge, impl Value> {
         // rounding over |cos| as a relative error.
         |&(cone, t, normal, direction), _, expected| {
             let cos = clamped_cos(normal, direction);
-            ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs()) / cos
+            width_at_error(cone, t) / cos
                 + ulps(3.0, expected)
                 + expected.abs() * dot_error(normal, direction) / cos
         },
@@ -364,11 +361,7 @@ pub fn triangle_uv_area2() -> FunctionCheck<impl Args + Edge, impl Value> {
 pub fn texel_density() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "texel_density",
-        || {
-            (triangle(), uv_triangle())
-                .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
-                .boxed()
-        },
+        triangle_with_uvs,
         |(p0, p1, p2, uv0, uv1, uv2)| rc::texel_density(p0, p1, p2, uv0, uv1, uv2),
         // The areas' errors through sqrt(uv) / sqrt(max(world, MIN)), plus two square roots
         // (4.5 ULP each), the division (2.5) and the mirror's 3.
@@ -385,11 +378,7 @@ pub fn texel_density() -> FunctionCheck<impl Args + Edge, impl Value> {
 pub fn triangle_base_lod() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "triangle_base_lod",
-        || {
-            (triangle(), uv_triangle())
-                .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
-                .boxed()
-        },
+        triangle_with_uvs,
         |(p0, p1, p2, uv0, uv1, uv2)| rc::triangle_base_lod(p0, p1, p2, uv0, uv1, uv2),
         // The areas' errors through 0.5 * (log2 uv - log2 world) with the clamps, half of each
         // log2's error, and the subtraction and halving (2 ULP).
@@ -410,13 +399,8 @@ pub fn texture_lod() -> FunctionCheck<TextureLodArgs, f32> {
     per_component(
         "texture_lod",
         || {
-            (
-                -20.0f32..20.0,
-                scalar(),
-                (pixels(), pixels()),
-                normal_and_direction(),
-            )
-                .prop_map(|(base, width, (w, h), (n, d))| (base, width, Vec2::new(w, h), n, d))
+            (-20.0f32..20.0, scalar(), image_size(), normal_and_direction())
+                .prop_map(|(base, width, size, (n, d))| (base, width, size, n, d))
                 .boxed()
         },
         |(base, width, size, normal, direction)| rc::texture_lod(base, width, size, normal, direction),
@@ -492,15 +476,14 @@ pub fn roughness_spread_angle() -> FunctionCheck<(f32,), f32> {
     enclosed(
         "roughness_spread_angle",
         || {
-            prop_oneof![
+            let roughness = prop_oneof![
                 4 => 0.0f32..1.0,
                 1 => Just(0.0f32),
                 1 => Just(1.0f32),
                 1 => 0.99f32..1.0,
                 1 => scalar(),
-            ]
-            .prop_map(|r| (r,))
-            .boxed()
+            ];
+            one_argument(roughness)
         },
         |(r,)| rc::roughness_spread_angle(r),
         |&(r,)| vec![b_roughness_spread_angle(r)],

@@ -12,7 +12,8 @@ mod strategy;
 use super::edge::Edge;
 use super::enclosed;
 use super::strategy::{
-    angle, distance, magnitude, normal_and_direction, pixels, scalar, triangle, unit_vec3, uv_triangle, vec3,
+    angle, distance, image_size, magnitude, normal_and_direction, one_argument, scalar, triangle, unit_vec3,
+    uv_triangle, vec2_of, vec3, with_corners,
 };
 use super::Entry;
 use enclosure::{
@@ -155,7 +156,7 @@ pub fn barycentric_derivatives() -> FunctionCheck<BarycentricArgs, Derivatives2>
 pub fn barycentric_w_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "barycentric_w_derivatives",
-        || derivatives2().prop_map(|b| (b,)).boxed(),
+        || one_argument(derivatives2()),
         |(b,)| rd::barycentric_w_derivatives(b),
         |&(b,)| {
             let (dx, dy) = (v2(b.dx), v2(b.dy));
@@ -168,11 +169,7 @@ pub fn barycentric_w_derivatives() -> FunctionCheck<impl Args + Edge, impl Value
 pub fn texture_derivatives() -> FunctionCheck<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2> {
     enclosed(
         "texture_derivatives",
-        || {
-            (derivatives2(), uv_triangle())
-                .prop_map(|(b, t)| (b, t[0], t[1], t[2]))
-                .boxed()
-        },
+        || with_corners(derivatives2(), uv_triangle()),
         |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
         |&(b, t0, t1, t2)| {
             let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
@@ -186,8 +183,8 @@ pub fn texel_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "texel_derivatives",
         || {
-            (derivatives2(), uv_triangle(), (pixels(), pixels()))
-                .prop_map(|(b, t, (w, h))| (b, t[0], t[1], t[2], Vec2::new(w, h)))
+            (derivatives2(), uv_triangle(), image_size())
+                .prop_map(|(b, t, size)| (b, t[0], t[1], t[2], size))
                 .boxed()
         },
         |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
@@ -203,11 +200,7 @@ pub fn texel_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
 pub fn secondary_origin_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "secondary_origin_derivatives",
-        || {
-            (derivatives2(), triangle())
-                .prop_map(|(b, p)| (b, p[0], p[1], p[2]))
-                .boxed()
-        },
+        || with_corners(derivatives2(), triangle()),
         |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
         b_secondary_origin_derivatives,
     )
@@ -217,7 +210,7 @@ pub fn secondary_origin_derivatives() -> FunctionCheck<impl Args + Edge, impl Va
 pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
     enclosed(
         "lod_isotropic",
-        || derivatives2().prop_map(|g| (g,)).boxed(),
+        || one_argument(derivatives2()),
         |(g,)| rd::lod_isotropic(g),
         |&(g,)| vec![b_lod_isotropic(g)],
     )
@@ -227,7 +220,7 @@ pub fn lod_isotropic() -> FunctionCheck<(Derivatives2,), f32> {
 pub fn lod_box() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "lod_box",
-        || derivatives2().prop_map(|g| (g,)).boxed(),
+        || one_argument(derivatives2()),
         |(g,)| rd::lod_box(g),
         |&(g,)| vec![b_lod_box(g)],
     )
@@ -253,10 +246,10 @@ pub fn normal_derivatives() -> FunctionCheck<impl Args + Edge, impl Value> {
         || {
             (
                 (unit_vec3(), unit_vec3(), unit_vec3()),
-                (-1.0f32..2.0, -1.0f32..2.0),
+                vec2_of(-1.0f32..2.0, -1.0f32..2.0),
                 derivatives2(),
             )
-                .prop_map(|((n0, n1, n2), (u, v), b)| (n0, n1, n2, Vec2::new(u, v), b))
+                .prop_map(|((n0, n1, n2), uv, b)| (n0, n1, n2, uv, b))
                 .boxed()
         },
         |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
@@ -341,11 +334,7 @@ pub fn tangent_plane_offsets() -> FunctionCheck<impl Args + Edge, impl Value> {
 pub fn planar_mapping_gradients() -> FunctionCheck<impl Args + Edge, impl Value> {
     enclosed(
         "planar_mapping_gradients",
-        || {
-            (derivatives3(), (-10.0f32..10.0, -10.0f32..10.0))
-                .prop_map(|(dp, (a, b))| (dp, Vec2::new(a, b)))
-                .boxed()
-        },
+        || (derivatives3(), vec2_of(-10.0f32..10.0, -10.0f32..10.0)).boxed(),
         |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
         |&(dp, scale)| {
             let project = |v: Vec3| v2(Vec2::new(v.x, v.z)) * v2(scale);
@@ -439,11 +428,7 @@ pub fn barycentric_deltas() -> FunctionCheck<OffsetArgs, Vec3> {
 pub fn uv_gradients_from_offsets() -> FunctionCheck<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
     enclosed(
         "uv_gradients_from_offsets",
-        || {
-            (derivatives3(), uv_triangle())
-                .prop_map(|(o, uv)| (o, uv[0], uv[1], uv[2]))
-                .boxed()
-        },
+        || with_corners(derivatives3(), uv_triangle()),
         |(o, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(o, uv0, uv1, uv2),
         |&(o, uv0, uv1, uv2)| {
             let sum = |w: Vec3| v2(uv0) * s(w.x) + v2(uv1) * s(w.y) + v2(uv2) * s(w.z);
@@ -456,11 +441,7 @@ pub fn uv_gradients_from_offsets() -> FunctionCheck<(Derivatives3, Vec2, Vec2, V
 pub fn cone_barycentric_deltas() -> FunctionCheck<(f32, Vec3, Vec3, Vec3), Vec3> {
     enclosed(
         "cone_barycentric_deltas",
-        || {
-            (scalar(), triangle())
-                .prop_map(|(f, p)| (f, p[0], p[1], p[2]))
-                .boxed()
-        },
+        || with_corners(scalar(), triangle()),
         |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
         b_cone_barycentric_deltas,
     )
@@ -501,11 +482,7 @@ pub fn anisotropic_cone_gradients() -> FunctionCheck<ConeGradientArgs, Derivativ
 pub fn ray_diff_from_cone() -> FunctionCheck<(Vec2, Vec3), RayDiff> {
     enclosed(
         "ray_diff_from_cone",
-        || {
-            ((scalar(), angle()), unit_vec3())
-                .prop_map(|((w, a), d)| (Vec2::new(w, a), d))
-                .boxed()
-        },
+        || (vec2_of(scalar(), angle()), unit_vec3()).boxed(),
         |(cone, d)| rd::ray_diff_from_cone(cone, d),
         b_ray_diff_from_cone,
     )

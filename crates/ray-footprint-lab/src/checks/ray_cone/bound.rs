@@ -3,7 +3,7 @@
 //! pipeline's test) needs the same bound.
 
 use glam::{Vec2, Vec3, Vec3Swizzles};
-use ray_footprint::ray_cone::{self as rc, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
 use shader_proptest::tolerance::{dot_error, tan_error, ulps};
 
 /// `|cos|` as the functions clamp it.
@@ -15,6 +15,11 @@ pub(super) fn clamped_cos(normal: Vec3, direction: Vec3) -> f32 {
 pub(super) fn tan_ratio_error(fov: f32, height: f32) -> f32 {
     let angle = 0.5 * fov.clamp(0.0, MAX_FOV_Y);
     2.0 * tan_error(angle) / height.max(1.0) + ulps(3.5, rc::pixel_spread_angle_small(fov, height))
+}
+
+/// Error of [`rc::width_at`], `width + spread_angle * t`, possibly fused: 2 ULP of the larger term.
+pub(super) fn width_at_error(cone: RayCone, t: f32) -> f32 {
+    ulps(2.0, cone.width.abs() + (cone.spread_angle * t).abs())
 }
 
 /// Error of a triangle's doubled world area: each cross-product component `a*b - c*d` is off by at

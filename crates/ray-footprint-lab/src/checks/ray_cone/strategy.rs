@@ -1,8 +1,9 @@
 //! Case strategies of the ray-cone checks that only they use: cones (packed or not), inverse
-//! projections, refractive index ratios, and a direction kept off a surface's plane.
+//! projections, triangles with UVs, refractive index ratios, and a direction kept off a surface's
+//! plane.
 
-use crate::checks::strategy::{angle, perspective_proj_inv, scalar};
-use glam::{Mat4, Vec3};
+use crate::checks::strategy::{angle, perspective_proj_inv, scalar, triangle, uv_triangle};
+use glam::{Mat4, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{PackedRayCone, RayCone};
 use shader_proptest::tolerance::dot_error;
@@ -11,6 +12,13 @@ use shader_proptest::tolerance::dot_error;
 pub(super) fn ray_cone() -> BoxedStrategy<RayCone> {
     (scalar(), angle())
         .prop_map(|(width, spread_angle)| RayCone { width, spread_angle })
+        .boxed()
+}
+
+/// A triangle's vertices ([`triangle`]), then its UVs ([`uv_triangle`]), as six arguments.
+pub(super) fn triangle_with_uvs() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2)> {
+    (triangle(), uv_triangle())
+        .prop_map(|(p, uv)| (p[0], p[1], p[2], uv[0], uv[1], uv[2]))
         .boxed()
 }
 

@@ -5,22 +5,21 @@
 use super::enclosure::offsets_well_conditioned;
 use super::{Camera, Matrices, OffsetArgs};
 use crate::checks::strategy::{
-    distance, fov_y, normal_and_direction, perspective_proj_inv, pixels, scalar, small_vec3, triangle,
-    unit_vec3, vec3,
+    distance, fov_y, image_size, normal_and_direction, perspective_proj_inv, scalar, small_vec3, triangle,
+    unit_vec3, vec2_of, vec3,
 };
 use glam::{Mat4, Quat, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, GBufferSample, RayDiff};
 
-/// A pixel inside an image (or, sometimes, outside it) and the image size (from [`pixels`]).
+/// A pixel inside an image (or, sometimes, outside it) and the image size (from [`image_size`]).
 fn pixel_and_size() -> BoxedStrategy<(Vec2, Vec2)> {
-    ((pixels(), pixels()), (0.0f32..1.0, 0.0f32..1.0), any::<bool>())
-        .prop_map(|((w, h), (fx, fy), outside)| {
-            let size = Vec2::new(w, h);
+    (image_size(), vec2_of(0.0f32..1.0, 0.0f32..1.0), any::<bool>())
+        .prop_map(|(size, fraction, outside)| {
             let pixel = if outside {
-                Vec2::new(fx, fy) * 40000.0 - 20000.0
+                fraction * 40000.0 - 20000.0
             } else {
-                (Vec2::new(fx, fy) * size.max(Vec2::ONE)).floor()
+                (fraction * size.max(Vec2::ONE)).floor()
             };
             (pixel, size)
         })
@@ -78,8 +77,11 @@ pub(super) fn ray_diff() -> BoxedStrategy<RayDiff> {
 /// `(du, dv)` derivatives: ordinary, tiny or huge.
 pub(super) fn derivatives2() -> BoxedStrategy<Derivatives2> {
     let component = || prop_oneof![3 => -10.0f32..10.0, 1 => scalar()];
-    (component(), component(), component(), component())
-        .prop_map(|(a, b, c, d)| Derivatives2::new(Vec2::new(a, b), Vec2::new(c, d)))
+    (
+        vec2_of(component(), component()),
+        vec2_of(component(), component()),
+    )
+        .prop_map(|(dx, dy)| Derivatives2::new(dx, dy))
         .boxed()
 }
 
