@@ -72,6 +72,16 @@ pub fn per_component<A: Args, R: Value>(
     FunctionCheck::new(format!("rf_{function}"), strategy, mirror).tolerance(Tolerance::per_component(bound))
 }
 
+/// A check of `rf_<function>` whose every output component must equal the mirror's (a function
+/// that only copies, converts exactly or compares: the caller says why).
+pub(crate) fn exact<A: Args, R: Value>(
+    function: &str,
+    strategy: fn() -> BoxedStrategy<A>,
+    mirror: fn(A) -> R,
+) -> FunctionCheck<A, R> {
+    per_component(function, strategy, mirror, |_, _, _| 0.0)
+}
+
 /// A check of `rf_<function>` whose tolerance is the width of `enclosure`'s interval for each
 /// output component: the function re-evaluated in interval arithmetic with the rounding Vulkan
 /// allows the device and the mirror.

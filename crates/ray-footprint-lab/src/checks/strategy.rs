@@ -8,6 +8,7 @@
 use glam::{Mat4, Vec2, Vec3};
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
+use std::fmt::Debug;
 
 /// Largest magnitude in the tested domain.
 pub const HUGE: f32 = 1.0e12;
@@ -73,6 +74,19 @@ pub fn pixels() -> BoxedStrategy<f32> {
         1 => -100.0f32..1.0,
     ]
     .boxed()
+}
+
+/// An image or texture size: both sides from [`pixels`].
+pub(crate) fn image_size() -> BoxedStrategy<Vec2> {
+    vec2_of(pixels(), pixels())
+}
+
+/// A 2-vector with components drawn from `x` and `y`.
+pub(crate) fn vec2_of(
+    x: impl Strategy<Value = f32> + 'static,
+    y: impl Strategy<Value = f32> + 'static,
+) -> BoxedStrategy<Vec2> {
+    (x, y).prop_map(|(x, y)| Vec2::new(x, y)).boxed()
 }
 
 /// A vector with components from [`scalar`].
@@ -157,5 +171,23 @@ pub fn perspective_proj_inv() -> BoxedStrategy<Mat4> {
             };
             projection.inverse()
         })
+        .boxed()
+}
+
+/// The arguments of a function of one parameter: a 1-tuple of `strategy`'s values.
+pub(crate) fn one_argument<T: Debug + 'static>(
+    strategy: impl Strategy<Value = T> + 'static,
+) -> BoxedStrategy<(T,)> {
+    strategy.prop_map(|value| (value,)).boxed()
+}
+
+/// `first`, then the three corners of a triangle drawn from `corners` ([`triangle`]'s vertices,
+/// [`uv_triangle`]'s UVs) as three arguments.
+pub(crate) fn with_corners<T: Debug + 'static, C: Copy + Debug + 'static>(
+    first: impl Strategy<Value = T> + 'static,
+    corners: BoxedStrategy<[C; 3]>,
+) -> BoxedStrategy<(T, C, C, C)> {
+    (first, corners)
+        .prop_map(|(first, c)| (first, c[0], c[1], c[2]))
         .boxed()
 }

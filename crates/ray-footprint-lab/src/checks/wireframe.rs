@@ -8,9 +8,9 @@
 //! times its largest slope nearby.
 
 use super::edge::Edge;
-use super::per_component;
-use super::strategy::{magnitude, scalar, HUGE, TINY};
+use super::strategy::{magnitude, one_argument, scalar, vec2_of, vec3, HUGE, TINY};
 use super::{registered_checks, Entry};
+use super::{exact, per_component};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::registry::Registered;
@@ -149,7 +149,7 @@ fn stipple_repeats() -> BoxedStrategy<i32> {
 fn settings() -> BoxedStrategy<WireframeSettings> {
     let presets = prop::sample::select(WireframeSettings::PRESETS.map(|(_, settings)| settings).to_vec());
     let random = (
-        (size(), size()),
+        vec2_of(size(), size()),
         size(),
         size(),
         any::<bool>(),
@@ -158,10 +158,10 @@ fn settings() -> BoxedStrategy<WireframeSettings> {
         any::<bool>(),
     )
         .prop_map(
-            |((var_x, var_y), thickness, smoothing, stipple, length, repeats, screen_space)| {
+            |(thickness_var, thickness, smoothing, stipple, length, repeats, screen_space)| {
                 WireframeSettings::new(
                     thickness,
-                    Vec2::new(var_x, var_y),
+                    thickness_var,
                     smoothing,
                     stipple,
                     length,
@@ -304,30 +304,21 @@ fn process_wireframe_error(settings: WireframeSettings, b: Vec3, deltas: Vec3) -
 
 /// `rf_unpack_wireframe_settings`.
 pub fn unpack_wireframe_settings() -> FunctionCheck<impl Args + Edge, impl Value> {
-    per_component(
+    // Copies and integer comparisons: exact.
+    exact(
         "unpack_wireframe_settings",
-        || settings_io().prop_map(|io| (io,)).boxed(),
+        || one_argument(settings_io()),
         |(io,)| wf::unpack_wireframe_settings(io),
-        // Copies and integer comparisons: exact.
-        |_, _, _| 0.0,
     )
 }
 
 /// `rf_edge_position`.
 pub fn edge_position() -> FunctionCheck<impl Args + Edge, impl Value> {
-    per_component(
+    // max is exact.
+    exact(
         "edge_position",
-        || {
-            prop_oneof![
-                3 => barycentrics(),
-                1 => (scalar(), scalar(), scalar()).prop_map(|(x, y, z)| Vec3::new(x, y, z)),
-            ]
-            .prop_map(|b| (b,))
-            .boxed()
-        },
+        || one_argument(prop_oneof![3 => barycentrics(), 1 => vec3()]),
         |(b,)| wf::edge_position(b),
-        // max is exact.
-        |_, _, _| 0.0,
     )
 }
 
@@ -335,11 +326,7 @@ pub fn edge_position() -> FunctionCheck<impl Args + Edge, impl Value> {
 pub fn edge_thickness() -> FunctionCheck<impl Args + Edge, impl Value> {
     per_component(
         "edge_thickness",
-        || {
-            ((size(), size()), position_along_edge())
-                .prop_map(|((x, y), e)| (Vec2::new(x, y), e))
-                .boxed()
-        },
+        || (vec2_of(size(), size()), position_along_edge()).boxed(),
         |(var, e)| wf::edge_thickness(var, e),
         |&(var, _), _, _| edge_thickness_error(var),
     )
@@ -347,10 +334,10 @@ pub fn edge_thickness() -> FunctionCheck<impl Args + Edge, impl Value> {
 
 /// `rf_stipple`.
 pub fn stipple() -> FunctionCheck<impl Args + Edge, impl Value> {
-    per_component(
+    // 0 or 1, exact away from a dash boundary. Within its rounding band either value is right, so
+    // those positions are checked separately (the edge-case suite).
+    exact(
         "stipple",
-        // 0 or 1, exact away from a dash boundary. Within its rounding band either value is
-        // right, so those positions are checked separately (the edge-case suite).
         || {
             (stipple_repeats(), stipple_length(), position_along_edge())
                 .prop_filter("within rounding of a dash boundary", |&(repeats, length, e)| {
@@ -359,7 +346,6 @@ pub fn stipple() -> FunctionCheck<impl Args + Edge, impl Value> {
                 .boxed()
         },
         |(repeats, length, e)| wf::stipple(repeats, length, e),
-        |_, _, _| 0.0,
     )
 }
 
