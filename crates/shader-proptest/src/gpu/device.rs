@@ -247,6 +247,18 @@ impl Gpu {
         unsafe { self.instance.get_physical_device_properties(self.physical) }
     }
 
+    /// Fills `properties`, a structure that extends `VkPhysicalDeviceProperties2` (the
+    /// acceleration structures' or the ray-tracing pipeline's properties, for example), from the
+    /// physical device.
+    pub fn extended_properties<T: vk::ExtendsPhysicalDeviceProperties2>(&self, properties: &mut T) {
+        let mut chain = vk::PhysicalDeviceProperties2::default().push_next(properties);
+        // SAFETY: a plain query into a chain of one structure the caller owns.
+        unsafe {
+            self.instance
+                .get_physical_device_properties2(self.physical, &mut chain)
+        }
+    }
+
     /// The queue family of the queue every submission goes to (its properties say, for example,
     /// how many bits its timestamps have).
     pub fn queue_family(&self) -> u32 {
