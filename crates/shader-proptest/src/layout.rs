@@ -335,7 +335,7 @@ pub fn glsl_layout(
          layout(local_size_x = 1) in;\nvoid main() {{}}\n",
         packing.qualifier()
     );
-    let probe_line = source.matches('\n').count() + 2;
+    let probe_line = line_after(source);
     let spirv = compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs)
         .map_err(|error| probe_error(error, |log| glsl_compile_error(log, name, probe_line)))?;
     spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
@@ -348,6 +348,12 @@ fn is_identifier(name: &str) -> bool {
         .next()
         .is_some_and(|first| first.is_ascii_alphabetic() || first == '_')
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// The number of a probe's line right after `source`, which starts the probe at line 1 (counted
+/// from the newlines, so that a source ending in one counts right).
+fn line_after(source: &str) -> usize {
+    source.matches('\n').count() + 2
 }
 
 /// A failed probe compile as a layout error: the compiler's message when it did not run, else
@@ -401,9 +407,8 @@ pub fn slang_layout(
 ",
         packing.slang_layout()
     );
-    // The probe buffer is on the line after the source (counted from the newlines, so that a source
-    // ending in one counts right); errors there alone mean `name` is not a type the source declares.
-    let probe_line = source.matches('\n').count() + 2;
+    // Errors at the probe buffer alone mean `name` is not a type the source declares.
+    let probe_line = line_after(source);
     let spirv = compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs)
         .map_err(|error| probe_error(error, |log| slang_compile_error(log, name, probe_line)))?;
     let mut layout = spirv::buffer_element_layout(&spirv, "layout_probe")

@@ -87,14 +87,7 @@ pub(super) fn build(
 /// `minAccelerationStructureScratchOffsetAlignment` of the device.
 fn scratch_alignment(owner: &Owner<'_>) -> u64 {
     let mut acceleration = vk::PhysicalDeviceAccelerationStructurePropertiesKHR::default();
-    let mut properties = vk::PhysicalDeviceProperties2::default().push_next(&mut acceleration);
-    // SAFETY: a plain query.
-    unsafe {
-        owner
-            .gpu
-            .instance()
-            .get_physical_device_properties2(owner.gpu.physical_device(), &mut properties);
-    }
+    owner.gpu.extended_properties(&mut acceleration);
     u64::from(acceleration.min_acceleration_structure_scratch_offset_alignment)
 }
 

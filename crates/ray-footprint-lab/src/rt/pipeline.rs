@@ -65,29 +65,10 @@ pub(super) fn layouts(owner: &mut Owner<'_>) -> Result<(vk::DescriptorSetLayout,
                 .stage_flags(stages(owner))
         })
         .collect();
-    // SAFETY: valid create-info structs; objects are handed to the owner.
-    unsafe {
-        let set_layout = owner
-            .device()
-            .create_descriptor_set_layout(
-                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
-                None,
-            )
-            .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
-        owner.keep(set_layout, Object::SetLayout);
-        let ranges = [vk::PushConstantRange::default()
-            .stage_flags(stages(owner))
-            .size(std::mem::size_of::<RtPushConstants>() as u32)];
-        let set_layouts = [set_layout];
-        let info = vk::PipelineLayoutCreateInfo::default()
-            .set_layouts(&set_layouts)
-            .push_constant_ranges(&ranges);
-        let layout = owner
-            .device()
-            .create_pipeline_layout(&info, None)
-            .map_err(vulkan("vkCreatePipelineLayout"))?;
-        Ok((set_layout, owner.keep(layout, Object::PipelineLayout)))
-    }
+    let ranges = [vk::PushConstantRange::default()
+        .stage_flags(stages(owner))
+        .size(std::mem::size_of::<RtPushConstants>() as u32)];
+    owner.layouts(&bindings, &ranges)
 }
 
 /// Pushes `push` for every stage of the layout.
@@ -130,6 +111,19 @@ pub(super) struct RayTracing {
     pub pipeline: vk::Pipeline,
     pub regions: [vk::StridedDeviceAddressRegionKHR; 4],
     pub loader: ash::khr::ray_tracing_pipeline::Device,
+}
+
+impl RayTracing {
+    /// Records the tracing of `width` x `height` rays into `command_buffer`, which is recording
+    /// with the pipeline bound.
+    pub(super) fn trace(&self, command_buffer: vk::CommandBuffer, width: u32, height: u32) {
+        let [raygen, miss, hit, callable] = &self.regions;
+        // SAFETY: the caller's command buffer is recording, with this pipeline bound.
+        unsafe {
+            self.loader
+                .cmd_trace_rays(command_buffer, raygen, miss, hit, callable, width, height, 1)
+        }
+    }
 }
 
 /// The stages of the colour-only shaders, compiled once per mode.
@@ -187,20 +181,18 @@ pub(super) fn ray_tracing_pipeline(
             properties.max_ray_recursion_depth
         )));
     }
-    let modules = spirv
+    // The modules go once the pipeline exists.
+    let mut modules = Owner::new(owner.gpu);
+    let stage_infos = STAGES
         .iter()
-        .map(|words| shader_module(owner, words))
-        .collect::<Result<Vec<_>, _>>()?;
-    let stage_infos: Vec<_> = STAGES
-        .iter()
-        .zip(&modules)
-        .map(|(&(_, stage), &module)| {
-            vk::PipelineShaderStageCreateInfo::default()
+        .zip(spirv)
+        .map(|(&(_, stage), words)| {
+            Ok(vk::PipelineShaderStageCreateInfo::default()
                 .stage(stage)
-                .module(module)
-                .name(c"main")
+                .module(modules.shader_module(words)?)
+                .name(c"main"))
         })
-        .collect();
+        .collect::<Result<Vec<_>, Error>>()?;
     let general = |shader: u32| {
         vk::RayTracingShaderGroupCreateInfoKHR::default()
             .ty(vk::RayTracingShaderGroupTypeKHR::GENERAL)
@@ -222,18 +214,14 @@ pub(super) fn ray_tracing_pipeline(
         .max_pipeline_ray_recursion_depth(RECURSION_DEPTH)
         .layout(layout);
     let loader = ash::khr::ray_tracing_pipeline::Device::new(owner.gpu.instance(), owner.gpu.device());
-    // SAFETY: a valid create-info; the modules are no longer needed once the pipeline exists.
+    // SAFETY: a valid create-info; the pipeline is handed to the owner.
     let created = unsafe {
-        let created = loader.create_ray_tracing_pipelines(
+        loader.create_ray_tracing_pipelines(
             vk::DeferredOperationKHR::null(),
             vk::PipelineCache::null(),
             &[info],
             None,
-        );
-        modules
-            .iter()
-            .for_each(|&module| owner.device().destroy_shader_module(module, None));
-        created
+        )
     };
     let pipeline = created.map_err(|(_, result)| Error::Vulkan("vkCreateRayTracingPipelinesKHR", result))?[0];
     owner.keep(pipeline, Object::Pipeline);
@@ -248,15 +236,7 @@ pub(super) fn ray_tracing_pipeline(
 
 fn ray_tracing_properties(owner: &Owner<'_>) -> vk::PhysicalDeviceRayTracingPipelinePropertiesKHR<'static> {
     let mut ray_tracing = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
-    let mut properties = vk::PhysicalDeviceProperties2::default().push_next(&mut ray_tracing);
-    // SAFETY: a plain query.
-    unsafe {
-        owner
-            .gpu
-            .instance()
-            .get_physical_device_properties2(owner.gpu.physical_device(), &mut properties);
-    }
-    ray_tracing.p_next = std::ptr::null_mut();
+    owner.gpu.extended_properties(&mut ray_tracing);
     ray_tracing
 }
 
@@ -305,35 +285,7 @@ fn binding_table(
 
 /// The WGSL ray-query compute pipeline ([`ray_query_source`]).
 pub(super) fn ray_query(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Result<vk::Pipeline, Error> {
-    let module = shader_module(owner, &compile_wgsl(&ray_query_source())?)?;
-    let stage = vk::PipelineShaderStageCreateInfo::default()
-        .stage(vk::ShaderStageFlags::COMPUTE)
-        .module(module)
-        .name(c"main");
-    let info = [vk::ComputePipelineCreateInfo::default()
-        .stage(stage)
-        .layout(layout)];
-    // SAFETY: a valid create-info; the module is no longer needed once the pipeline exists.
-    let created = unsafe {
-        let created = owner
-            .device()
-            .create_compute_pipelines(vk::PipelineCache::null(), &info, None);
-        owner.device().destroy_shader_module(module, None);
-        created
-    };
-    let pipeline = created.map_err(|(_, result)| Error::Vulkan("vkCreateComputePipelines", result))?[0];
-    owner.gpu.check_messages()?;
-    Ok(owner.keep(pipeline, Object::Pipeline))
-}
-
-fn shader_module(owner: &Owner<'_>, spirv: &[u32]) -> Result<vk::ShaderModule, Error> {
-    // SAFETY: valid SPIR-V words from glslang, slangc or naga.
-    unsafe {
-        owner
-            .device()
-            .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(spirv), None)
-    }
-    .map_err(vulkan("vkCreateShaderModule"))
+    owner.compute_pipeline(&compile_wgsl(&ray_query_source())?, layout)
 }
 
 /// Compiles a ray-tracing stage by its file's language: Slang (`.slang`) with slangc, GLSL with

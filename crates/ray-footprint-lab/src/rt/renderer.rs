@@ -212,6 +212,30 @@ impl<'g> Renderer<'g> {
                 Error::NotSupported(format!("{}: {reason}", self.owner.gpu.name()))
             })?,
         };
+        let target = self.target(push, uniforms, Records::PerPixel)?;
+        let started = Instant::now();
+        target.owner.submit(|device, command_buffer| {
+            self.record(device, command_buffer, target.set, push, (path, pipeline))
+        })?;
+        let trace_time = started.elapsed();
+        Ok(Frame {
+            width: push.width,
+            height: push.height,
+            pixels: target.owner.read(&target.colours, target.pixels)?,
+            records: target.owner.read(&target.records, target.pixels)?,
+            trace_time,
+        })
+    }
+
+    /// The buffers of a frame of `push`'s size (`records`, the colours and `uniforms`) and the
+    /// descriptor set binding them. Fails with [`Error::EmptyFrame`] on a frame without pixels and
+    /// with [`Error::FrameTooLarge`] when one of its buffers would pass `maxStorageBufferRange`.
+    fn target(
+        &self,
+        push: &RtPushConstants,
+        uniforms: &RtUniforms,
+        records: Records,
+    ) -> Result<Target<'g>, Error> {
         if push.width == 0 || push.height == 0 {
             return Err(Error::EmptyFrame {
                 width: push.width,
@@ -219,35 +243,35 @@ impl<'g> Renderer<'g> {
             });
         }
         let pixels = push.width as usize * push.height as usize;
-        let max = self.max_pixels();
+        let record_bytes = std::mem::size_of::<RtPixelRecord>();
+        let (record_count, largest_pixel_bytes) = match records {
+            Records::PerPixel => (pixels, record_bytes),
+            Records::StandIn => (1, 4),
+        };
+        let max = u64::from(self.owner.gpu.properties().limits.max_storage_buffer_range)
+            / largest_pixel_bytes as u64;
         if pixels as u64 > max {
             return Err(Error::FrameTooLarge {
                 pixels: pixels as u64,
                 max,
             });
         }
-        let mut frame = Owner::new(self.owner.gpu);
+        let mut owner = Owner::new(self.owner.gpu);
         let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
-        let record_bytes = std::mem::size_of::<RtPixelRecord>();
-        let records = frame.buffer((pixels * record_bytes) as u64, storage, Location::Host, 1)?;
-        let colours = frame.buffer((pixels * 4) as u64, storage, Location::Host, 1)?;
-        let uniforms = frame.upload(
+        let records = owner.buffer((record_count * record_bytes) as u64, storage, Location::Host, 1)?;
+        let colours = owner.buffer((pixels * 4) as u64, storage, Location::Host, 1)?;
+        let uniforms = owner.upload(
             bytemuck::bytes_of(uniforms),
             vk::BufferUsageFlags::UNIFORM_BUFFER,
             16,
         )?;
-        let set = self.descriptor_set(&mut frame, [&records, &colours, &uniforms])?;
-        let started = Instant::now();
-        frame.submit(|device, command_buffer| {
-            self.record(device, command_buffer, set, push, (path, pipeline))
-        })?;
-        let trace_time = started.elapsed();
-        Ok(Frame {
-            width: push.width,
-            height: push.height,
-            pixels: frame.read(&colours, pixels)?,
-            records: frame.read(&records, pixels)?,
-            trace_time,
+        let set = self.descriptor_set(&mut owner, [&records, &colours, &uniforms])?;
+        Ok(Target {
+            owner,
+            records,
+            colours,
+            set,
+            pixels,
         })
     }
 
@@ -262,26 +286,7 @@ impl<'g> Renderer<'g> {
             .iter()
             .map(|&(ty, count)| vk::DescriptorPoolSize::default().ty(ty).descriptor_count(count))
             .collect();
-        let pool_info = vk::DescriptorPoolCreateInfo::default()
-            .max_sets(1)
-            .pool_sizes(&sizes);
-        // SAFETY: valid create/allocate infos; the pool is handed to `frame`.
-        let set = unsafe {
-            let pool = frame
-                .device()
-                .create_descriptor_pool(&pool_info, None)
-                .map_err(vulkan("vkCreateDescriptorPool"))?;
-            frame.keep(pool, Object::DescriptorPool);
-            let set_layouts = [self.set_layout];
-            frame
-                .device()
-                .allocate_descriptor_sets(
-                    &vk::DescriptorSetAllocateInfo::default()
-                        .descriptor_pool(pool)
-                        .set_layouts(&set_layouts),
-                )
-                .map_err(vulkan("vkAllocateDescriptorSets"))?[0]
-        };
+        let set = frame.descriptor_set(self.set_layout, &sizes)?;
         let structures = [self.tlas];
         let mut scene =
             vk::WriteDescriptorSetAccelerationStructureKHR::default().acceleration_structures(&structures);
@@ -333,32 +338,54 @@ impl<'g> Renderer<'g> {
             Path::RayTracing => vk::PipelineBindPoint::RAY_TRACING_KHR,
             Path::RayQuery => vk::PipelineBindPoint::COMPUTE,
         };
+        self.bind(command_buffer, (bind_point, pipeline), set, push);
+        match path {
+            Path::RayTracing => self.ray_tracing.trace(command_buffer, push.width, push.height),
+            // SAFETY: recording into a command buffer in the recording state, the pipeline bound.
+            Path::RayQuery => unsafe {
+                device.cmd_dispatch(command_buffer, push.width.div_ceil(8), push.height.div_ceil(8), 1)
+            },
+        }
+        // SAFETY: recording into a command buffer in the recording state.
+        unsafe { barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages()) };
+    }
+
+    /// Records, into `command_buffer` (recording), the binding of `pipeline` at `bind_point` with
+    /// the frame's descriptor `set` and the push constants `push`.
+    fn bind(
+        &self,
+        command_buffer: vk::CommandBuffer,
+        (bind_point, pipeline): (vk::PipelineBindPoint, vk::Pipeline),
+        set: vk::DescriptorSet,
+        push: &RtPushConstants,
+    ) {
+        let device = self.owner.device();
         // SAFETY: recording into a command buffer in the recording state; every handle is alive.
         unsafe {
             device.cmd_bind_pipeline(command_buffer, bind_point, pipeline);
             device.cmd_bind_descriptor_sets(command_buffer, bind_point, self.layout, 0, &[set], &[]);
-            pipeline::push(&self.owner, command_buffer, self.layout, push);
-            match path {
-                Path::RayTracing => {
-                    let [raygen, miss, hit, callable] = &self.ray_tracing.regions;
-                    self.ray_tracing.loader.cmd_trace_rays(
-                        command_buffer,
-                        raygen,
-                        miss,
-                        hit,
-                        callable,
-                        push.width,
-                        push.height,
-                        1,
-                    );
-                }
-                Path::RayQuery => {
-                    device.cmd_dispatch(command_buffer, push.width.div_ceil(8), push.height.div_ceil(8), 1)
-                }
-            }
-            barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages());
         }
+        pipeline::push(&self.owner, command_buffer, self.layout, push);
     }
+}
+
+/// Which pixel records a frame's buffers hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Records {
+    /// One per pixel: the recording shaders write them.
+    PerPixel,
+    /// One standing in: the colour-only shaders declare the buffer but never write it.
+    StandIn,
+}
+
+/// A frame's buffers (and the uniforms, which `owner` keeps alive) and the descriptor set that
+/// binds them with the scene.
+struct Target<'g> {
+    owner: Owner<'g>,
+    records: Buffer,
+    colours: Buffer,
+    set: vk::DescriptorSet,
+    pixels: usize,
 }
 
 /// Largest anisotropy the renderer asks for: 16 samples along the footprint's long axis.

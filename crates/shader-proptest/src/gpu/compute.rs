@@ -3,8 +3,8 @@
 //! The buffers and their descriptor set are made by the first dispatch and reused by the next
 //! ones while they are large enough.
 
-use super::device::{vulkan, Error, Gpu};
-use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
+use super::device::{Error, Gpu};
+use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
 use crate::kernel::WORKGROUP_SIZE;
 use ash::vk;
 use std::sync::Mutex;
@@ -56,54 +56,16 @@ impl<'g> ComputeKernel<'g> {
         } else {
             &ranges[..]
         };
-        // SAFETY: valid create-info structs; every object is handed to the owner at once, and the
-        // shader module is destroyed once the pipeline exists.
-        unsafe {
-            let device = owner.device();
-            let set_layout = device
-                .create_descriptor_set_layout(
-                    &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
-                    None,
-                )
-                .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
-            owner.keep(set_layout, Object::SetLayout);
-            let set_layouts = [set_layout];
-            let layout_info = vk::PipelineLayoutCreateInfo::default()
-                .set_layouts(&set_layouts)
-                .push_constant_ranges(ranges);
-            let layout = owner
-                .device()
-                .create_pipeline_layout(&layout_info, None)
-                .map_err(vulkan("vkCreatePipelineLayout"))?;
-            owner.keep(layout, Object::PipelineLayout);
-            let module = owner
-                .device()
-                .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(spirv), None)
-                .map_err(vulkan("vkCreateShaderModule"))?;
-            let stage = vk::PipelineShaderStageCreateInfo::default()
-                .stage(vk::ShaderStageFlags::COMPUTE)
-                .module(module)
-                .name(c"main");
-            let info = [vk::ComputePipelineCreateInfo::default()
-                .stage(stage)
-                .layout(layout)];
-            let created = owner
-                .device()
-                .create_compute_pipelines(vk::PipelineCache::null(), &info, None);
-            owner.device().destroy_shader_module(module, None);
-            let pipeline =
-                created.map_err(|(_, result)| Error::Vulkan("vkCreateComputePipelines", result))?[0];
-            owner.keep(pipeline, Object::Pipeline);
-            gpu.check_messages()?;
-            Ok(ComputeKernel {
-                owner,
-                pipeline,
-                layout,
-                set_layout,
-                push_constant_bytes,
-                io: Mutex::new(None),
-            })
-        }
+        let (set_layout, layout) = owner.layouts(&bindings, ranges)?;
+        let pipeline = owner.compute_pipeline(spirv, layout)?;
+        Ok(ComputeKernel {
+            owner,
+            pipeline,
+            layout,
+            set_layout,
+            push_constant_bytes,
+            io: Mutex::new(None),
+        })
     }
 
     /// Runs `invocations` invocations over `input` and returns the first `output_words` words of
@@ -173,28 +135,7 @@ impl<'g> ComputeKernel<'g> {
         let sizes = [vk::DescriptorPoolSize::default()
             .ty(vk::DescriptorType::STORAGE_BUFFER)
             .descriptor_count(2)];
-        // SAFETY: valid create/allocate infos; the pool is handed to `owner`.
-        unsafe {
-            let pool = owner
-                .device()
-                .create_descriptor_pool(
-                    &vk::DescriptorPoolCreateInfo::default()
-                        .max_sets(1)
-                        .pool_sizes(&sizes),
-                    None,
-                )
-                .map_err(vulkan("vkCreateDescriptorPool"))?;
-            owner.keep(pool, Object::DescriptorPool);
-            let set_layouts = [self.set_layout];
-            Ok(owner
-                .device()
-                .allocate_descriptor_sets(
-                    &vk::DescriptorSetAllocateInfo::default()
-                        .descriptor_pool(pool)
-                        .set_layouts(&set_layouts),
-                )
-                .map_err(vulkan("vkAllocateDescriptorSets"))?[0])
-        }
+        owner.descriptor_set(self.set_layout, &sizes)
     }
 
     /// Binds the first `bytes` of each of `buffers` as bindings 0 and 1 of `set` (the kernel sees

@@ -4,7 +4,7 @@ use crate::shader::Feature;
 use ash::vk;
 use std::ffi::{c_void, CStr};
 use std::fmt;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 
 /// Environment variable naming the device to use (a case-insensitive part of its name) instead of
 /// lavapipe, for example `SHADER_PROPTEST_DEVICE=nvidia`.
@@ -95,7 +95,6 @@ pub struct DeviceRequest<'a> {
 /// Validation messages of severity warning or error are collected; any of them fails the dispatch
 /// or submission during which it arrived ([`Error::Validation`]).
 pub struct Gpu {
-    _entry: ash::Entry,
     instance: ash::Instance,
     debug_utils: ash::ext::debug_utils::Instance,
     messenger: vk::DebugUtilsMessengerEXT,
@@ -153,11 +152,8 @@ impl Gpu {
     /// Opens the device with the features `request` names. Fails with [`Error::Setup`] when the
     /// loader, the validation layer, a matching device or a required feature is missing.
     pub fn open(request: DeviceRequest<'_>) -> Result<Gpu, Error> {
-        // SAFETY: loading the system Vulkan loader; its functions are used per the Vulkan spec below.
-        let entry = unsafe { ash::Entry::load() }
-            .map_err(|e| setup(&format!("cannot load the Vulkan loader (libvulkan.so.1): {e}")))?;
         let messages: Box<Mutex<Vec<String>>> = Box::default();
-        let (instance, debug_utils, messenger) = instance(&entry, &messages)?;
+        let (instance, debug_utils, messenger) = instance(loader()?, &messages)?;
         let opened = open_device(&instance, request);
         let (candidate, device, enabled, missing) = match opened {
             Ok(opened) => opened,
@@ -188,7 +184,6 @@ impl Gpu {
             }
         };
         let gpu = Gpu {
-            _entry: entry,
             instance,
             debug_utils,
             messenger,
@@ -252,6 +247,18 @@ impl Gpu {
         unsafe { self.instance.get_physical_device_properties(self.physical) }
     }
 
+    /// Fills `properties`, a structure that extends `VkPhysicalDeviceProperties2` (the
+    /// acceleration structures' or the ray-tracing pipeline's properties, for example), from the
+    /// physical device.
+    pub fn extended_properties<T: vk::ExtendsPhysicalDeviceProperties2>(&self, properties: &mut T) {
+        let mut chain = vk::PhysicalDeviceProperties2::default().push_next(properties);
+        // SAFETY: a plain query into a chain of one structure the caller owns.
+        unsafe {
+            self.instance
+                .get_physical_device_properties2(self.physical, &mut chain)
+        }
+    }
+
     /// The queue family of the queue every submission goes to (its properties say, for example,
     /// how many bits its timestamps have).
     pub fn queue_family(&self) -> u32 {
@@ -289,6 +296,22 @@ impl Drop for Gpu {
             self.instance.destroy_instance(None);
         }
     }
+}
+
+/// The Vulkan loader, loaded on first use and kept for the life of the process: every [`Gpu`]
+/// makes its own instance from it, and the library (with the driver it loads) is never unloaded.
+/// Loading and unloading it once per device made NVIDIA's driver fail `vkCreateInstance` ("Unable
+/// to find a Vulkan driver") after about 30 devices in one process.
+fn loader() -> Result<&'static ash::Entry, Error> {
+    static LOADER: OnceLock<Result<ash::Entry, String>> = OnceLock::new();
+    LOADER
+        .get_or_init(|| {
+            // SAFETY: loading the system Vulkan loader; its functions are used per the Vulkan spec,
+            // and a static is never dropped, so it stays loaded while any instance made from it lives.
+            unsafe { ash::Entry::load() }.map_err(|e| e.to_string())
+        })
+        .as_ref()
+        .map_err(|e| setup(&format!("cannot load the Vulkan loader (libvulkan.so.1): {e}")))
 }
 
 /// A Vulkan 1.3 instance with the validation layer, and a messenger collecting into `messages`.
@@ -580,6 +603,22 @@ fn pick_device(instance: &ash::Instance) -> Result<Candidate, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Devices opened and dropped one after another all open, each with its own instance made from
+    /// the one loader of the process.
+    #[test]
+    fn devices_opened_in_a_row_share_one_loader() {
+        let first = loader().unwrap_or_else(|error| panic!("{error}"));
+        for opened in 1..=50 {
+            let gpu = Gpu::new().unwrap_or_else(|error| panic!("device {opened} of 50: {error}"));
+            drop(gpu);
+            let again = loader().unwrap_or_else(|error| panic!("{error}"));
+            assert!(
+                std::ptr::eq(first, again),
+                "device {opened} loaded the loader again"
+            );
+        }
+    }
 
     /// A call that breaks a valid-usage rule (a zero-sized buffer) is reported, and fails the run.
     #[test]

@@ -32,6 +32,8 @@ pub enum Object {
     DescriptorPool(vk::DescriptorPool),
     /// A query pool.
     QueryPool(vk::QueryPool),
+    /// A shader module (a pipeline needs it only while it is created).
+    ShaderModule(vk::ShaderModule),
 }
 
 /// Where a buffer's memory lives.
@@ -368,6 +370,89 @@ impl<'g> Owner<'g> {
     }
 }
 
+impl Owner<'_> {
+    /// A descriptor-set layout of `bindings`, and a pipeline layout of it and `push_constants`.
+    pub fn layouts(
+        &mut self,
+        bindings: &[vk::DescriptorSetLayoutBinding<'_>],
+        push_constants: &[vk::PushConstantRange],
+    ) -> Result<(vk::DescriptorSetLayout, vk::PipelineLayout), Error> {
+        let info = vk::DescriptorSetLayoutCreateInfo::default().bindings(bindings);
+        // SAFETY: a valid create-info; the layout is handed to the owner.
+        let set_layout = unsafe { self.device().create_descriptor_set_layout(&info, None) }
+            .map_err(vulkan("vkCreateDescriptorSetLayout"))?;
+        self.keep(set_layout, Object::SetLayout);
+        let set_layouts = [set_layout];
+        let info = vk::PipelineLayoutCreateInfo::default()
+            .set_layouts(&set_layouts)
+            .push_constant_ranges(push_constants);
+        // SAFETY: a valid create-info; the layout is handed to the owner.
+        let layout = unsafe { self.device().create_pipeline_layout(&info, None) }
+            .map_err(vulkan("vkCreatePipelineLayout"))?;
+        Ok((set_layout, self.keep(layout, Object::PipelineLayout)))
+    }
+
+    /// A descriptor set of `set_layout`, from a pool of its own holding `sizes` (which the owner
+    /// keeps).
+    pub fn descriptor_set(
+        &mut self,
+        set_layout: vk::DescriptorSetLayout,
+        sizes: &[vk::DescriptorPoolSize],
+    ) -> Result<vk::DescriptorSet, Error> {
+        let info = vk::DescriptorPoolCreateInfo::default()
+            .max_sets(1)
+            .pool_sizes(sizes);
+        // SAFETY: a valid create-info; the pool is handed to the owner.
+        let pool = unsafe { self.device().create_descriptor_pool(&info, None) }
+            .map_err(vulkan("vkCreateDescriptorPool"))?;
+        self.keep(pool, Object::DescriptorPool);
+        let set_layouts = [set_layout];
+        let info = vk::DescriptorSetAllocateInfo::default()
+            .descriptor_pool(pool)
+            .set_layouts(&set_layouts);
+        // SAFETY: a valid allocate-info; the set goes with its pool.
+        let sets = unsafe { self.device().allocate_descriptor_sets(&info) }
+            .map_err(vulkan("vkAllocateDescriptorSets"))?;
+        Ok(sets[0])
+    }
+
+    /// A shader module of the SPIR-V words `spirv` (a compiler's output). A pipeline needs its
+    /// modules only while it is created: keep them in an owner that goes when the pipeline exists.
+    pub fn shader_module(&mut self, spirv: &[u32]) -> Result<vk::ShaderModule, Error> {
+        let info = vk::ShaderModuleCreateInfo::default().code(spirv);
+        // SAFETY: a valid create-info; the module is handed to the owner.
+        let module = unsafe { self.device().create_shader_module(&info, None) }
+            .map_err(vulkan("vkCreateShaderModule"))?;
+        Ok(self.keep(module, Object::ShaderModule))
+    }
+
+    /// A compute pipeline of `spirv` (entry point `main`) with `layout`; validation messages fail
+    /// the call.
+    pub fn compute_pipeline(
+        &mut self,
+        spirv: &[u32],
+        layout: vk::PipelineLayout,
+    ) -> Result<vk::Pipeline, Error> {
+        let mut modules = Owner::new(self.gpu);
+        let stage = vk::PipelineShaderStageCreateInfo::default()
+            .stage(vk::ShaderStageFlags::COMPUTE)
+            .module(modules.shader_module(spirv)?)
+            .name(c"main");
+        let info = [vk::ComputePipelineCreateInfo::default()
+            .stage(stage)
+            .layout(layout)];
+        // SAFETY: a valid create-info; the pipeline is handed to the owner.
+        let created = unsafe {
+            self.device()
+                .create_compute_pipelines(vk::PipelineCache::null(), &info, None)
+        };
+        let pipeline = created.map_err(|(_, result)| Error::Vulkan("vkCreateComputePipelines", result))?[0];
+        self.keep(pipeline, Object::Pipeline);
+        self.gpu.check_messages()?;
+        Ok(pipeline)
+    }
+}
+
 /// Records a barrier after which the host may read back what the `writers` stages wrote to memory
 /// (once the submission's fence has signalled).
 ///
@@ -429,6 +514,7 @@ impl Drop for Owner<'_> {
                     Object::SetLayout(l) => device.destroy_descriptor_set_layout(l, None),
                     Object::DescriptorPool(p) => device.destroy_descriptor_pool(p, None),
                     Object::QueryPool(p) => device.destroy_query_pool(p, None),
+                    Object::ShaderModule(m) => device.destroy_shader_module(m, None),
                 }
             }
         }

@@ -3,14 +3,14 @@
 //! compiled once per mode, so each computes only what its mode needs, and their payload carries
 //! only that ([`Mode::payload`]).
 
-use super::super::abi::{RtPixelRecord, RtPushConstants, RtUniforms};
+use super::super::abi::{RtPushConstants, RtUniforms};
 use super::super::mode::Mode;
 use super::super::pipeline::{self, RayTracing, COLOUR_STAGES, SHADER_DIR};
-use super::{Error, Frame, Renderer};
+use super::{Error, Frame, Records, Renderer, Target};
 use ash::vk;
 use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use shader_proptest::layout::{glsl_layout, GlslPacking};
-use shader_proptest::{barrier_shader_writes_to_host, vulkan, Buffer, Gpu, Location, Object, Owner};
+use shader_proptest::{barrier_shader_writes_to_host, vulkan, Gpu, Object, Owner};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -68,7 +68,7 @@ impl ColourPipeline<'_, '_> {
     /// Traces a frame: its colours only (`records` is empty); `trace_time` is the wall time from
     /// submission to completion.
     pub fn render(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, Error> {
-        let target = self.target(push, uniforms)?;
+        let target = self.renderer.target(push, uniforms, Records::StandIn)?;
         let started = Instant::now();
         target
             .owner
@@ -94,7 +94,7 @@ impl ColourPipeline<'_, '_> {
         frames: usize,
     ) -> Result<Vec<Duration>, Error> {
         let timestamps = timestamps(self.owner.gpu)?;
-        let mut target = self.target(push, uniforms)?;
+        let mut target = self.renderer.target(push, uniforms, Records::StandIn)?;
         let pool = query_pool(&mut target.owner)?;
         let mut times = Vec::with_capacity(frames);
         for frame in 0..warm_up + frames {
@@ -119,48 +119,6 @@ impl ColourPipeline<'_, '_> {
         Ok(times)
     }
 
-    /// The per-frame buffers and descriptor set of a frame of `push`'s size.
-    fn target(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Target<'_>, Error> {
-        if push.width == 0 || push.height == 0 {
-            return Err(Error::EmptyFrame {
-                width: push.width,
-                height: push.height,
-            });
-        }
-        let pixels = push.width as usize * push.height as usize;
-        let max = u64::from(self.owner.gpu.properties().limits.max_storage_buffer_range) / 4;
-        if pixels as u64 > max {
-            return Err(Error::FrameTooLarge {
-                pixels: pixels as u64,
-                max,
-            });
-        }
-        let mut owner = Owner::new(self.owner.gpu);
-        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
-        // The shaders declare the record buffer but never write it: one record stands in.
-        let records = owner.buffer(
-            std::mem::size_of::<RtPixelRecord>() as u64,
-            storage,
-            Location::Host,
-            1,
-        )?;
-        let colours = owner.buffer((pixels * 4) as u64, storage, Location::Host, 1)?;
-        let uniforms = owner.upload(
-            bytemuck::bytes_of(uniforms),
-            vk::BufferUsageFlags::UNIFORM_BUFFER,
-            16,
-        )?;
-        let set = self
-            .renderer
-            .descriptor_set(&mut owner, [&records, &colours, &uniforms])?;
-        Ok(Target {
-            owner,
-            colours,
-            set,
-            pixels,
-        })
-    }
-
     /// Records one trace into `command_buffer`, between two timestamps in `timing` when given,
     /// then makes its writes visible to the host.
     fn record(
@@ -171,43 +129,29 @@ impl ColourPipeline<'_, '_> {
         push: &RtPushConstants,
         timing: Option<vk::QueryPool>,
     ) {
-        let bind_point = vk::PipelineBindPoint::RAY_TRACING_KHR;
-        let layout = self.renderer.layout;
-        // SAFETY: recording into a command buffer in the recording state; every handle is alive.
-        unsafe {
-            if let Some(pool) = timing {
+        if let Some(pool) = timing {
+            // SAFETY: recording into a command buffer in the recording state; the pool is alive.
+            unsafe {
                 device.cmd_reset_query_pool(command_buffer, pool, 0, 2);
                 device.cmd_write_timestamp(command_buffer, vk::PipelineStageFlags::TOP_OF_PIPE, pool, 0);
             }
-            device.cmd_bind_pipeline(command_buffer, bind_point, self.ray_tracing.pipeline);
-            device.cmd_bind_descriptor_sets(command_buffer, bind_point, layout, 0, &[target.set], &[]);
-            pipeline::push(&self.owner, command_buffer, layout, push);
-            let [raygen, miss, hit, callable] = &self.ray_tracing.regions;
-            self.ray_tracing.loader.cmd_trace_rays(
-                command_buffer,
-                raygen,
-                miss,
-                hit,
-                callable,
-                push.width,
-                push.height,
-                1,
-            );
+        }
+        let bind_point = vk::PipelineBindPoint::RAY_TRACING_KHR;
+        self.renderer.bind(
+            command_buffer,
+            (bind_point, self.ray_tracing.pipeline),
+            target.set,
+            push,
+        );
+        self.ray_tracing.trace(command_buffer, push.width, push.height);
+        // SAFETY: recording into a command buffer in the recording state; the pool is alive.
+        unsafe {
             if let Some(pool) = timing {
                 device.cmd_write_timestamp(command_buffer, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, 1);
             }
             barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages());
         }
     }
-}
-
-/// A frame's buffers: the colours (and a stand-in record buffer and the uniforms, which
-/// `owner` keeps alive) and the descriptor set that binds them.
-struct Target<'g> {
-    owner: Owner<'g>,
-    colours: Buffer,
-    set: vk::DescriptorSet,
-    pixels: usize,
 }
 
 /// The size of `RtColourPayload` compiled with `defines`, in the scalar layout (glslang's).
