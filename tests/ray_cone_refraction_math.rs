@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{worst_case, Rng};
 use glam::{DVec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
 
@@ -282,9 +282,7 @@ const COMFORTABLE_F32_ERROR: f64 = 1.0e-4;
 /// relative bounds the f32 rounding (as in the flat test).
 #[test]
 fn index_one_leaves_the_cone_unchanged() {
-    let mut rng = Rng(0x5eed_0003);
-    let mut worst = 0.0f64;
-    for _ in 0..20_000 {
+    let worst = worst_case(0x5eed_0003, 20_000, |rng| {
         let incidence = rng.range(0.0, f64::from(rc::MAX_INCIDENCE_ANGLE));
         let room = 1.8 * (f64::from(rc::MAX_INCIDENCE_ANGLE) - incidence);
         let case = Case::new(
@@ -297,8 +295,8 @@ fn index_one_leaves_the_cone_unchanged() {
         let error = relative(same.width, f64::from(case.cone.width))
             .max(relative(same.spread_angle, f64::from(case.cone.spread_angle)));
         assert!(error < 1.0e-3, "{case:?}: {same:?}");
-        worst = worst.max(error);
-    }
+        error
+    });
     println!("eta = 1: worst relative change {worst:.2e}");
 }
 
@@ -381,9 +379,7 @@ fn small_cones_follow_the_first_order_formulas_and_come_back_out_unchanged() {
 /// `q = (spread + beta) / 2`, which differs from that by `O(q^3)`: below `eta^3 q^3` here.
 #[test]
 fn normal_incidence_matches_the_optix_toolkit_thin_form() {
-    let mut rng = Rng(0x5eed_0005);
-    let mut worst = 0.0f64;
-    for _ in 0..20_000 {
+    let worst = worst_case(0x5eed_0005, 20_000, |rng| {
         let eta = rng.range(0.4, 2.5) as f32;
         let curvature = rng.range(-10.0, 10.0);
         let width = rng.log_range(-6.0, -3.0) as f32;
@@ -411,8 +407,8 @@ fn normal_incidence_matches_the_optix_toolkit_thin_form() {
             refracted.cone.width, width,
             "the width passes unchanged at normal incidence"
         );
-        worst = worst.max(error / (thin_form.abs() + f64::from(beta).abs()).max(1.0e-30));
-    }
+        error / (thin_form.abs() + f64::from(beta).abs()).max(1.0e-30)
+    });
     println!("normal incidence: worst |ours - OptiX thin form| / (|spread'| + |beta|) = {worst:.2e}");
 }
 

@@ -23,6 +23,13 @@ pub fn assert_generated_block(path: &Path, start: &str, end: &str, block: &str, 
     );
 }
 
+/// The largest error over `cases` random cases: `error` checks one case drawn from a generator
+/// seeded with `seed` (one generator for all cases) and returns the error it measured.
+pub fn worst_case(seed: u64, cases: usize, mut error: impl FnMut(&mut Rng) -> f64) -> f64 {
+    let mut rng = Rng(seed);
+    (0..cases).map(|_| error(&mut rng)).fold(0.0, f64::max)
+}
+
 /// Asserts that the struct `$ty` is `$size` bytes long with each listed field at the offset given
 /// (`assert_layout!(Type, 32, { a: 0, b: 16 })`), naming the field that is elsewhere; prints the
 /// size.
