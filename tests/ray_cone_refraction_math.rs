@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{worst_case, Rng};
 use glam::{DVec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
 
@@ -155,6 +155,30 @@ fn relative(a: f32, b: f64) -> f64 {
     (f64::from(a) - b).abs() / b.abs()
 }
 
+/// Accepted cases per test.
+const CASES: usize = 20_000;
+
+/// Each of `N` errors' largest value over [`CASES`] accepted cases: `check` draws one case from a
+/// generator seeded with `seed` (one generator for all draws), given how many were accepted before,
+/// and returns its errors, or `None` to reject the draw.
+fn worst_accepted<const N: usize>(
+    seed: u64,
+    mut check: impl FnMut(&mut Rng, usize) -> Option<[f64; N]>,
+) -> [f64; N] {
+    let mut rng = Rng(seed);
+    let mut worst = [0.0f64; N];
+    let mut accepted = 0;
+    while accepted < CASES {
+        if let Some(errors) = check(&mut rng, accepted) {
+            for (worst, error) in worst.iter_mut().zip(errors) {
+                *worst = worst.max(error);
+            }
+            accepted += 1;
+        }
+    }
+    worst
+}
+
 /// A case whose boundary rays land and leave at cosines of at least 0.05 (away from grazing and
 /// from the critical angle, where the f32 inputs' rounding is amplified by up to 20 per cosine).
 fn well_conditioned(traced: &Traced) -> bool {
@@ -167,18 +191,13 @@ fn well_conditioned(traced: &Traced) -> bool {
 /// 30 * 400 * 6e-8 < 1e-3.
 #[test]
 fn flat_refraction_matches_the_traced_boundary_rays() {
-    let mut rng = Rng(0x5eed_0001);
-    let (mut worst_width, mut worst_spread, mut cases) = (0.0f64, 0.0f64, 0);
-    while cases < 20_000 {
+    let [worst_width, worst_spread] = worst_accepted(0x5eed_0001, |rng, accepted| {
         let spread = rng.log_range(-7.0, 0.0) * if rng.next() < 0.2 { -1.0 } else { 1.0 };
-        let eta = [rng.range(0.4, 0.95), rng.range(1.05, 2.5), 1.0 / 1.5, 1.5][cases % 4];
+        let eta = [rng.range(0.4, 0.95), rng.range(1.05, 2.5), 1.0 / 1.5, 1.5][accepted % 4];
         let case = Case::new(rng.range(0.0, 1.5), rng.log_range(-6.0, 3.0), spread, eta);
-        let Some(traced) = case.trace(Interface { curvature: 0.0 }) else {
-            continue;
-        };
-        if !well_conditioned(&traced) {
-            continue;
-        }
+        let traced = case
+            .trace(Interface { curvature: 0.0 })
+            .filter(well_conditioned)?;
         let refracted = case.refract();
         assert!(!refracted.total_internal_reflection);
         let width_error = relative(refracted.cone.width, traced.width);
@@ -190,12 +209,10 @@ fn flat_refraction_matches_the_traced_boundary_rays() {
             traced.width,
             traced.spread
         );
-        worst_width = worst_width.max(width_error);
-        worst_spread = worst_spread.max(spread_error);
-        cases += 1;
-    }
+        Some([width_error, spread_error])
+    });
     println!(
-        "flat interface, {cases} cones: worst relative error width {worst_width:.2e}, spread {worst_spread:.2e}"
+        "flat interface, {CASES} cones: worst relative error width {worst_width:.2e}, spread {worst_spread:.2e}"
     );
 }
 
@@ -206,23 +223,16 @@ fn flat_refraction_matches_the_traced_boundary_rays() {
 /// the inputs' cosines (>= 0.05) and is far below the first-order effect `beta ~ x` it checks.
 #[test]
 fn curved_refraction_matches_the_traced_boundary_rays() {
-    let mut rng = Rng(0x5eed_0002);
-    let (mut worst_width, mut worst_spread, mut cases) = (0.0f64, 0.0f64, 0);
-    while cases < 20_000 {
+    let [worst_width, worst_spread] = worst_accepted(0x5eed_0002, |rng, accepted| {
         let curvature = if rng.next() < 0.5 { 1.0 } else { -1.0 };
-        let eta = [rng.range(0.4, 0.95), rng.range(1.05, 2.5)][cases % 2];
+        let eta = [rng.range(0.4, 0.95), rng.range(1.05, 2.5)][accepted % 2];
         let mut case = Case::new(
             rng.range(0.0, 1.2),
             rng.log_range(-5.0, -2.0),
             rng.range(-0.02, 0.02),
             eta,
         );
-        let Some(traced) = case.trace(Interface { curvature }) else {
-            continue;
-        };
-        if !well_conditioned(&traced) {
-            continue;
-        }
+        let traced = case.trace(Interface { curvature }).filter(well_conditioned)?;
         case.normal_spread = traced.normal_spread as f32;
         let footprint = f64::from(case.cone.width) / case.incidence().cos();
         let refracted = case.refract();
@@ -237,12 +247,10 @@ fn curved_refraction_matches_the_traced_boundary_rays() {
             traced.spread,
             traced.normal_spread
         );
-        worst_width = worst_width.max(width_error / footprint);
-        worst_spread = worst_spread.max(spread_error / footprint);
-        cases += 1;
-    }
+        Some([width_error / footprint, spread_error / footprint])
+    });
     println!(
-        "unit spheres, {cases} cones: worst relative error / footprint: width {worst_width:.3}, spread {worst_spread:.3}"
+        "unit spheres, {CASES} cones: worst relative error / footprint: width {worst_width:.3}, spread {worst_spread:.3}"
     );
 }
 
@@ -282,9 +290,7 @@ const COMFORTABLE_F32_ERROR: f64 = 1.0e-4;
 /// relative bounds the f32 rounding (as in the flat test).
 #[test]
 fn index_one_leaves_the_cone_unchanged() {
-    let mut rng = Rng(0x5eed_0003);
-    let mut worst = 0.0f64;
-    for _ in 0..20_000 {
+    let worst = worst_case(0x5eed_0003, CASES, |rng| {
         let incidence = rng.range(0.0, f64::from(rc::MAX_INCIDENCE_ANGLE));
         let room = 1.8 * (f64::from(rc::MAX_INCIDENCE_ANGLE) - incidence);
         let case = Case::new(
@@ -297,8 +303,8 @@ fn index_one_leaves_the_cone_unchanged() {
         let error = relative(same.width, f64::from(case.cone.width))
             .max(relative(same.spread_angle, f64::from(case.cone.spread_angle)));
         assert!(error < 1.0e-3, "{case:?}: {same:?}");
-        worst = worst.max(error);
-    }
+        error
+    });
     println!("eta = 1: worst relative change {worst:.2e}");
 }
 
@@ -310,22 +316,16 @@ fn index_one_leaves_the_cone_unchanged() {
 /// cone within both passes' corrections (the first-order maps are each other's inverses).
 #[test]
 fn small_cones_follow_the_first_order_formulas_and_come_back_out_unchanged() {
-    let mut rng = Rng(0x5eed_0004);
-    let (mut worst_spread, mut worst_width, mut worst_round_trip, mut cases) = (0.0f64, 0.0f64, 0.0f64, 0);
-    while cases < 20_000 {
-        let eta = [rng.range(0.4, 0.95), rng.range(1.05, 2.5)][cases % 2];
+    let [worst_spread, worst_width, worst_round_trip] = worst_accepted(0x5eed_0004, |rng, accepted| {
+        let eta = [rng.range(0.4, 0.95), rng.range(1.05, 2.5)][accepted % 2];
         let case = Case::new(
             rng.range(0.0, 1.5),
             rng.log_range(-6.0, 3.0),
             rng.sign() * rng.log_range(-7.0, -2.0),
             eta,
         );
-        if !case
-            .trace(Interface { curvature: 0.0 })
-            .is_some_and(|t| comfortably_conditioned(&t))
-        {
-            continue;
-        }
+        case.trace(Interface { curvature: 0.0 })
+            .filter(comfortably_conditioned)?;
         let (incidence, eta) = (case.incidence(), f64::from(case.eta));
         let h = 0.5 * f64::from(case.cone.spread_angle);
         let (spread_correction, width_correction) = second_order_corrections(incidence, eta, h);
@@ -343,13 +343,11 @@ fn small_cones_follow_the_first_order_formulas_and_come_back_out_unchanged() {
         let (back_spread, back_width) =
             second_order_corrections(back.incidence(), f64::from(back.eta), back_h);
         let corrections = [spread_correction, width_correction, back_spread, back_width];
-        if corrections.iter().any(|&c| c > 1.0e-3)
-            || !back
-                .trace(Interface { curvature: 0.0 })
-                .is_some_and(|t| comfortably_conditioned(&t))
-        {
-            continue;
+        if corrections.iter().any(|&c| c > 1.0e-3) {
+            return None;
         }
+        back.trace(Interface { curvature: 0.0 })
+            .filter(comfortably_conditioned)?;
         let spread_error = relative(inside.spread_angle, m * f64::from(case.cone.spread_angle));
         let width_error = relative(inside.width, f64::from(case.cone.width) * cos_t / incidence.cos());
         assert!(
@@ -365,13 +363,10 @@ fn small_cones_follow_the_first_order_formulas_and_come_back_out_unchanged() {
             round_trip_error <= round_trip_bound,
             "{case:?}: in {inside:?}, out {out:?}"
         );
-        worst_spread = worst_spread.max(spread_error);
-        worst_width = worst_width.max(width_error);
-        worst_round_trip = worst_round_trip.max(round_trip_error);
-        cases += 1;
-    }
+        Some([spread_error, width_error, round_trip_error])
+    });
     println!(
-        "first order, {cases} cones: worst relative error spread {worst_spread:.2e} (vs eta gamma cos i / cos t), width {worst_width:.2e} (vs w cos t / cos i); in and back out: {worst_round_trip:.2e}"
+        "first order, {CASES} cones: worst relative error spread {worst_spread:.2e} (vs eta gamma cos i / cos t), width {worst_width:.2e} (vs w cos t / cos i); in and back out: {worst_round_trip:.2e}"
     );
 }
 
@@ -381,9 +376,7 @@ fn small_cones_follow_the_first_order_formulas_and_come_back_out_unchanged() {
 /// `q = (spread + beta) / 2`, which differs from that by `O(q^3)`: below `eta^3 q^3` here.
 #[test]
 fn normal_incidence_matches_the_optix_toolkit_thin_form() {
-    let mut rng = Rng(0x5eed_0005);
-    let mut worst = 0.0f64;
-    for _ in 0..20_000 {
+    let worst = worst_case(0x5eed_0005, CASES, |rng| {
         let eta = rng.range(0.4, 2.5) as f32;
         let curvature = rng.range(-10.0, 10.0);
         let width = rng.log_range(-6.0, -3.0) as f32;
@@ -411,8 +404,8 @@ fn normal_incidence_matches_the_optix_toolkit_thin_form() {
             refracted.cone.width, width,
             "the width passes unchanged at normal incidence"
         );
-        worst = worst.max(error / (thin_form.abs() + f64::from(beta).abs()).max(1.0e-30));
-    }
+        error / (thin_form.abs() + f64::from(beta).abs()).max(1.0e-30)
+    });
     println!("normal incidence: worst |ours - OptiX thin form| / (|spread'| + |beta|) = {worst:.2e}");
 }
 

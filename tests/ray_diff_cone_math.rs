@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{worst_case, Rng};
 use glam::{DMat3, DVec3, Mat3, Vec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
 use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, RayDiff};
@@ -120,9 +120,7 @@ fn normal_incidence_gives_the_isotropic_gradient() {
 /// the gradients of a shear-free texture follow with the texture's scale.
 #[test]
 fn the_major_axis_grows_as_one_over_the_cosine() {
-    let mut rng = Rng(0xa11_0002);
-    let mut worst = 0.0f64;
-    for _ in 0..10_000 {
+    let worst = worst_case(0xa11_0002, 10_000, |rng| {
         let normal = rng.unit();
         let cosine = rng.log_range(-3.0, 0.0);
         let direction = rng.direction_at(normal, cosine);
@@ -140,7 +138,7 @@ fn the_major_axis_grows_as_one_over_the_cosine() {
         let bound = F32_CHAIN / cosine;
         assert!(errors.iter().all(|&e| e < bound), "cos {cosine}: {errors:?}");
 
-        let p = triangle_in_plane(&mut rng, DVec3::ZERO, normal, 1.0);
+        let p = triangle_in_plane(rng, DVec3::ZERO, normal, 1.0);
         let scale = rng.log_range(-1.0, 1.0);
         let uv = similar_uvs(p, normal, rng.range(0.0, 6.3), scale);
         let g =
@@ -153,11 +151,11 @@ fn the_major_axis_grows_as_one_over_the_cosine() {
             gradient_errors.iter().all(|&e| e < bound),
             "cos {cosine}: {gradient_errors:?}"
         );
-        worst = errors
+        errors
             .iter()
             .chain(&gradient_errors)
-            .fold(worst, |m, &e| m.max(e * cosine));
-    }
+            .fold(0.0, |m, &e| m.max(e * cosine))
+    });
     println!("1 / cos growth down to cos = 1e-3: worst relative error x cos {worst:.2e}");
 }
 
@@ -169,9 +167,7 @@ fn the_major_axis_grows_as_one_over_the_cosine() {
 /// matrix squares the major axis).
 #[test]
 fn the_central_pixel_differential_spans_the_cone_footprint() {
-    let mut rng = Rng(0xa11_0003);
-    let mut worst = 0.0f64;
-    for _ in 0..5_000 {
+    let worst = worst_case(0xa11_0003, 5_000, |rng| {
         let view = rng.unit();
         let right = view.any_orthonormal_vector();
         let up = view.cross(right);
@@ -190,7 +186,7 @@ fn the_central_pixel_differential_spans_the_cone_footprint() {
         let t = rng.log_range(-1.0, 3.0);
         let cosine = rng.log_range(-2.0, 0.0);
         let normal = -rng.direction_at(-direction, cosine);
-        let p = triangle_in_plane(&mut rng, direction * t, normal, t * 0.1);
+        let p = triangle_in_plane(rng, direction * t, normal, t * 0.1);
         let uv: [Vec2; 3] = std::array::from_fn(|_| Vec2::new(rng.next() as f32, rng.next() as f32));
         let (d, t32) = (direction.as_vec3(), t as f32);
         let at_hit = rd::transfer(diff, d, t32, normal.as_vec3());
@@ -206,8 +202,8 @@ fn the_central_pixel_differential_spans_the_cone_footprint() {
             error < F32_CHAIN / (cosine * cosine),
             "cos {cosine}: {cone:?} vs {differential:?}"
         );
-        worst = worst.max(error * cosine * cosine);
-    }
+        error * cosine * cosine
+    });
     println!("central pixel: worst relative difference of the UV ellipses x cos^2 {worst:.2e}");
 }
 
@@ -224,9 +220,7 @@ fn optix_projection(width: f64, d: DVec3, n: DVec3) -> [DVec3; 2] {
 /// crate's major axis is longer by `1 / (16 |cos|)` (no cap but `DIFF_MIN_COS`).
 #[test]
 fn the_optix_toolkit_projection_spans_the_same_ellipse() {
-    let mut rng = Rng(0xa11_0004);
-    let mut worst = 0.0f64;
-    for _ in 0..10_000 {
+    let worst = worst_case(0xa11_0004, 10_000, |rng| {
         let normal = rng.unit();
         let cosine = rng.range(1.0 / 16.0, 0.999);
         let direction = rng.direction_at(normal, cosine);
@@ -237,8 +231,8 @@ fn the_optix_toolkit_projection_spans_the_same_ellipse() {
             ellipse(&optix_projection(width, direction, normal)),
         );
         assert!(error < F32_CHAIN / (cosine * cosine), "cos {cosine}: {error}");
-        worst = worst.max(error);
-    }
+        error
+    });
     let (normal, direction) = (DVec3::Z, DVec3::new(0.999_8, 0.0, -0.02).normalize());
     let ours = rd::anisotropic_cone_axes(1.0, normal.as_vec3(), direction.as_vec3());
     let capped = optix_projection(1.0, direction, normal)[0].length();
@@ -315,9 +309,7 @@ fn conversions_round_trip_and_commute_with_propagation() {
 /// this way, the cone gives the same ellipse), at any incidence down to `|cos| = 0.01`.
 #[test]
 fn a_transferred_cone_differential_spans_the_anisotropic_footprint() {
-    let mut rng = Rng(0xa11_0006);
-    let mut worst = 0.0f64;
-    for _ in 0..20_000 {
+    let worst = worst_case(0xa11_0006, 20_000, |rng| {
         let cone = RayCone {
             width: rng.log_range(-6.0, 0.0) as f32,
             spread_angle: rng.log_range(-5.0, -1.0) as f32,
@@ -336,8 +328,8 @@ fn a_transferred_cone_differential_spans_the_anisotropic_footprint() {
             error < F32_CHAIN / (cosine * cosine),
             "cos {cosine}: {at_hit:?} vs {footprint:?}"
         );
-        worst = worst.max(error * cosine * cosine);
-    }
+        error * cosine * cosine
+    });
     println!("transferred cone differential vs anisotropic footprint: worst relative ellipse difference x cos^2 {worst:.2e}");
 }
 

@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{worst_case, Rng};
 use glam::{DVec2, DVec3, Mat4, Vec2, Vec3};
 use ray_footprint::ray_cone as rc;
 use ray_footprint::ray_diff::{self as rd, Derivatives3, GBufferSample, RayDiff};
@@ -199,13 +199,19 @@ fn forward_difference(f: impl Fn(DVec2) -> DVec2, pixel: DVec2, h: f64) -> [DVec
     ]
 }
 
-/// Relative distance between an analytic `(d/dx, d/dy)` and a finite difference.
-fn relative_error(analytic: [DVec2; 2], difference: [DVec2; 2]) -> f64 {
-    let scale = analytic[0].length().max(analytic[1].length());
-    (analytic[0] - difference[0])
+/// How far a pair `(d/dx, d/dy)` is from a reference pair: the larger of `|got[0] - reference[0]|`
+/// and `|got[1] - reference[1]|`, relative to the larger of `|reference[0]|` and `|reference[1]|`.
+fn relative_error(got: [DVec3; 2], reference: [DVec3; 2]) -> f64 {
+    let scale = reference[0].length().max(reference[1].length());
+    (got[0] - reference[0])
         .length()
-        .max((analytic[1] - difference[1]).length())
+        .max((got[1] - reference[1]).length())
         / scale
+}
+
+/// A pair of 2D derivatives as 3-vectors with `z = 0`, for [`relative_error`].
+fn flat(pair: [DVec2; 2]) -> [DVec3; 2] {
+    pair.map(|v| v.extend(0.0))
 }
 
 /// Numbers in scientific notation.
@@ -239,9 +245,9 @@ fn barycentric_and_uv_differentials_match_finite_differences() {
         let analytic_uv = [g.dx.as_dvec2(), g.dy.as_dvec2()];
         for (i, &h) in steps.iter().enumerate() {
             let fd = forward_difference(|p| hit.barycentrics(p), hit.pixel, h);
-            bary_errors[i].push(relative_error(analytic, fd));
+            bary_errors[i].push(relative_error(flat(fd), flat(analytic)));
             let fd_uv = forward_difference(|p| hit.uv(hit.barycentrics(p)), hit.pixel, h);
-            uv_errors[i].push(relative_error(analytic_uv, fd_uv));
+            uv_errors[i].push(relative_error(flat(fd_uv), flat(analytic_uv)));
         }
     }
     for (name, errors) in [("barycentric", &bary_errors), ("uv", &uv_errors)] {
@@ -313,17 +319,13 @@ fn barycentric_offsets_are_exact_one_pixel_differences() {
             hit3(b).as_vec3(),
         );
         let exact = [hit3(b_right) - hit3(b), hit3(b_below) - hit3(b)];
-        let scale = exact[0].length().max(exact[1].length());
-        let error = (offsets.dx.as_dvec3() - exact[0])
-            .length()
-            .max((offsets.dy.as_dvec3() - exact[1]).length())
-            / scale;
-        exact_errors.push(error);
+        let offsets = [offsets.dx.as_dvec3(), offsets.dy.as_dvec3()];
+        exact_errors.push(relative_error(offsets, exact));
         let analytic = hit.barycentric_derivatives();
         let uv = |v: DVec3| DVec2::new(v.y, v.z);
         analytic_gaps.push(relative_error(
-            [analytic.dx.as_dvec2(), analytic.dy.as_dvec2()],
-            [uv(offsets.dx.as_dvec3()), uv(offsets.dy.as_dvec3())],
+            flat(offsets.map(uv)),
+            flat([analytic.dx.as_dvec2(), analytic.dy.as_dvec2()]),
         ));
     }
     let worst = exact_errors.iter().copied().fold(0.0, f64::max);
@@ -342,29 +344,17 @@ fn barycentric_offsets_are_exact_one_pixel_differences() {
     assert!(median(analytic_gaps) < 2.0e-2);
 }
 
-/// The larger of `|got[0] - expected[0]|` and `|got[1] - expected[1]|`, relative to the larger of
-/// `|expected[0]|` and `|expected[1]|`.
-fn relative_difference(got: [Vec3; 2], expected: [Vec3; 2]) -> f32 {
-    let scale = expected[0].length().max(expected[1].length());
-    (got[0] - expected[0])
-        .length()
-        .max((got[1] - expected[1]).length())
-        / scale
-}
-
 /// Reflecting a differential off a planar mirror gives the differential of the mirror-image camera:
 /// the same direction differentials, and the same position differentials after any further distance.
 #[test]
 fn planar_reflection_equals_mirror_image_camera() {
-    let mut rng = Rng(0x0bad_cafe_dead_beef);
-    let mut worst: f64 = 0.0;
-    for _ in 0..200 {
+    let worst = worst_case(0x0bad_cafe_dead_beef, 200, |rng| {
         let position = DVec3::new(rng.range(-3.0, 3.0), 1.0, 2.0);
-        let camera = Camera::random(&mut rng, position);
-        let pixel = random_pixel(&camera, &mut rng);
+        let camera = Camera::random(rng, position);
+        let pixel = random_pixel(&camera, rng);
         let direction = camera.direction(pixel);
         let t = rng.range(1.0, 20.0);
-        let normal = facing_normal(direction, 0.2, &mut rng);
+        let normal = facing_normal(direction, 0.2, rng);
         let point = camera.position + t * direction;
         // The reflected differential.
         let transferred = rd::transfer(
@@ -384,7 +374,7 @@ fn planar_reflection_equals_mirror_image_camera() {
         assert!((mirror.direction(pixel) - reflected_direction).length() < 1e-12);
         // Continue both by a further distance to a second, random plane.
         let t1 = rng.range(0.5, 20.0);
-        let second_normal = facing_normal(reflected_direction, 0.2, &mut rng);
+        let second_normal = facing_normal(reflected_direction, 0.2, rng);
         let after_mirror = rd::transfer(
             reflected,
             reflected_direction.as_vec3(),
@@ -397,18 +387,16 @@ fn planar_reflection_equals_mirror_image_camera() {
             (t + t1) as f32,
             second_normal.as_vec3(),
         );
-        let direction_error = relative_difference(
-            [reflected.d_direction_dx, reflected.d_direction_dy],
-            [mirror_diff.d_direction_dx, mirror_diff.d_direction_dy],
+        let direction_error = relative_error(
+            [reflected.d_direction_dx, reflected.d_direction_dy].map(Vec3::as_dvec3),
+            [mirror_diff.d_direction_dx, mirror_diff.d_direction_dy].map(Vec3::as_dvec3),
         );
-        let position_error = relative_difference(
-            [after_mirror.d_origin_dx, after_mirror.d_origin_dy],
-            [from_mirror_camera.d_origin_dx, from_mirror_camera.d_origin_dy],
+        let position_error = relative_error(
+            [after_mirror.d_origin_dx, after_mirror.d_origin_dy].map(Vec3::as_dvec3),
+            [from_mirror_camera.d_origin_dx, from_mirror_camera.d_origin_dy].map(Vec3::as_dvec3),
         );
-        worst = worst
-            .max(f64::from(direction_error))
-            .max(f64::from(position_error));
-    }
+        direction_error.max(position_error)
+    });
     println!("mirror vs mirror-image camera: worst relative difference {worst:.3e}");
     // f32 arithmetic on unit vectors and distances up to 40: a few hundred ULP after two transfers
     // at cosines down to 0.2.
@@ -736,20 +724,16 @@ fn f64_reintersection_fixes_far_from_origin_deltas() {
 /// `RayDiff` is 64 bytes with explicit pads after each vec3, as WGSL and std430 / scalar lay it out.
 #[test]
 fn ray_diff_layout() {
-    use std::mem::{offset_of, size_of};
-    let offsets = [
-        offset_of!(RayDiff, d_origin_dx),
-        offset_of!(RayDiff, pad0),
-        offset_of!(RayDiff, d_origin_dy),
-        offset_of!(RayDiff, pad1),
-        offset_of!(RayDiff, d_direction_dx),
-        offset_of!(RayDiff, pad2),
-        offset_of!(RayDiff, d_direction_dy),
-        offset_of!(RayDiff, pad3),
-    ];
-    println!("RayDiff: size {}, offsets {offsets:?}", size_of::<RayDiff>());
-    assert_eq!(size_of::<RayDiff>(), 64);
-    assert_eq!(offsets, [0, 12, 16, 28, 32, 44, 48, 60]);
+    assert_layout!(RayDiff, 64, {
+        d_origin_dx: 0,
+        pad0: 12,
+        d_origin_dy: 16,
+        pad1: 28,
+        d_direction_dx: 32,
+        pad2: 44,
+        d_direction_dy: 48,
+        pad3: 60,
+    });
     let diff = RayDiff::new(Vec3::ONE, Vec3::ONE, Vec3::ONE, Vec3::ONE);
     let words: &[f32] = bytemuck::cast_slice(std::slice::from_ref(&diff));
     assert_eq!([words[3], words[7], words[11], words[15]], [0.0; 4]);

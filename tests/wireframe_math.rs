@@ -2,6 +2,8 @@
 //! lines on edges and none inside, hard steps, dash fractions, the bool-to-int mirror, validation
 //! and the presets' exact values. (Agreement of the shaders with this mirror is tests/agreement.rs.)
 
+mod common;
+
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::shaders::Module;
@@ -423,17 +425,20 @@ const TUTORIAL_PRESETS: [TutorialRow; 7] = [
     ("STIPPLE", 0.5, (1.0, 1.0), 1.0, true, 0.5, 20, true),
 ];
 
+/// The settings of a row, through [`WireframeSettings::new`], whose arguments follow the tutorial's
+/// column order: a constant that differs from it has a wrong value, or `new` takes its arguments
+/// in another order.
 fn spec_settings(row: &TutorialRow) -> WireframeSettings {
     let &(_, thickness, (x, y), smoothing, stipple, stipple_length, stipple_repeats, screen_space) = row;
-    WireframeSettings {
-        thickness_var: Vec2::new(x, y),
+    WireframeSettings::new(
         thickness,
+        Vec2::new(x, y),
         smoothing,
         stipple,
         stipple_length,
         stipple_repeats,
         screen_space,
-    }
+    )
 }
 
 #[test]
@@ -490,18 +495,15 @@ fn shader_presets_spell_the_spec_values() {
 
 #[test]
 fn settings_io_is_32_bytes_with_the_documented_offsets() {
-    use std::mem::{offset_of, size_of};
-    let offsets = [
-        offset_of!(WireframeSettingsIo, thickness_var),
-        offset_of!(WireframeSettingsIo, thickness),
-        offset_of!(WireframeSettingsIo, smoothing),
-        offset_of!(WireframeSettingsIo, stipple),
-        offset_of!(WireframeSettingsIo, stipple_length),
-        offset_of!(WireframeSettingsIo, stipple_repeats),
-        offset_of!(WireframeSettingsIo, screen_space),
-    ];
-    assert_eq!(offsets, [0, 8, 12, 16, 20, 24, 28]);
-    assert_eq!(size_of::<WireframeSettingsIo>(), 32);
+    assert_layout!(WireframeSettingsIo, 32, {
+        thickness_var: 0,
+        thickness: 8,
+        smoothing: 12,
+        stipple: 16,
+        stipple_length: 20,
+        stipple_repeats: 24,
+        screen_space: 28,
+    });
     let bytes = bytemuck::bytes_of(&wf::WIREFRAME_FLAKE.pack()).to_vec();
     assert_eq!(&bytes[16..20], &1i32.to_le_bytes(), "stipple flag");
     assert_eq!(&bytes[24..28], &10i32.to_le_bytes(), "stipple_repeats");

@@ -23,6 +23,34 @@ pub fn assert_generated_block(path: &Path, start: &str, end: &str, block: &str, 
     );
 }
 
+/// The largest error over `cases` random cases: `error` checks one case drawn from a generator
+/// seeded with `seed` (one generator for all cases) and returns the error it measured.
+pub fn worst_case(seed: u64, cases: usize, mut error: impl FnMut(&mut Rng) -> f64) -> f64 {
+    let mut rng = Rng(seed);
+    (0..cases).map(|_| error(&mut rng)).fold(0.0, f64::max)
+}
+
+/// Asserts that the struct `$ty` is `$size` bytes long with each listed field at the offset given
+/// (`assert_layout!(Type, 32, { a: 0, b: 16 })`), naming the field that is elsewhere; prints the
+/// size.
+#[macro_export]
+macro_rules! assert_layout {
+    ($ty:ty, $size:expr, { $($field:ident: $offset:expr),+ $(,)? }) => {{
+        let size = std::mem::size_of::<$ty>();
+        println!("{}: size {size}", stringify!($ty));
+        assert_eq!(size, $size, "size of {}", stringify!($ty));
+        $(
+            assert_eq!(
+                std::mem::offset_of!($ty, $field),
+                $offset,
+                "offset of {}.{}",
+                stringify!($ty),
+                stringify!($field)
+            );
+        )+
+    }};
+}
+
 /// A small deterministic generator (xorshift64*), so the tests need no extra crate and always see
 /// the same cases.
 pub struct Rng(pub u64);
