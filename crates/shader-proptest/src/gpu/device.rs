@@ -298,19 +298,37 @@ impl Drop for Gpu {
     }
 }
 
-/// The Vulkan loader, loaded on first use and kept for the life of the process: every [`Gpu`]
-/// makes its own instance from it, and the library (with the driver it loads) is never unloaded.
-/// Loading and unloading it once per device made NVIDIA's driver fail `vkCreateInstance` ("Unable
-/// to find a Vulkan driver") after about 30 devices in one process.
+/// The Vulkan loader and one bare instance made from it, both kept for the life of the process.
+/// Every [`Gpu`] makes its own instance (with the validation layer and its own messenger) from
+/// this loader. The loader loads the driver's library when an instance is created and unloads it
+/// when the last one is destroyed, so a process that opens one device at a time would load and
+/// unload the driver once per device; NVIDIA's driver (580, on an H100) fails `vkCreateInstance`
+/// ("Unable to find a Vulkan driver") after about 30 such cycles. The bare instance (no layer, no
+/// extension, never destroyed) keeps the driver loaded. Where it cannot be created, each device's
+/// own instance reports why.
 fn loader() -> Result<&'static ash::Entry, Error> {
-    static LOADER: OnceLock<Result<ash::Entry, String>> = OnceLock::new();
+    struct Loader {
+        entry: ash::Entry,
+        _keeps_the_driver_loaded: Option<ash::Instance>,
+    }
+    static LOADER: OnceLock<Result<Loader, String>> = OnceLock::new();
     LOADER
         .get_or_init(|| {
-            // SAFETY: loading the system Vulkan loader; its functions are used per the Vulkan spec,
-            // and a static is never dropped, so it stays loaded while any instance made from it lives.
-            unsafe { ash::Entry::load() }.map_err(|e| e.to_string())
+            // SAFETY: loading the system Vulkan loader; a static is never dropped, so it stays
+            // loaded while any instance made from it lives.
+            let entry = unsafe { ash::Entry::load() }.map_err(|e| e.to_string())?;
+            let application = vk::ApplicationInfo::default().api_version(vk::API_VERSION_1_3);
+            let info = vk::InstanceCreateInfo::default().application_info(&application);
+            // SAFETY: a valid create-info without layers or extensions; the instance is never
+            // destroyed, so nothing can use it after destruction.
+            let bare = unsafe { entry.create_instance(&info, None) }.ok();
+            Ok(Loader {
+                entry,
+                _keeps_the_driver_loaded: bare,
+            })
         })
         .as_ref()
+        .map(|loader| &loader.entry)
         .map_err(|e| setup(&format!("cannot load the Vulkan loader (libvulkan.so.1): {e}")))
 }
 
@@ -605,7 +623,7 @@ mod tests {
     use super::*;
 
     /// Devices opened and dropped one after another all open, each with its own instance made from
-    /// the one loader of the process.
+    /// the one loader of the process (whose bare instance keeps the driver loaded in between).
     #[test]
     fn devices_opened_in_a_row_share_one_loader() {
         let first = loader().unwrap_or_else(|error| panic!("{error}"));
