@@ -25,7 +25,9 @@ fn main() {
     }
 }
 
-/// The shader modules (`Module` and their sources), shared with the crate.
+/// The crate's `Module`: the list of modules, their stems, WGSL and GLSL sources and naga
+/// capabilities, from the one place that knows them. The rest of that file (Slang sources, the
+/// prelude, the include resolver) is the crate's API and unused here, hence `allow(dead_code)`.
 #[cfg(feature = "validate")]
 #[allow(dead_code)]
 #[path = "src/shaders.rs"]
