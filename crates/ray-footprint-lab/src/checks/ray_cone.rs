@@ -15,8 +15,7 @@ use super::strategy::{
     angle, distance, fov_y, image_size, magnitude, normal_and_direction, one_argument, pixels, scalar,
     small_vec3, triangle, uv_triangle, vec3,
 };
-use super::{registered_checks, Entry};
-use super::{enclosed, exact, per_component};
+use super::{enclosed, exact, per_component, registered_checks, Entry};
 use bound::{clamped_cos, tan_ratio_error, uv_area2_error, width_at_error, world_area2_error};
 use enclosure::{b_refract_ray_cone, b_roughness_spread_angle, refraction_decided};
 use glam::{Vec2, Vec3};
