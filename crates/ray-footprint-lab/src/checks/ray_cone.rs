@@ -16,7 +16,9 @@ use super::strategy::{
     small_vec3, triangle, uv_triangle, vec3,
 };
 use super::{enclosed, exact, per_component, registered_checks, Entry};
-use bound::{clamped_cos, tan_ratio_error, uv_area2_error, width_at_error, world_area2_error};
+use bound::{
+    clamped_cos, edge_curvature_error, tan_ratio_error, uv_area2_error, width_at_error, world_area2_error,
+};
 use enclosure::{b_refract_ray_cone, b_roughness_spread_angle, refraction_decided};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
@@ -27,7 +29,7 @@ use shader_proptest::tolerance::{atan_error, dot_error, log2_error, ulps, ULP};
 use shader_proptest::{Args, FunctionCheck, Value};
 use strategy::{eta, off_the_plane, packed_ray_cone, proj_inv, ray_cone, triangle_with_uvs};
 
-pub use bound::{area_corners, curvature_spread_angle_error, edge_curvature_error};
+pub use bound::{area_corners, curvature_spread_angle_error, triangle_curvature_error};
 
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);
@@ -278,20 +280,7 @@ pub fn triangle_curvature() -> FunctionCheck<impl Args + Edge, impl Value> {
                 .boxed()
         },
         |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
-        // The three edge errors, then two additions and a division by 3 (5 ULP of the sum of
-        // magnitudes), all divided by 3.
-        |&(p0, p1, p2, n0, n1, n2), _, _| {
-            let edges = [(p0, p1, n0, n1), (p1, p2, n1, n2), (p2, p0, n2, n0)];
-            let errors: f32 = edges
-                .iter()
-                .map(|&(a, b, m, n)| edge_curvature_error(a, b, m, n))
-                .sum();
-            let sizes: f32 = edges
-                .iter()
-                .map(|&(a, b, m, n)| rc::edge_curvature(a, b, m, n).abs())
-                .sum();
-            (errors + ulps(5.0, sizes)) / 3.0
-        },
+        |&(p0, p1, p2, n0, n1, n2), _, _| triangle_curvature_error([p0, p1, p2], [n0, n1, n2]),
     )
 }
 

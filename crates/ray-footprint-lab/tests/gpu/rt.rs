@@ -20,7 +20,9 @@ use ray_footprint::rust_layout;
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::checks as suite;
-use ray_footprint_lab::checks::ray_cone::{area_corners, curvature_spread_angle_error, edge_curvature_error};
+use ray_footprint_lab::checks::ray_cone::{
+    area_corners, curvature_spread_angle_error, triangle_curvature_error,
+};
 use ray_footprint_lab::rt::abi::{
     RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
 };
@@ -893,22 +895,8 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
 
     // triangle_curvature: the three edges' errors, two additions and the division by 3.
     let curvature = rc::triangle_curvature(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
-    let edges = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| (p[i], p[j], normals[i], normals[j]));
-    let edge_errors: f32 = edges
-        .iter()
-        .map(|&(a, b, m, k)| edge_curvature_error(a, b, m, k))
-        .sum();
-    let edge_sizes: f32 = edges
-        .iter()
-        .map(|&(a, b, m, k)| rc::edge_curvature(a, b, m, k).abs())
-        .sum();
-    stats.compare(
-        "curvature",
-        r.curvature,
-        curvature,
-        (edge_errors + ulps(5.0, edge_sizes)) / 3.0,
-        r,
-    );
+    let curvature_error = triangle_curvature_error(p, normals);
+    stats.compare("curvature", r.curvature, curvature, curvature_error, r);
 
     // curvature_spread_angle: the suite's own tolerance, on the shader's curvature, width and
     // stored normal.

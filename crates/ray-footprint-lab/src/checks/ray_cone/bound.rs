@@ -64,6 +64,22 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 
+/// Error of [`rc::triangle_curvature`] of the corners `p` and normals `n`: the three edges'
+/// [`edge_curvature_error`]s, then two additions and a division by 3 (5 ULP of the sum of the
+/// edges' magnitudes), all divided by 3.
+pub fn triangle_curvature_error(p: [Vec3; 3], n: [Vec3; 3]) -> f32 {
+    let edges = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| (p[i], p[j], n[i], n[j]));
+    let errors: f32 = edges
+        .iter()
+        .map(|&(p_i, p_j, n_i, n_j)| edge_curvature_error(p_i, p_j, n_i, n_j))
+        .sum();
+    let sizes: f32 = edges
+        .iter()
+        .map(|&(p_i, p_j, n_i, n_j)| rc::edge_curvature(p_i, p_j, n_i, n_j).abs())
+        .sum();
+    (errors + ulps(5.0, sizes)) / 3.0
+}
+
 /// Error of [`rc::curvature_spread_angle`] returning `expected`: relative, two products and a
 /// division (5 ULP with the mirror's), and the rounding of `dot(normal, direction)` over the
 /// clamped `|cos|`. Where the dot product lies within its rounding of 0, the device may find the
