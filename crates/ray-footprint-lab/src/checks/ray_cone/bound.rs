@@ -65,7 +65,7 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
 }
 
 /// Error of [`rc::triangle_curvature`] of the corners `p` and normals `n`: the three edges'
-/// [`edge_curvature_error`]s, then two additions and a division by 3 (5 ULP of the sum of the
+/// `edge_curvature_error`s, then two additions and a division by 3 (5 ULP of the sum of the
 /// edges' magnitudes), all divided by 3.
 pub fn triangle_curvature_error(p: [Vec3; 3], n: [Vec3; 3]) -> f32 {
     let edges = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| (p[i], p[j], n[i], n[j]));
