@@ -38,6 +38,15 @@ pub fn kernel_source(
     syntax.store(result, "result", &mut 0, &mut stores);
     let call = format!("{function}({})", arguments.join(", "));
     let (in_words, out_words) = (offset, result.words());
+    let result_type = syntax.type_name(result);
+    let call_statements = |index: &str| {
+        format!(
+            "    uint i = {index} * {in_words}u;
+    uint o = {index} * {out_words}u;
+    {result_type} result = {call};
+{stores}"
+        )
+    };
     match shader.language() {
         Language::Wgsl => format!(
             "{source}
@@ -73,17 +82,12 @@ float kernel_f32(uint word) {{
     return uintBitsToFloat(kernel_inputs[word]);
 }}
 
-void main() {{
-    if (gl_GlobalInvocationID.x >= uint(kernel_outputs.length()) / {out_words}u) {{
-        return;
-    }}
-    uint i = gl_GlobalInvocationID.x * {in_words}u;
-    uint o = gl_GlobalInvocationID.x * {out_words}u;
-    {result_type} result = {call};
-{stores}}}
-",
+{main}",
             source = shader.source(),
-            result_type = syntax.type_name(result),
+            main = glsl_main(
+                &format!("uint(kernel_outputs.length()) / {out_words}u"),
+                call_statements,
+            ),
         ),
         Language::Slang => format!(
             "{source}
@@ -95,22 +99,13 @@ float kernel_f32(uint word) {{
     return asfloat(kernel_inputs[word]);
 }}
 
-[shader(\"compute\")]
-[numthreads({WORKGROUP_SIZE}, 1, 1)]
-void main(uint3 id : SV_DispatchThreadID) {{
-    uint output_words;
-    uint output_stride;
-    kernel_outputs.GetDimensions(output_words, output_stride);
-    if (id.x >= output_words / {out_words}u) {{
-        return;
-    }}
-    uint i = id.x * {in_words}u;
-    uint o = id.x * {out_words}u;
-    {result_type} result = {call};
-{stores}}}
-",
+{main}",
             source = shader.source(),
-            result_type = syntax.type_name(result),
+            main = slang_main(
+                "kernel_outputs",
+                &format!("buffer_length / {out_words}u"),
+                call_statements,
+            ),
         ),
     }
 }
@@ -128,6 +123,14 @@ pub fn echo_kernel_source(shader: &Shader, packing: GlslPacking, ty: &'static St
     syntax.store(ShaderType::Struct(ty), "pushed", &mut { words }, &mut stores);
     let name = ty.name;
     let out_words = 2 * words;
+    let echo_statements = |index: &str| {
+        format!(
+            "    uint o = {index} * {out_words}u;
+    {name} stored = echo_values[{index}];
+    {name} pushed = echo_push;
+{stores}"
+        )
+    };
     match shader.language() {
         Language::Wgsl => format!(
             "{source}
@@ -158,17 +161,10 @@ layout({packing}, set = 0, binding = 0) readonly buffer EchoValues {{ {name} ech
 layout(std430, set = 0, binding = 1) writeonly buffer KernelOutputs {{ uint kernel_outputs[]; }};
 layout({packing}, push_constant) uniform EchoPush {{ {name} echo_push; }};
 
-void main() {{
-    if (gl_GlobalInvocationID.x >= uint(echo_values.length())) {{
-        return;
-    }}
-    uint o = gl_GlobalInvocationID.x * {out_words}u;
-    {name} stored = echo_values[gl_GlobalInvocationID.x];
-    {name} pushed = echo_push;
-{stores}}}
-",
+{main}",
             source = shader.source(),
             packing = packing.qualifier(),
+            main = glsl_main("uint(echo_values.length())", echo_statements),
         ),
         Language::Slang => format!(
             "{source}
@@ -177,24 +173,48 @@ void main() {{
 [[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
 [[vk::push_constant]] ConstantBuffer<{name}, {layout}> echo_push;
 
-[shader(\"compute\")]
-[numthreads({WORKGROUP_SIZE}, 1, 1)]
-void main(uint3 id : SV_DispatchThreadID) {{
-    uint values;
-    uint value_stride;
-    echo_values.GetDimensions(values, value_stride);
-    if (id.x >= values) {{
-        return;
-    }}
-    uint o = id.x * {out_words}u;
-    {name} stored = echo_values[id.x];
-    {name} pushed = echo_push;
-{stores}}}
-",
+{main}",
             source = shader.source(),
             layout = packing.slang_layout(),
+            main = slang_main("echo_values", "buffer_length", echo_statements),
         ),
     }
+}
+
+/// A GLSL `main`: invocation `gl_GlobalInvocationID.x` returns unless it is below `cases`, then
+/// runs `statements` of its index expression.
+fn glsl_main(cases: &str, statements: impl FnOnce(&str) -> String) -> String {
+    let index = "gl_GlobalInvocationID.x";
+    format!(
+        "void main() {{
+    if ({index} >= {cases}) {{
+        return;
+    }}
+{}}}
+",
+        statements(index)
+    )
+}
+
+/// A Slang compute `main`: invocation `id.x` returns unless it is below `cases`, an expression
+/// that may use `buffer_length`, the element count of the structured buffer `buffer`; then runs
+/// `statements` of its index expression.
+fn slang_main(buffer: &str, cases: &str, statements: impl FnOnce(&str) -> String) -> String {
+    let index = "id.x";
+    format!(
+        "[shader(\"compute\")]
+[numthreads({WORKGROUP_SIZE}, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {{
+    uint buffer_length;
+    uint buffer_stride;
+    {buffer}.GetDimensions(buffer_length, buffer_stride);
+    if ({index} >= {cases}) {{
+        return;
+    }}
+{}}}
+",
+        statements(index)
+    )
 }
 
 /// Spelling of loads, stores and type names in one language.

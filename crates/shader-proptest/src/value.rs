@@ -319,11 +319,21 @@ macro_rules! args_tuple {
     };
 }
 
-args_tuple!(A);
-args_tuple!(A, B);
-args_tuple!(A, B, C);
-args_tuple!(A, B, C, D);
-args_tuple!(A, B, C, D, E);
-args_tuple!(A, B, C, D, E, F);
-args_tuple!(A, B, C, D, E, F, G);
-args_tuple!(A, B, C, D, E, F, G, H);
+/// Invokes `$tuple_impl!` once per tuple size that [`Args`] is implemented for (1 to 8), with that
+/// many type-parameter names (`A`, then `A, B`, ...): a trait implemented for argument tuples
+/// covers the same sizes as [`Args`].
+#[macro_export]
+macro_rules! for_each_args_tuple {
+    ($tuple_impl:ident) => {
+        $tuple_impl!(A);
+        $tuple_impl!(A, B);
+        $tuple_impl!(A, B, C);
+        $tuple_impl!(A, B, C, D);
+        $tuple_impl!(A, B, C, D, E);
+        $tuple_impl!(A, B, C, D, E, F);
+        $tuple_impl!(A, B, C, D, E, F, G);
+        $tuple_impl!(A, B, C, D, E, F, G, H);
+    };
+}
+
+for_each_args_tuple!(args_tuple);

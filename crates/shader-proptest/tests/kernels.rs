@@ -5,7 +5,7 @@
 
 use glam::{Mat2, Mat3, Mat4, Vec2, Vec3, Vec4};
 use proptest::prelude::*;
-use shader_proptest::{FunctionCheck, Gpu, Language, RunConfig, Shader, Tolerance};
+use shader_proptest::{Args, FunctionCheck, Gpu, Language, RunConfig, Shader, Tolerance, Value};
 
 const WGSL: &str = "
 fn apply2(m: mat2x2<f32>, v: vec2<f32>) -> vec2<f32> { return m * v; }
@@ -47,8 +47,14 @@ fn shaders() -> [Shader; 3] {
     [Shader::wgsl(WGSL), Shader::glsl(GLSL), Shader::slang(SLANG)]
 }
 
-/// Runs `check` in every language on 4,096 cases and prints the reports.
-fn in_every_language<A: shader_proptest::Args, R: shader_proptest::Value>(check: FunctionCheck<A, R>) {
+/// Checks the shader function `function` against `mirror` bit for bit in every language on 4,096
+/// cases of `strategy`; prints the reports.
+fn exact_in_every_language<A: Args, R: Value, S: Strategy<Value = A> + 'static>(
+    function: &str,
+    strategy: impl Fn() -> S + Send + Sync + 'static,
+    mirror: impl Fn(A) -> R + Send + Sync + 'static,
+) {
+    let check = FunctionCheck::new(function, strategy, mirror).tolerance(Tolerance::Exact);
     let gpu = Gpu::new().unwrap_or_else(|error| panic!("{error}"));
     let config = RunConfig {
         cases: 4096,
@@ -67,61 +73,43 @@ fn in_every_language<A: shader_proptest::Args, R: shader_proptest::Value>(check:
 
 #[test]
 fn matrices_times_vectors_agree() {
-    in_every_language(
-        FunctionCheck::new(
-            "apply2",
-            || (floats(4), floats(2)).prop_map(|(m, v)| (Mat2::from_cols_slice(&m), Vec2::from_slice(&v))),
-            |(m, v)| m * v,
-        )
-        .tolerance(Tolerance::Exact),
+    exact_in_every_language(
+        "apply2",
+        || (floats(4), floats(2)).prop_map(|(m, v)| (Mat2::from_cols_slice(&m), Vec2::from_slice(&v))),
+        |(m, v)| m * v,
     );
-    in_every_language(
-        FunctionCheck::new(
-            "apply3",
-            || (floats(9), floats(3)).prop_map(|(m, v)| (Mat3::from_cols_slice(&m), Vec3::from_slice(&v))),
-            |(m, v)| m * v,
-        )
-        .tolerance(Tolerance::Exact),
+    exact_in_every_language(
+        "apply3",
+        || (floats(9), floats(3)).prop_map(|(m, v)| (Mat3::from_cols_slice(&m), Vec3::from_slice(&v))),
+        |(m, v)| m * v,
     );
-    in_every_language(
-        FunctionCheck::new(
-            "apply4",
-            || (floats(16), floats(4)).prop_map(|(m, v)| (Mat4::from_cols_slice(&m), Vec4::from_slice(&v))),
-            |(m, v)| m * v,
-        )
-        .tolerance(Tolerance::Exact),
+    exact_in_every_language(
+        "apply4",
+        || (floats(16), floats(4)).prop_map(|(m, v)| (Mat4::from_cols_slice(&m), Vec4::from_slice(&v))),
+        |(m, v)| m * v,
     );
 }
 
 #[test]
 fn matrix_results_come_back_column_by_column() {
-    in_every_language(
-        FunctionCheck::new(
-            "scale4",
-            || (floats(16), small()).prop_map(|(m, s)| (Mat4::from_cols_slice(&m), s)),
-            |(m, s)| m * s,
-        )
-        .tolerance(Tolerance::Exact),
+    exact_in_every_language(
+        "scale4",
+        || (floats(16), small()).prop_map(|(m, s)| (Mat4::from_cols_slice(&m), s)),
+        |(m, s)| m * s,
     );
-    in_every_language(
-        FunctionCheck::new(
-            "scale3",
-            || (floats(9), small()).prop_map(|(m, s)| (Mat3::from_cols_slice(&m), s)),
-            |(m, s)| m * s,
-        )
-        .tolerance(Tolerance::Exact),
+    exact_in_every_language(
+        "scale3",
+        || (floats(9), small()).prop_map(|(m, s)| (Mat3::from_cols_slice(&m), s)),
+        |(m, s)| m * s,
     );
 }
 
 #[test]
 fn signed_integers_and_booleans_cross_bit_for_bit() {
-    in_every_language(
-        FunctionCheck::new(
-            "pick",
-            // Within +-2^24, where the comparison's f32 components hold every integer exactly.
-            || (-(1 << 24)..(1 << 24), -(1 << 24)..(1 << 24), any::<bool>()),
-            |(a, b, first)| if first { a } else { b },
-        )
-        .tolerance(Tolerance::Exact),
+    exact_in_every_language(
+        "pick",
+        // Within +-2^24, where the comparison's f32 components hold every integer exactly.
+        || (-(1 << 24)..(1 << 24), -(1 << 24)..(1 << 24), any::<bool>()),
+        |(a, b, first)| if first { a } else { b },
     );
 }

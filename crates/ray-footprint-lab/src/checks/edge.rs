@@ -288,11 +288,4 @@ macro_rules! edge_tuple {
     };
 }
 
-edge_tuple!(A);
-edge_tuple!(A, B);
-edge_tuple!(A, B, C);
-edge_tuple!(A, B, C, D);
-edge_tuple!(A, B, C, D, E);
-edge_tuple!(A, B, C, D, E, F);
-edge_tuple!(A, B, C, D, E, F, G);
-edge_tuple!(A, B, C, D, E, F, G, H);
+shader_proptest::for_each_args_tuple!(edge_tuple);

@@ -15,9 +15,10 @@ use super::strategy::{
     angle, distance, fov_y, image_size, magnitude, normal_and_direction, one_argument, pixels, scalar,
     small_vec3, triangle, uv_triangle, vec3,
 };
-use super::{enclosed, exact, per_component};
-use super::{registered_checks, Entry};
-use bound::{clamped_cos, tan_ratio_error, uv_area2_error, width_at_error, world_area2_error};
+use super::{enclosed, exact, per_component, registered_checks, Entry};
+use bound::{
+    clamped_cos, edge_curvature_error, tan_ratio_error, uv_area2_error, width_at_error, world_area2_error,
+};
 use enclosure::{b_refract_ray_cone, b_roughness_spread_angle, refraction_decided};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
@@ -28,7 +29,7 @@ use shader_proptest::tolerance::{atan_error, dot_error, log2_error, ulps, ULP};
 use shader_proptest::{Args, FunctionCheck, Value};
 use strategy::{eta, off_the_plane, packed_ray_cone, proj_inv, ray_cone, triangle_with_uvs};
 
-pub use bound::{area_corners, curvature_spread_angle_error, edge_curvature_error, triangle_curvature_error};
+pub use bound::{area_corners, curvature_spread_angle_error, triangle_curvature_error};
 
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);

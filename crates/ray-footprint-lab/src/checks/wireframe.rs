@@ -9,8 +9,7 @@
 
 use super::edge::Edge;
 use super::strategy::{magnitude, one_argument, scalar, vec2_of, vec3, HUGE, TINY};
-use super::{exact, per_component};
-use super::{registered_checks, Entry};
+use super::{exact, per_component, registered_checks, Entry};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::registry::Registered;

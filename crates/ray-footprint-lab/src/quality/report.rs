@@ -2,7 +2,7 @@
 //! frame, the FLIP error maps, captioned crops side by side) and plots in an output folder.
 
 use super::footprint::Footprints;
-use super::lab::{Convergence, LabRun, SceneResult};
+use super::lab::{Convergence, LabRun, MethodResult, SceneResult};
 use super::{plots, LabError};
 use crate::figure::{self, Panel, RgbaImage};
 use std::fmt::Write as _;
@@ -195,28 +195,32 @@ pub fn goals_markdown(goals: &[Goal]) -> String {
 
 /// The table in Markdown: one row per scene and method.
 pub fn table_markdown(run: &LabRun) -> String {
-    let mut table = String::from(
+    let rows = method_rows(run, |scene, m| {
+        format!(
+            "| {scene} | {} | {:.2} | {:.2} | {:.4} | {:.4} | {:.3} | {:.1}% | {:.1} |\n",
+            m.method.name,
+            m.psnr,
+            m.psnr_mask,
+            m.ssim,
+            m.flip,
+            m.shimmer,
+            100.0 * m.detail,
+            m.ms_per_frame
+        )
+    });
+    String::from(
         "| scene | method | PSNR dB | PSNR mask dB | SSIM | FLIP | shimmer | detail kept | ms/frame |\n\
          | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
-    );
-    for scene in &run.scenes {
-        for m in &scene.methods {
-            let _ = writeln!(
-                table,
-                "| {} | {} | {:.2} | {:.2} | {:.4} | {:.4} | {:.3} | {:.1}% | {:.1} |",
-                scene.scene.name,
-                m.method.name,
-                m.psnr,
-                m.psnr_mask,
-                m.ssim,
-                m.flip,
-                m.shimmer,
-                100.0 * m.detail,
-                m.ms_per_frame
-            );
-        }
-    }
-    table
+    ) + &rows.concat()
+}
+
+/// One row per scene and method of `run`, scene by scene: `row` of the scene's name and the
+/// method's result.
+fn method_rows(run: &LabRun, row: impl Fn(&str, &MethodResult) -> String) -> Vec<String> {
+    run.scenes
+        .iter()
+        .flat_map(|scene| scene.methods.iter().map(|m| row(scene.scene.name, m)))
+        .collect()
 }
 
 /// How the run was made, in Markdown: device, size, N, K, and per scene its mask, the share
@@ -253,27 +257,14 @@ pub fn setup_markdown(run: &LabRun) -> String {
 
 /// The table as CSV, one row per scene and method, a header first.
 pub fn table_csv(run: &LabRun) -> String {
-    let mut csv =
-        String::from("scene,method,psnr_db,psnr_mask_db,ssim,flip,change,shimmer,detail_kept,ms_per_frame\n");
-    for scene in &run.scenes {
-        for m in &scene.methods {
-            let _ = writeln!(
-                csv,
-                "{},{},{:.4},{:.4},{:.6},{:.6},{:.4},{:.4},{:.6},{:.3}",
-                scene.scene.name,
-                m.method.name,
-                m.psnr,
-                m.psnr_mask,
-                m.ssim,
-                m.flip,
-                m.change,
-                m.shimmer,
-                m.detail,
-                m.ms_per_frame
-            );
-        }
-    }
-    csv
+    let rows = method_rows(run, |scene, m| {
+        format!(
+            "{scene},{},{:.4},{:.4},{:.6},{:.6},{:.4},{:.4},{:.6},{:.3}\n",
+            m.method.name, m.psnr, m.psnr_mask, m.ssim, m.flip, m.change, m.shimmer, m.detail, m.ms_per_frame
+        )
+    });
+    String::from("scene,method,psnr_db,psnr_mask_db,ssim,flip,change,shimmer,detail_kept,ms_per_frame\n")
+        + &rows.concat()
 }
 
 /// A JSON string literal of `text`.
@@ -306,31 +297,28 @@ fn json_number(value: f64) -> String {
 /// given.
 pub fn json(run: &LabRun, goals: &[Goal], convergence: &[Convergence]) -> String {
     let s = &run.settings;
-    let mut rows = Vec::new();
-    for scene in &run.scenes {
-        for m in &scene.methods {
-            let fields = [
-                ("psnr_db", m.psnr),
-                ("psnr_mask_db", m.psnr_mask),
-                ("ssim", m.ssim),
-                ("flip", m.flip),
-                ("change", m.change),
-                ("shimmer", m.shimmer),
-                ("detail_kept", m.detail),
-                ("ms_per_frame", m.ms_per_frame),
-            ];
-            let numbers: Vec<String> = fields
-                .iter()
-                .map(|(name, value)| format!("\"{name}\": {}", json_number(*value)))
-                .collect();
-            rows.push(format!(
-                "    {{\"scene\": {}, \"method\": {}, {}}}",
-                json_string(scene.scene.name),
-                json_string(&m.method.name),
-                numbers.join(", ")
-            ));
-        }
-    }
+    let rows = method_rows(run, |scene, m| {
+        let fields = [
+            ("psnr_db", m.psnr),
+            ("psnr_mask_db", m.psnr_mask),
+            ("ssim", m.ssim),
+            ("flip", m.flip),
+            ("change", m.change),
+            ("shimmer", m.shimmer),
+            ("detail_kept", m.detail),
+            ("ms_per_frame", m.ms_per_frame),
+        ];
+        let numbers: Vec<String> = fields
+            .iter()
+            .map(|(name, value)| format!("\"{name}\": {}", json_number(*value)))
+            .collect();
+        format!(
+            "    {{\"scene\": {}, \"method\": {}, {}}}",
+            json_string(scene),
+            json_string(&m.method.name),
+            numbers.join(", ")
+        )
+    });
     let goals: Vec<String> = goals
         .iter()
         .map(|g| {

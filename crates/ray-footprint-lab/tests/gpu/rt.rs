@@ -645,9 +645,23 @@ fn compare_with<A: shader_proptest::Args, R: Value>(
     stats.compare_components(value, &components, record);
 }
 
-/// UV gradients in texels of the renderer's square texture (a power of two: exact).
-fn texels(uv: Derivatives2, push: &RtPushConstants) -> Derivatives2 {
-    Derivatives2::new(uv.dx * push.texture_size, uv.dy * push.texture_size)
+/// The shader's `lod` of the UV gradients `uv` against `rf_lod_isotropic` of them in texels of the
+/// renderer's square texture (a power of two: the conversion is exact).
+fn compare_lod(
+    stats: &mut Stats,
+    value: &'static str,
+    (uv, lod): (Derivatives2, f32),
+    push: &RtPushConstants,
+    record: &RtPixelRecord,
+) {
+    let texels = Derivatives2::new(uv.dx * push.texture_size, uv.dy * push.texture_size);
+    compare_with(
+        stats,
+        value,
+        suite::ray_diff::lod_isotropic(),
+        ((texels,), lod),
+        record,
+    );
 }
 
 /// The hit barycentrics `(w, u, v)` as the shaders form them.
@@ -692,14 +706,7 @@ fn check_differentials(
         (uv_args, gradients),
         record,
     );
-    let lod_args = (texels(gradients, push),);
-    compare_with(
-        stats,
-        "ray diff lod",
-        checks::lod_isotropic(),
-        (lod_args, d.lod),
-        record,
-    );
+    compare_lod(stats, "ray diff lod", (gradients, d.lod), push, record);
 }
 
 /// The neighbour pixels' directions, the re-intersected barycentric offsets, their UV gradients
@@ -743,14 +750,7 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
         (uv_args, gradients),
         record,
     );
-    let lod_args = (texels(gradients, push),);
-    compare_with(
-        stats,
-        "offset lod",
-        checks::lod_isotropic(),
-        (lod_args, d.offset_lod),
-        record,
-    );
+    compare_lod(stats, "offset lod", (gradients, d.offset_lod), push, record);
     compare_with(
         stats,
         "bary deltas",
@@ -895,13 +895,8 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
 
     // triangle_curvature: the three edges' errors, two additions and the division by 3.
     let curvature = rc::triangle_curvature(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
-    stats.compare(
-        "curvature",
-        r.curvature,
-        curvature,
-        triangle_curvature_error(p, normals),
-        r,
-    );
+    let curvature_error = triangle_curvature_error(p, normals);
+    stats.compare("curvature", r.curvature, curvature, curvature_error, r);
 
     // curvature_spread_angle: the suite's own tolerance, on the shader's curvature, width and
     // stored normal.

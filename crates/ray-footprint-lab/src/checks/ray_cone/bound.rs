@@ -64,18 +64,18 @@ pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 
-/// Error of [`rc::triangle_curvature`] of the corners `p` with normals `n`: the three edges' errors
-/// ([`edge_curvature_error`]), then two additions and a division by 3 (5 ULP of the sum of the
+/// Error of [`rc::triangle_curvature`] of the corners `p` and normals `n`: the three edges'
+/// `edge_curvature_error`s, then two additions and a division by 3 (5 ULP of the sum of the
 /// edges' magnitudes), all divided by 3.
 pub fn triangle_curvature_error(p: [Vec3; 3], n: [Vec3; 3]) -> f32 {
     let edges = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| (p[i], p[j], n[i], n[j]));
     let errors: f32 = edges
         .iter()
-        .map(|&(a, b, m, k)| edge_curvature_error(a, b, m, k))
+        .map(|&(p_i, p_j, n_i, n_j)| edge_curvature_error(p_i, p_j, n_i, n_j))
         .sum();
     let sizes: f32 = edges
         .iter()
-        .map(|&(a, b, m, k)| rc::edge_curvature(a, b, m, k).abs())
+        .map(|&(p_i, p_j, n_i, n_j)| rc::edge_curvature(p_i, p_j, n_i, n_j).abs())
         .sum();
     (errors + ulps(5.0, sizes)) / 3.0
 }
