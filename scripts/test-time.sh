@@ -7,12 +7,19 @@
 #
 # Usage: scripts/test-time.sh [REF]
 #
-# Crates come from the local cargo registry cache: download time is not measured.
+# The full output goes to target/test-time/<commit>-<time>.log; with TEST_TIME_TIMINGS=1 cargo
+# also writes its --timings report (the time of every compiled unit) next to it. Crates come
+# from the local cargo registry cache: download time is not measured.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 commit=$(git -C "$root" rev-parse --verify "${1:-HEAD}^{commit}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+logs="$root/target/test-time"
+mkdir -p "$logs"
+log="$logs/${commit:0:7}-$(date +%Y%m%d-%H%M%S)"
+timings=()
+[ "${TEST_TIME_TIMINGS:-0}" = 1 ] && timings=(--timings)
 git clone --quiet "$(git -C "$root" rev-parse --path-format=absolute --git-common-dir)" "$work/clone"
 git -C "$work/clone" checkout --quiet --detach "$commit"
 cd "$work/clone"
@@ -37,7 +44,7 @@ end_phase setup
 # Each "Running <source> (<binary>)" or "Doc-tests <crate>" line of cargo ends the phase before it.
 phase=build
 status=0
-cargo test --release --workspace --all-features 2>&1 | tee "$work/test.log" | {
+cargo test --release --workspace --all-features "${timings[@]}" 2>&1 | tee "$log.log" | {
     while IFS= read -r line; do
         case "$line" in
         "     Running "*" ("*")")
@@ -55,9 +62,10 @@ cargo test --release --workspace --all-features 2>&1 | tee "$work/test.log" | {
     end_phase "$phase"
 } || status=$?
 awk -v a="$total_start" -v b="$EPOCHREALTIME" 'BEGIN { printf "%8.1f s  total\n", b - a }'
-printf 'test-time: after, %s\n' "$(uptime | sed 's/.*load/load/')"
+printf 'test-time: after, %s; output in %s.log\n' "$(uptime | sed 's/.*load/load/')" "$log"
+[ ${#timings[@]} -eq 0 ] || cp target/cargo-timings/cargo-timing.html "$log.html"
 if [ "$status" -ne 0 ]; then
     echo "test-time: the test command failed; the end of its output:"
-    tail -n 60 "$work/test.log"
+    tail -n 60 "$log.log"
     exit 1
 fi
