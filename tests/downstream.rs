@@ -1,6 +1,10 @@
 //! The inclusion paths, proven by downstream crates in `examples/downstream/`: each is built and run
 //! as a user would (`cargo run`), with a path dependency on this crate, and checks its own results.
 //! The build-script crates are also built against the packaged crate, as crates.io serves it.
+//!
+//! The downstream crates form a workspace of their own (one lock file); each is built alone, so
+//! that it gets the features it asks for, into one target directory, so that the dependencies two
+//! crates share with the same features are built once.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -92,9 +96,10 @@ fn copy_tree(from: &Path, to: &Path) {
     }
 }
 
-/// The downstream crate `name` copied to `work/users/name` with its ray-footprint dependency on the
-/// unpacked `package` (shader-proptest stays the repository's), renamed `packaged-*` so that its
-/// binary does not replace the repository build's in the shared target directory.
+/// The downstream crate `name` copied to `work/users/name` as a workspace of its own (with the
+/// downstream workspace's lock file), its ray-footprint dependency on the unpacked `package`
+/// (shader-proptest stays the repository's), renamed `packaged-*` so that its binary does not
+/// replace the repository build's in the shared target directory.
 fn copy_against_package(name: &str, package: &Path, work: &Path) -> PathBuf {
     let copy = work.join("users").join(name);
     let _ = fs::remove_dir_all(&copy);
@@ -113,14 +118,11 @@ fn copy_against_package(name: &str, package: &Path, work: &Path) -> PathBuf {
         .replace(
             "path = \"../../..\"",
             &format!("path = {:?}", package.display().to_string()),
-        );
-    for (file, text) in [
-        ("Cargo.toml", manifest),
-        (
-            "Cargo.lock",
-            fs::read_to_string(copy.join("Cargo.lock")).expect("reading the lock file"),
-        ),
-    ] {
+        )
+        + "\n[workspace]\n";
+    let lock = fs::read_to_string(Path::new(ROOT).join("examples/downstream/Cargo.lock"))
+        .expect("reading the downstream lock file");
+    for (file, text) in [("Cargo.toml", manifest), ("Cargo.lock", lock)] {
         fs::write(copy.join(file), text.replace("\"downstream-", "\"packaged-")).expect("rewriting");
     }
     copy
