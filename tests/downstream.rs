@@ -3,9 +3,8 @@
 //! The build-script crates are also built against the packaged crate, as crates.io serves it.
 //!
 //! The downstream crates form a workspace of their own (one lock file); each is built alone, so
-//! that it gets the features it asks for, into the target directory this test was built in, so
-//! that a dependency built with the same version, features and profile by the workspace or by
-//! another downstream crate is built once.
+//! that it gets the features it asks for, into one target directory, so that the dependencies two
+//! crates share with the same features are built once.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -24,26 +23,16 @@ fn run_downstream(name: &str, expected: &str) {
     cargo_downstream("run", &repository_crate(name), expected);
 }
 
-/// The target directory this test was built in (`target` or `CARGO_TARGET_DIR`), from the test
-/// binary's path `<target>/<profile>/deps/downstream-<hash>`.
-fn target_dir() -> PathBuf {
-    let binary = std::env::current_exe().expect("the test binary's path");
-    binary
-        .ancestors()
-        .nth(3)
-        .expect("the test binary lies in <target>/<profile>/deps")
-        .to_path_buf()
-}
-
-/// Runs `cargo <command>` (`run` or `test`) on the downstream crate in `dir`, in this test's
-/// target directory; it must succeed and print `expected`. Returns what it printed.
+/// Runs `cargo <command>` (`run` or `test`) on the downstream crate in `dir`, in the target
+/// directory every downstream crate shares; it must succeed and print `expected`. Returns what
+/// it printed.
 fn cargo_downstream(command: &str, dir: &Path, expected: &str) -> String {
     let name = dir.display();
     let output = Command::new(env!("CARGO"))
         .args([command, "--release", "--quiet", "--manifest-path"])
         .arg(dir.join("Cargo.toml"))
         .arg("--target-dir")
-        .arg(target_dir())
+        .arg(Path::new(ROOT).join("target/downstream"))
         .output()
         .unwrap_or_else(|error| panic!("{name}: cannot run cargo: {error}"));
     let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
@@ -137,64 +126,6 @@ fn copy_against_package(name: &str, package: &Path, work: &Path) -> PathBuf {
         fs::write(copy.join(file), text.replace("\"downstream-", "\"packaged-")).expect("rewriting");
     }
     copy
-}
-
-/// `(name, version)` of every package in a `Cargo.lock`.
-fn locked_packages(lock: &str) -> Vec<(String, String)> {
-    lock.split("[[package]]")
-        .filter_map(|entry| {
-            let field = |key: &str| {
-                entry.lines().find_map(|line| {
-                    let value = line.strip_prefix(key)?.strip_prefix(" = \"")?;
-                    value.strip_suffix('"').map(str::to_string)
-                })
-            };
-            Some((field("name")?, field("version")?))
-        })
-        .collect()
-}
-
-/// The part of a version that semver compatibility keeps: the major version, or for `0.y.z` the
-/// minor one, or for `0.0.z` all of it (`1.2.3` -> `1`, `0.34.2` -> `0.34`).
-fn compatible_series(version: &str) -> String {
-    let parts: Vec<&str> = version.split(['.', '+', '-']).collect();
-    match parts.as_slice() {
-        ["0", "0", patch, ..] => format!("0.0.{patch}"),
-        ["0", minor, ..] => format!("0.{minor}"),
-        [major, ..] => major.to_string(),
-        [] => String::new(),
-    }
-}
-
-/// The downstream lock file picks the workspace lock's version of every package whose
-/// compatible series both lock, so that the dependencies they share build once (the lock files
-/// of the two workspaces are resolved separately).
-#[test]
-fn the_downstream_lock_file_agrees_with_the_workspace_lock_file() {
-    let read = |path: &str| fs::read_to_string(Path::new(ROOT).join(path)).expect("reading a lock file");
-    let workspace = locked_packages(&read("Cargo.lock"));
-    let downstream = locked_packages(&read("examples/downstream/Cargo.lock"));
-    assert!(
-        downstream.len() > 100,
-        "only {} downstream packages read",
-        downstream.len()
-    );
-    let differing: Vec<String> = downstream
-        .iter()
-        .filter_map(|(name, version)| {
-            let series = compatible_series(version);
-            let (_, locked) = workspace
-                .iter()
-                .find(|(other, locked)| other == name && compatible_series(locked) == series)?;
-            (locked != version).then(|| format!("{name} {version} (workspace: {locked})"))
-        })
-        .collect();
-    assert!(
-        differing.is_empty(),
-        "examples/downstream/Cargo.lock differs from Cargo.lock in {}; run `cargo update --manifest-path \
-         examples/downstream/Cargo.toml -p <name>@<version> --precise <workspace version>` for each",
-        differing.join(", ")
-    );
 }
 
 /// A wgpu user: the WGSL prelude in a compute shader, validated by wgpu and run through its Vulkan
