@@ -22,7 +22,7 @@
 use glam::Vec3;
 use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
-use ray_footprint_lab::checks::all_checks;
+use ray_footprint_cases::records;
 use ray_footprint_lab::cli::options_or_exit;
 use shader_proptest::spirv::{self, Statistics, TRANSCENDENTAL};
 use shader_proptest::{kernel_source, Args, Check, Language, Shader, Value};
@@ -194,9 +194,10 @@ fn main() -> ExitCode {
         parse_args(std::env::args().skip(1)),
         "usage: function_costs [--function NAME] [--module NAME]",
     );
-    let checks: Vec<_> = all_checks()
-        .into_iter()
-        .filter(|check| filter.accepts(check.module, check.item.function()))
+    let checks: Vec<_> = records()
+        .iter()
+        .map(|record| (record.module(), record.agreement_check()))
+        .filter(|(module, check)| filter.accepts(*module, check.function()))
         .collect();
     if checks.is_empty() {
         eprintln!("error: no function matches");
@@ -216,9 +217,9 @@ fn main() -> ExitCode {
     );
     print_header();
     let mut failed = 0;
-    for check in &checks {
-        let counts = Language::ALL.map(|language| measure(check.module, check.item.as_ref(), language));
-        failed += usize::from(!print_row(check.module, check.item.function(), counts));
+    for (module, check) in &checks {
+        let counts = Language::ALL.map(|language| measure(*module, check.as_ref(), language));
+        failed += usize::from(!print_row(*module, check.function(), counts));
     }
     if filter.accepts(Module::Wireframe, "rf_process_wireframe") {
         println!(

@@ -5,11 +5,13 @@
 use super::mirror::{chain_shader, reflection_chain, ChainArgs, ChainCamera, ChainLeg, ChainSamples};
 use super::{head_on_chain_with_one_saddle, in_plane_chain, Chain, ChainStats, Comparison};
 use super::{CHAIN_MAX_BOUNCES, CHAIN_ORTHOGRAPHIC, CHAIN_PINHOLE};
-use crate::checks::ray_diff::{b_eye_ray_direction_derivatives, b_reflected_direction, b_transferred_origin};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRng, TestRunner};
 use ray_footprint::ray_cone::{MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint_cases::ray_diff::{
+    b_eye_ray_direction_derivatives, b_reflected_direction, b_transferred_origin,
+};
 use shader_proptest::interval::{interval3 as v3, Interval as I, Interval3 as V3, IntervalVec as V};
 use shader_proptest::{kernel_source, Args, ComputeKernel, FunctionCheck, Gpu, Language, Tolerance, Value};
 use std::cell::RefCell;

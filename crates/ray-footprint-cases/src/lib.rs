@@ -1,0 +1,53 @@
+//! One record per public function of ray-footprint, and the runners that iterate the records.
+//!
+//! A [`Record`] declares once everything the verification of one function needs: its Rust mirror,
+//! the strategy of its agreement cases, its tolerance (a bound derived from Vulkan's precision rules
+//! or an interval enclosure), its documented degenerate inputs, and how the fuzzer draws its
+//! arguments and what it promises. [`records`] lists every record in module order, and
+//! [`order::check_order`] holds that list to the modules' public functions. The runners iterate it:
+//!
+//! - [`agreement::run_all_checks`]: the agreement checks in every language on one device (the
+//!   lab's `verify` and its GPU tests), and each record's special-value check ([`special`]);
+//! - [`degenerate`]: the degenerate-input table, rendered into the root crate's
+//!   `src/degenerate.md` and run on the CPU and the GPU;
+//! - [`fuzzing`]: the cargo-fuzz targets and the replay of their corpora.
+//!
+//! Not published: the product (`ray-footprint`) is the shader modules and the Rust mirror.
+
+pub mod agreement;
+pub mod degenerate;
+pub mod fuzzing;
+pub mod order;
+pub mod ray_cone;
+pub mod ray_diff;
+pub mod ray_diff_f64;
+mod record;
+pub mod special;
+pub mod strategy;
+pub mod wireframe;
+
+pub use record::{Function, Promises, Record};
+
+use ray_footprint::shaders::Module;
+use std::sync::OnceLock;
+
+/// The records of `module`, in the module's order.
+pub fn module_records(module: Module) -> Vec<Box<dyn Function>> {
+    match module {
+        Module::RayCone => ray_cone::records(),
+        Module::RayDiff => ray_diff::records(),
+        Module::RayDiffF64 => ray_diff_f64::records(),
+        Module::Wireframe => wireframe::records(),
+    }
+}
+
+/// Every record, in module order (built once).
+pub fn records() -> &'static [Box<dyn Function>] {
+    static RECORDS: OnceLock<Vec<Box<dyn Function>>> = OnceLock::new();
+    RECORDS.get_or_init(|| {
+        Module::ALL
+            .iter()
+            .flat_map(|&module| module_records(module))
+            .collect()
+    })
+}
