@@ -11,7 +11,7 @@ mod bound;
 mod strategy;
 
 use crate::degenerate::{mirror, parts, same, value, NAN};
-use crate::record::{Function, Record};
+use crate::record::Record;
 use crate::special::Perturb;
 use crate::strategy::{one_argument, vec2_of, vec3};
 use bound::{
@@ -20,7 +20,6 @@ use bound::{
 };
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
-use proptest::strategy::BoxedStrategy;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{self as wf, WireframeSettings, WireframeSettingsIo, WIREFRAME_DEFAULT};
 use shader_proptest::{Args, Value};
@@ -29,14 +28,8 @@ use strategy::{
     stipple_repeats,
 };
 
-/// The record of `function` of this module.
-fn record<A: Args + Perturb, R: Value>(
-    function: &'static str,
-    mirror: fn(A) -> R,
-    cases: fn() -> BoxedStrategy<A>,
-) -> Record<A, R> {
-    Record::new(Module::Wireframe, function, mirror, cases)
-}
+/// The module of these records.
+const MODULE: Module = Module::Wireframe;
 
 /// The default settings changed by `f`, for the degenerate rows.
 fn default_with(f: impl FnOnce(&mut WireframeSettings)) -> WireframeSettings {
@@ -52,7 +45,8 @@ pub fn unpack_wireframe_settings() -> Record<impl Args + Perturb, impl Value> {
         ..WIREFRAME_DEFAULT.pack()
     };
     // Copies and integer comparisons: exact.
-    record(
+    Record::new(
+        MODULE,
         "unpack_wireframe_settings",
         |(io,)| wf::unpack_wireframe_settings(io),
         || one_argument(settings_io()),
@@ -114,7 +108,8 @@ pub fn unpack_wireframe_settings() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_edge_position`.
 pub fn edge_position() -> Record<impl Args + Perturb, impl Value> {
     // max is exact.
-    record(
+    Record::new(
+        MODULE,
         "edge_position",
         |(b,)| wf::edge_position(b),
         || one_argument(prop_oneof![3 => barycentrics(), 1 => vec3()]),
@@ -146,7 +141,8 @@ pub fn edge_position() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_edge_thickness`.
 pub fn edge_thickness() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "edge_thickness",
         |(var, e)| wf::edge_thickness(var, e),
         || (vec2_of(size(), size()), position_along_edge()).boxed(),
@@ -180,7 +176,8 @@ pub fn edge_thickness() -> Record<impl Args + Perturb, impl Value> {
 pub fn stipple() -> Record<impl Args + Perturb, impl Value> {
     // 0 or 1, exact away from a dash boundary. Within its rounding band either value is right, so
     // those positions are checked separately (the edge-case suite).
-    record(
+    Record::new(
+        MODULE,
         "stipple",
         |(repeats, length, e)| wf::stipple(repeats, length, e),
         || {
@@ -208,7 +205,8 @@ pub fn stipple() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_edge_ramp`: three independent components.
 pub fn edge_ramp() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "edge_ramp",
         |(x, start, width)| wf::edge_ramp(x, start, width),
         || {
@@ -256,7 +254,8 @@ pub fn edge_ramp() -> Record<impl Args + Perturb, impl Value> {
 pub fn line_width() -> Record<impl Args + Perturb, impl Value> {
     let near_edge = Vec3::new(0.004, 0.496, 0.5);
     let deltas = Vec3::splat(0.01);
-    record(
+    Record::new(
+        MODULE,
         "line_width",
         |(d, thickness, smoothing, b)| wf::line_width(d, thickness, smoothing, b),
         || {
@@ -298,7 +297,8 @@ pub fn process_wireframe() -> Record<(WireframeSettings, Vec3, Vec3), f32> {
     let on_edge = Vec3::new(0.0, 0.5, 0.5);
     let near_edge = Vec3::new(0.004, 0.496, 0.5);
     let deltas = Vec3::splat(0.01);
-    record(
+    Record::new(
+        MODULE,
         "process_wireframe",
         |(settings, b, d)| wf::process_wireframe(settings, b, d),
         || {
@@ -346,17 +346,4 @@ pub fn process_wireframe() -> Record<(WireframeSettings, Vec3, Vec3), f32> {
             vec![0.0],
         ),
     ])
-}
-
-/// Every function's record, in the module's order.
-pub fn records() -> Vec<Box<dyn Function>> {
-    vec![
-        Box::new(unpack_wireframe_settings()),
-        Box::new(edge_position()),
-        Box::new(edge_thickness()),
-        Box::new(stipple()),
-        Box::new(edge_ramp()),
-        Box::new(line_width()),
-        Box::new(process_wireframe()),
-    ]
 }

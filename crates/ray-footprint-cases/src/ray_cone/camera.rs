@@ -2,7 +2,7 @@
 
 use super::bound::tan_ratio_error;
 use super::strategy::{packed_ray_cone, proj_inv, ray_cone};
-use super::{record, PinholeRayConeForRayArgs};
+use super::{PinholeRayConeForRayArgs, MODULE};
 use crate::degenerate::{cone, mirror, same, value, vulkan_inverse_projection, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -16,7 +16,8 @@ use std::f32::consts::FRAC_PI_2;
 
 /// `rf_pack_ray_cone`.
 pub fn pack_ray_cone() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "pack_ray_cone",
         |(cone,)| rc::pack_ray_cone(cone),
         || one_argument(ray_cone()),
@@ -57,7 +58,8 @@ pub fn pack_ray_cone() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_unpack_ray_cone`.
 pub fn unpack_ray_cone() -> Record<impl Args + Perturb, impl Value> {
     // f16 to f32 is exact.
-    record(
+    Record::new(
+        MODULE,
         "unpack_ray_cone",
         |(packed,)| rc::unpack_ray_cone(packed),
         || one_argument(packed_ray_cone()),
@@ -88,7 +90,8 @@ pub fn unpack_ray_cone() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_pixel_spread_angle`.
 pub fn pixel_spread_angle() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "pixel_spread_angle",
         |(fov, height)| rc::pixel_spread_angle(fov, height),
         || (fov_y(), pixels()).boxed(),
@@ -129,7 +132,8 @@ pub fn pixel_spread_angle() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_pixel_spread_angle_small`.
 pub fn pixel_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "pixel_spread_angle_small",
         |(fov, height)| rc::pixel_spread_angle_small(fov, height),
         || (fov_y(), pixels()).boxed(),
@@ -158,7 +162,8 @@ pub fn pixel_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_pixel_spread_angle_from_proj_inv`.
 pub fn pixel_spread_angle_from_proj_inv() -> Record<impl Args + Perturb, impl Value> {
     let inverse_projection = vulkan_inverse_projection();
-    record(
+    Record::new(
+        MODULE,
         "pixel_spread_angle_from_proj_inv",
         |(inverse_projection, height)| rc::pixel_spread_angle_from_proj_inv(inverse_projection, height),
         || (proj_inv(), pixels()).boxed(),
@@ -190,7 +195,8 @@ pub fn pixel_spread_angle_from_proj_inv() -> Record<impl Args + Perturb, impl Va
 /// `rf_pinhole_ray_cone`.
 pub fn pinhole_ray_cone() -> Record<impl Args + Perturb, impl Value> {
     // No arithmetic.
-    record(
+    Record::new(
+        MODULE,
         "pinhole_ray_cone",
         |(spread,)| rc::pinhole_ray_cone(spread),
         || one_argument(angle()),
@@ -213,7 +219,8 @@ pub fn pinhole_ray_cone_for_ray() -> Record<PinholeRayConeForRayArgs, RayCone> {
     let x = Vec3::X;
     let z = Vec3::Z;
     let head_on = Vec3::NEG_Z;
-    record(
+    Record::new(
+        MODULE,
         "pinhole_ray_cone_for_ray",
         |(spread, direction, view_axis)| rc::pinhole_ray_cone_for_ray(spread, direction, view_axis),
         // A view axis and a ray from on the axis to 90 degrees off it, or behind the camera.
@@ -278,7 +285,8 @@ pub fn pinhole_ray_cone_for_ray() -> Record<PinholeRayConeForRayArgs, RayCone> {
 
 /// `rf_orthographic_ray_cone`.
 pub fn orthographic_ray_cone() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "orthographic_ray_cone",
         |(view_height, height)| rc::orthographic_ray_cone(view_height, height),
         || (magnitude(), pixels()).boxed(),
@@ -306,7 +314,8 @@ pub fn orthographic_ray_cone() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_thin_lens_ray_cone`.
 pub fn thin_lens_ray_cone() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "thin_lens_ray_cone",
         |(spread, aperture, focus)| rc::thin_lens_ray_cone(spread, aperture, focus),
         || (angle(), magnitude(), scalar()).boxed(),

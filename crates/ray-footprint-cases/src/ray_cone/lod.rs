@@ -2,7 +2,7 @@
 
 use super::bound::{area_corners, clamped_cos, uv_area2_error, width_at_error, world_area2_error};
 use super::strategy::{ray_cone, triangle_with_uvs};
-use super::{record, TextureLodArgs};
+use super::{TextureLodArgs, MODULE};
 use crate::degenerate::{cone, direction_at, mirror, same, value, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -21,7 +21,8 @@ pub fn world_footprint() -> Record<impl Args + Perturb, impl Value> {
     let head_on = Vec3::NEG_Z;
     let in_plane = Vec3::X;
     let grazing = direction_at(1.0e-6);
-    record(
+    Record::new(
+        MODULE,
         "world_footprint",
         |(cone, t, normal, direction)| rc::world_footprint(cone, t, normal, direction),
         || {
@@ -77,7 +78,8 @@ pub fn world_footprint() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_triangle_world_area2`.
 pub fn triangle_world_area2() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
-    record(
+    Record::new(
+        MODULE,
         "triangle_world_area2",
         |(p0, p1, p2)| rc::triangle_world_area2(p0, p1, p2),
         || triangle().prop_map(|p| (p[0], p[1], p[2])).boxed(),
@@ -111,7 +113,8 @@ pub fn triangle_world_area2() -> Record<impl Args + Perturb, impl Value> {
 pub fn triangle_uv_area2() -> Record<impl Args + Perturb, impl Value> {
     let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
     let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
-    record(
+    Record::new(
+        MODULE,
         "triangle_uv_area2",
         |(uv0, uv1, uv2)| rc::triangle_uv_area2(uv0, uv1, uv2),
         || uv_triangle().prop_map(|uv| (uv[0], uv[1], uv[2])).boxed(),
@@ -143,7 +146,8 @@ pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
     let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
     let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
     let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
-    record(
+    Record::new(
+        MODULE,
         "texel_density",
         |(p0, p1, p2, uv0, uv1, uv2)| rc::texel_density(p0, p1, p2, uv0, uv1, uv2),
         triangle_with_uvs,
@@ -213,7 +217,8 @@ pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
     let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
     let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
     let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
-    record(
+    Record::new(
+        MODULE,
         "triangle_base_lod",
         |(p0, p1, p2, uv0, uv1, uv2)| rc::triangle_base_lod(p0, p1, p2, uv0, uv1, uv2),
         triangle_with_uvs,
@@ -272,7 +277,8 @@ pub fn texture_lod() -> Record<TextureLodArgs, f32> {
     let head_on = Vec3::NEG_Z;
     let in_plane = Vec3::X;
     let grazing = direction_at(1.0e-6);
-    record(
+    Record::new(
+        MODULE,
         "texture_lod",
         |(base, width, size, normal, direction)| rc::texture_lod(base, width, size, normal, direction),
         || {
@@ -338,7 +344,8 @@ pub fn texture_lod() -> Record<TextureLodArgs, f32> {
 
 /// `rf_texture_gradient`.
 pub fn texture_gradient() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "texture_gradient",
         |(uv_footprint, scale)| rc::texture_gradient(uv_footprint, scale),
         || (scalar(), -1.0f32..4.0).boxed(),
@@ -362,7 +369,8 @@ pub fn texture_gradient() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_environment_lod`.
 pub fn environment_lod() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "environment_lod",
         |(spread, height)| rc::environment_lod(spread, height),
         || (angle(), pixels()).boxed(),

@@ -1,8 +1,8 @@
 //! Records of `ray_cone`: Refraction and roughness.
 
-use super::enclosure::{b_refract_ray_cone, b_roughness_spread_angle, refraction_decided};
+use super::enclosure::{self, refraction_decided};
 use super::strategy::{eta, ray_cone};
-use super::{record, RefractArgs};
+use super::{RefractArgs, MODULE};
 use crate::degenerate::{cone, direction_at, same, value};
 use crate::record::Record;
 use crate::strategy::{angle, normal_and_direction, one_argument, scalar};
@@ -20,7 +20,8 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
     let in_plane = Vec3::X;
     let grazing = direction_at(1.0e-6);
     let thirty_degrees = Vec3::new(0.5, 0.0, -0.866_025_4);
-    record(
+    Record::new(
+        MODULE,
         "refract_ray_cone",
         |(cone, n, d, beta, eta)| rc::refract_ray_cone(cone, n, d, beta, eta),
         || {
@@ -35,7 +36,7 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
                 .boxed()
         },
     )
-    .enclosure(b_refract_ray_cone)
+    .enclosure(enclosure::refract_ray_cone)
     .fuzz(|d| (d.cone(), d.unit(), d.unit(), d.angle(), d.scalar()))
     .degenerate(vec![
         value(
@@ -97,7 +98,8 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
 
 /// `rf_roughness_spread_angle`: the enclosure of the spread.
 pub fn roughness_spread_angle() -> Record<(f32,), f32> {
-    record(
+    Record::new(
+        MODULE,
         "roughness_spread_angle",
         |(r,)| rc::roughness_spread_angle(r),
         || {
@@ -111,7 +113,7 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
             one_argument(roughness)
         },
     )
-    .enclosure(|&(r,)| vec![b_roughness_spread_angle(r)])
+    .enclosure(|&(r,)| vec![enclosure::roughness_spread_angle(r)])
     .fuzz(|d| (d.scalar(),))
     .range(0.0, 142.0, "roughness spread")
     .degenerate(vec![

@@ -3,8 +3,8 @@
 use super::bound::{
     curvature_spread_angle_error, edge_curvature_error, triangle_curvature_error, width_at_error,
 };
-use super::record;
 use super::strategy::{off_the_plane, ray_cone};
+use super::MODULE;
 use crate::degenerate::{cone, direction_at, mirror, same, value, Row, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -38,7 +38,8 @@ fn sub_normal_derivatives() -> Row<(Vec3, Vec3)> {
 
 /// `rf_width_at`.
 pub fn width_at() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "width_at",
         |(cone, t)| rc::width_at(cone, t),
         || (ray_cone(), distance()).boxed(),
@@ -66,7 +67,8 @@ pub fn width_at() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_propagate`.
 pub fn propagate() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "propagate",
         |(cone, t, beta)| rc::propagate(cone, t, beta),
         || (ray_cone(), distance(), angle()).boxed(),
@@ -106,7 +108,8 @@ pub fn propagate() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_normal_spread_angle`.
 pub fn normal_spread_angle() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "normal_spread_angle",
         |(dn_dx, dn_dy)| rc::normal_spread_angle(dn_dx, dn_dy),
         || (small_vec3(), small_vec3()).boxed(),
@@ -139,7 +142,8 @@ pub fn normal_spread_angle() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_normal_spread_angle_small`.
 pub fn normal_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "normal_spread_angle_small",
         |(dn_dx, dn_dy)| rc::normal_spread_angle_small(dn_dx, dn_dy),
         || (small_vec3(), small_vec3()).boxed(),
@@ -163,7 +167,8 @@ pub fn normal_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_curvature_sign`.
 pub fn curvature_sign() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
-    record(
+    Record::new(
+        MODULE,
         "curvature_sign",
         |(dp_dx, dp_dy, dn_dx, dn_dy)| rc::curvature_sign(dp_dx, dp_dy, dn_dx, dn_dy),
         || (small_vec3(), small_vec3(), small_vec3(), small_vec3()).boxed(),
@@ -211,7 +216,8 @@ pub fn curvature_sign() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_surface_spread_angle`.
 pub fn surface_spread_angle() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "surface_spread_angle",
         |(phi, sign, k1, k2)| rc::surface_spread_angle(phi, sign, k1, k2),
         || {
@@ -253,7 +259,8 @@ pub fn surface_spread_angle() -> Record<impl Args + Perturb, impl Value> {
 pub fn edge_curvature() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "edge_curvature",
         |(p_i, p_j, n_i, n_j)| rc::edge_curvature(p_i, p_j, n_i, n_j),
         || (vec3(), vec3(), small_vec3(), small_vec3()).boxed(),
@@ -282,7 +289,8 @@ pub fn edge_curvature() -> Record<impl Args + Perturb, impl Value> {
 pub fn triangle_curvature() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "triangle_curvature",
         |(p0, p1, p2, n0, n1, n2)| rc::triangle_curvature(p0, p1, p2, n0, n1, n2),
         || {
@@ -327,7 +335,8 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
     let head_on = Vec3::NEG_Z;
     let in_plane = Vec3::X;
     let grazing = direction_at(1.0e-6);
-    record(
+    Record::new(
+        MODULE,
         "curvature_spread_angle",
         |(curvature, width, normal, direction)| {
             rc::curvature_spread_angle(curvature, width, normal, direction)

@@ -1,19 +1,16 @@
 //! Records of `ray_diff`: Camera rays and their differentials (RTG Eq. 8-11; wireframe tutorial).
 
-use super::enclosure::{
-    b_eye_ray_diff, b_eye_ray_diff_from_matrices, b_eye_ray_direction, b_eye_ray_direction_from_matrices,
-    b_normalized_derivative, b_pixel_directions,
-};
+use super::enclosure;
 use super::rows::{centre_camera, matrix_rows};
 use super::strategy::{any_direction, camera, camera_with_a_view, differential_vec3, matrices};
-use super::{record, Matrices};
+use super::{Matrices, MODULE};
 use crate::degenerate::{mirror, parts, same, value, vulkan_inverse_projection, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, NeighbourDirections, RayDiff, DIFF_MAX_FOV_Y, DIFF_MIN_MAGNITUDE};
-use shader_proptest::interval::interval3 as v3;
+use shader_proptest::interval::interval3;
 use shader_proptest::{Args, Value};
 
 /// `rf_eye_ray_direction`.
@@ -21,12 +18,13 @@ pub fn eye_ray_direction() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let y = Vec3::Y;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "eye_ray_direction",
         |(pixel, size, fov, r, u, v)| rd::eye_ray_direction(pixel, size, fov, r, u, v),
         camera,
     )
-    .enclosure(|a| b_eye_ray_direction(a).components())
+    .enclosure(|a| enclosure::eye_ray_direction(a).components())
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -54,12 +52,13 @@ pub fn eye_ray_direction() -> Record<impl Args + Perturb, impl Value> {
 pub fn normalized_derivative() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "normalized_derivative",
         |(v, dv)| rd::normalized_derivative(v, dv),
         || (any_direction(), differential_vec3()).boxed(),
     )
-    .enclosure(|&(v, dv)| b_normalized_derivative(v3(v), v3(dv)).components())
+    .enclosure(|&(v, dv)| enclosure::normalized_derivative(interval3(v), interval3(dv)).components())
     .fuzz(|d| (d.vec3(), d.vec3()))
     .degenerate(vec![
         value(
@@ -85,12 +84,13 @@ pub fn normalized_derivative() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_eye_ray_diff`.
 pub fn eye_ray_diff() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "eye_ray_diff",
         |(pixel, size, fov, r, u, v)| rd::eye_ray_diff(pixel, size, fov, r, u, v),
         camera_with_a_view,
     )
-    .enclosure(b_eye_ray_diff)
+    .enclosure(enclosure::eye_ray_diff)
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         same(
@@ -117,14 +117,15 @@ pub fn eye_ray_diff() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_eye_ray_direction_from_matrices`.
 pub fn eye_ray_direction_from_matrices() -> Record<impl Args + Perturb, impl Value> {
     let inverse_projection = vulkan_inverse_projection();
-    record(
+    Record::new(
+        MODULE,
         "eye_ray_direction_from_matrices",
         |(pixel, size, view_inv, inverse_projection)| {
             rd::eye_ray_direction_from_matrices(pixel, size, view_inv, inverse_projection)
         },
         matrices,
     )
-    .enclosure(|a| b_eye_ray_direction_from_matrices(a).components())
+    .enclosure(|a| enclosure::eye_ray_direction_from_matrices(a).components())
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(
         inverse_projection,
@@ -136,14 +137,15 @@ pub fn eye_ray_direction_from_matrices() -> Record<impl Args + Perturb, impl Val
 /// `rf_eye_ray_diff_from_matrices`: the enclosure of every component.
 pub fn eye_ray_diff_from_matrices() -> Record<Matrices, RayDiff> {
     let inverse_projection = vulkan_inverse_projection();
-    record(
+    Record::new(
+        MODULE,
         "eye_ray_diff_from_matrices",
         |(pixel, size, view_inv, inverse_projection)| {
             rd::eye_ray_diff_from_matrices(pixel, size, view_inv, inverse_projection)
         },
         matrices,
     )
-    .enclosure(b_eye_ray_diff_from_matrices)
+    .enclosure(enclosure::eye_ray_diff_from_matrices)
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", parts(RayDiff::ZERO)))
 }
@@ -151,14 +153,15 @@ pub fn eye_ray_diff_from_matrices() -> Record<Matrices, RayDiff> {
 /// `rf_pixel_directions`: the enclosure of both directions.
 pub fn pixel_directions() -> Record<Matrices, NeighbourDirections> {
     let inverse_projection = vulkan_inverse_projection();
-    record(
+    Record::new(
+        MODULE,
         "pixel_directions",
         |(pixel, size, view_inv, inverse_projection)| {
             rd::pixel_directions(pixel, size, view_inv, inverse_projection)
         },
         matrices,
     )
-    .enclosure(b_pixel_directions)
+    .enclosure(enclosure::pixel_directions)
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", vec![0.0; 6]))
 }

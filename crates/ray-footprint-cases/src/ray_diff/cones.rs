@@ -1,11 +1,8 @@
 //! Records of `ray_diff`: Ray cones and ray differentials together.
 
-use super::enclosure::{
-    b_anisotropic_cone_axes, b_anisotropic_cone_gradients, b_cone_barycentric_deltas, b_cone_from_ray_diff,
-    b_derivatives3, b_ray_diff_from_cone,
-};
+use super::enclosure;
 use super::strategy::{ray_diff, triangle_and_direction};
-use super::{record, ConeGradientArgs};
+use super::{ConeGradientArgs, MODULE};
 use crate::degenerate::{direction_at, parts, same, value};
 use crate::record::Record;
 use crate::strategy::{
@@ -14,17 +11,18 @@ use crate::strategy::{
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, RayDiff, DIFF_MIN_COS};
-use shader_proptest::interval::interval3 as v3;
+use shader_proptest::interval::interval3;
 
 /// `rf_cone_barycentric_deltas`: the enclosure of the deltas.
 pub fn cone_barycentric_deltas() -> Record<(f32, Vec3, Vec3, Vec3), Vec3> {
     let x = Vec3::X;
-    record(
+    Record::new(
+        MODULE,
         "cone_barycentric_deltas",
         |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
         || with_corners(scalar(), triangle()),
     )
-    .enclosure(b_cone_barycentric_deltas)
+    .enclosure(enclosure::cone_barycentric_deltas)
     .fuzz(|d| (d.scalar(), d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, rd::DIFF_MAX_VALUE, "delta")
     .degenerate(vec![
@@ -53,7 +51,8 @@ pub fn cone_barycentric_deltas() -> Record<(f32, Vec3, Vec3, Vec3), Vec3> {
 pub fn anisotropic_cone_axes() -> Record<(f32, Vec3, Vec3), Derivatives3> {
     let x = Vec3::X;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "anisotropic_cone_axes",
         |(width, n, d)| rd::anisotropic_cone_axes(width, n, d),
         || {
@@ -63,8 +62,8 @@ pub fn anisotropic_cone_axes() -> Record<(f32, Vec3, Vec3), Derivatives3> {
         },
     )
     .enclosure(|&(width, n, d)| {
-        let (major, minor) = b_anisotropic_cone_axes(width, v3(n), v3(d));
-        b_derivatives3(major, minor)
+        let (major, minor) = enclosure::anisotropic_cone_axes(width, interval3(n), interval3(d));
+        enclosure::derivatives3(major, minor)
     })
     .fuzz(|d| (d.scalar(), d.unit(), d.unit()))
     .degenerate(vec![
@@ -96,7 +95,8 @@ pub fn anisotropic_cone_gradients() -> Record<ConeGradientArgs, Derivatives2> {
     let x = Vec3::X;
     let y = Vec3::Y;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "anisotropic_cone_gradients",
         |(w, d, p0, p1, p2, uv0, uv1, uv2)| rd::anisotropic_cone_gradients(w, d, p0, p1, p2, uv0, uv1, uv2),
         || {
@@ -105,7 +105,7 @@ pub fn anisotropic_cone_gradients() -> Record<ConeGradientArgs, Derivatives2> {
                 .boxed()
         },
     )
-    .enclosure(b_anisotropic_cone_gradients)
+    .enclosure(enclosure::anisotropic_cone_gradients)
     .fuzz(|d| {
         (
             d.scalar(),
@@ -151,12 +151,13 @@ pub fn ray_diff_from_cone() -> Record<(Vec2, Vec3), RayDiff> {
     let x = Vec3::X;
     let y = Vec3::Y;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "ray_diff_from_cone",
         |(cone, d)| rd::ray_diff_from_cone(cone, d),
         || (vec2_of(scalar(), angle()), unit_vec3()).boxed(),
     )
-    .enclosure(b_ray_diff_from_cone)
+    .enclosure(enclosure::ray_diff_from_cone)
     .fuzz(|d| (d.vec2(), d.unit()))
     .degenerate(vec![
         value("zero cone", "zero differential", (Vec2::ZERO, -z), vec![0.0; 16]),
@@ -186,12 +187,13 @@ pub fn cone_from_ray_diff() -> Record<(RayDiff, Vec3), Vec2> {
     let x = Vec3::X;
     let y = Vec3::Y;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "cone_from_ray_diff",
         |(diff, d)| rd::cone_from_ray_diff(diff, d),
         || (ray_diff(), unit_vec3()).boxed(),
     )
-    .enclosure(b_cone_from_ray_diff)
+    .enclosure(enclosure::cone_from_ray_diff)
     .fuzz(|d| (d.ray_diff(), d.unit()))
     .promise(|_, cone, promises| promises.within(cone.x, 0.0, f32::MAX, "width"))
     .degenerate(vec![

@@ -1,12 +1,9 @@
 //! Records of `ray_diff`: Barycentric, texture and LOD derivatives (RTG Eq. 12-24).
 
-use super::enclosure::{
-    b_barycentric_derivatives, b_derivatives2, b_determinant, b_lod_box, b_lod_isotropic,
-    b_secondary_origin_derivatives, b_texture_derivatives, s, well_conditioned,
-};
+use super::enclosure::{self, well_conditioned};
 use super::rows::{direction_dx, zero_diff_dx};
 use super::strategy::{any_direction, derivatives2, ray_diff};
-use super::{record, BarycentricArgs};
+use super::{BarycentricArgs, MODULE};
 use crate::degenerate::{mirror, same, value, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -14,7 +11,7 @@ use crate::strategy::{distance, image_size, one_argument, triangle, uv_triangle,
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, DIFF_MAX_VALUE, DIFF_MIN_MAGNITUDE};
-use shader_proptest::interval::{interval2 as v2, interval3 as v3};
+use shader_proptest::interval::{interval2, interval3, Interval};
 use shader_proptest::{Args, Value};
 
 /// `rf_barycentric_derivatives`: the enclosure of the four derivatives.
@@ -23,19 +20,25 @@ pub fn barycentric_derivatives() -> Record<BarycentricArgs, Derivatives2> {
     let y = Vec3::Y;
     let z = Vec3::Z;
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "barycentric_derivatives",
         |(diff, d, t, p0, p1, p2)| rd::barycentric_derivatives(diff, d, t, p0, p1, p2),
         || {
             (ray_diff(), any_direction(), distance(), triangle())
                 .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
                 .prop_filter("an ill-conditioned determinant", |&(_, d, _, p0, p1, p2)| {
-                    well_conditioned(b_determinant(v3(d), v3(p0), v3(p1), v3(p2)))
+                    well_conditioned(enclosure::determinant(
+                        interval3(d),
+                        interval3(p0),
+                        interval3(p1),
+                        interval3(p2),
+                    ))
                 })
                 .boxed()
         },
     )
-    .enclosure(b_barycentric_derivatives)
+    .enclosure(enclosure::barycentric_derivatives)
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.vec3(), d.vec3(), d.vec3()))
     .range(-rd::DIFF_MAX_VALUE, rd::DIFF_MAX_VALUE, "barycentric derivative")
     .degenerate(vec![
@@ -63,13 +66,14 @@ pub fn barycentric_derivatives() -> Record<BarycentricArgs, Derivatives2> {
 /// `rf_barycentric_w_derivatives`.
 pub fn barycentric_w_derivatives() -> Record<impl Args + Perturb, impl Value> {
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "barycentric_w_derivatives",
         |(b,)| rd::barycentric_w_derivatives(b),
         || one_argument(derivatives2()),
     )
     .enclosure(|&(b,)| {
-        let (dx, dy) = (v2(b.dx), v2(b.dy));
+        let (dx, dy) = (interval2(b.dx), interval2(b.dy));
         vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]]
     })
     .fuzz(|d| (d.derivatives2(),))
@@ -93,14 +97,15 @@ pub fn barycentric_w_derivatives() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_texture_derivatives`: the enclosure of the UV gradients.
 pub fn texture_derivatives() -> Record<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2> {
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "texture_derivatives",
         |(b, t0, t1, t2)| rd::texture_derivatives(b, t0, t1, t2),
         || with_corners(derivatives2(), uv_triangle()),
     )
     .enclosure(|&(b, t0, t1, t2)| {
-        let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
-        b_derivatives2(dx, dy)
+        let (dx, dy) = enclosure::texture_derivatives(b, t0, t1, t2);
+        enclosure::derivatives2(dx, dy)
     })
     .fuzz(|d| (d.derivatives2(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
@@ -143,7 +148,8 @@ pub fn texture_derivatives() -> Record<(Derivatives2, Vec2, Vec2, Vec2), Derivat
 /// `rf_texel_derivatives`.
 pub fn texel_derivatives() -> Record<impl Args + Perturb, impl Value> {
     let g = Derivatives2::new(Vec2::X, Vec2::ZERO);
-    record(
+    Record::new(
+        MODULE,
         "texel_derivatives",
         |(b, t0, t1, t2, size)| rd::texel_derivatives(b, t0, t1, t2, size),
         || {
@@ -153,9 +159,9 @@ pub fn texel_derivatives() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(|&(b, t0, t1, t2, size)| {
-        let (dx, dy) = b_texture_derivatives(b, t0, t1, t2);
-        let size = v2(size.max(Vec2::ONE));
-        b_derivatives2(dx * size, dy * size)
+        let (dx, dy) = enclosure::texture_derivatives(b, t0, t1, t2);
+        let size = interval2(size.max(Vec2::ONE));
+        enclosure::derivatives2(dx * size, dy * size)
     })
     .fuzz(|d| (d.derivatives2(), d.vec2(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
@@ -191,12 +197,13 @@ pub fn secondary_origin_derivatives() -> Record<impl Args + Perturb, impl Value>
     let x = Vec3::X;
     let y = Vec3::Y;
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "secondary_origin_derivatives",
         |(b, p0, p1, p2)| rd::secondary_origin_derivatives(b, p0, p1, p2),
         || with_corners(derivatives2(), triangle()),
     )
-    .enclosure(b_secondary_origin_derivatives)
+    .enclosure(enclosure::secondary_origin_derivatives)
     .fuzz(|d| (d.derivatives2(), d.vec3(), d.vec3(), d.vec3()))
     .degenerate(vec![
         value(
@@ -227,12 +234,13 @@ pub fn secondary_origin_derivatives() -> Record<impl Args + Perturb, impl Value>
 
 /// `rf_lod_isotropic`: the enclosure of the LOD.
 pub fn lod_isotropic() -> Record<(Derivatives2,), f32> {
-    record(
+    Record::new(
+        MODULE,
         "lod_isotropic",
         |(g,)| rd::lod_isotropic(g),
         || one_argument(derivatives2()),
     )
-    .enclosure(|&(g,)| vec![b_lod_isotropic(g)])
+    .enclosure(|&(g,)| vec![enclosure::lod_isotropic(g)])
     .fuzz(|d| (d.derivatives2(),))
     .range(0.5 * rd::DIFF_MIN_MAGNITUDE.log2(), f32::MAX, "LOD")
     .degenerate(vec![
@@ -265,48 +273,54 @@ pub fn lod_isotropic() -> Record<(Derivatives2,), f32> {
 
 /// `rf_lod_box`.
 pub fn lod_box() -> Record<impl Args + Perturb, impl Value> {
-    record("lod_box", |(g,)| rd::lod_box(g), || one_argument(derivatives2()))
-        .enclosure(|&(g,)| vec![b_lod_box(g)])
-        .fuzz(|d| (d.derivatives2(),))
-        .range(rd::DIFF_MIN_MAGNITUDE.log2(), f32::MAX, "LOD")
-        .degenerate(vec![
-            value(
-                "zero gradients",
-                "log2(DIFF_MIN_MAGNITUDE)",
-                (Derivatives2::default(),),
-                vec![DIFF_MIN_MAGNITUDE.log2()],
-            ),
-            mirror(
-                "NaN in",
-                "CPU: log2 of the other components' extent (Rust's `max` ignores NaN)",
-                (Derivatives2::new(Vec2::new(NAN, 1.0), Vec2::ZERO),),
-                vec![0.0],
-            ),
-            value(
-                "unit texel gradients",
-                "0",
-                (Derivatives2::new(Vec2::X, Vec2::Y),),
-                vec![0.0],
-            ),
-            value(
-                "dx = (1, 0), dy = (-1, 0)",
-                "1: the box adds magnitudes, opposite signs do not cancel",
-                (Derivatives2::new(Vec2::X, Vec2::NEG_X),),
-                vec![1.0],
-            ),
-        ])
+    Record::new(
+        MODULE,
+        "lod_box",
+        |(g,)| rd::lod_box(g),
+        || one_argument(derivatives2()),
+    )
+    .enclosure(|&(g,)| vec![enclosure::lod_box(g)])
+    .fuzz(|d| (d.derivatives2(),))
+    .range(rd::DIFF_MIN_MAGNITUDE.log2(), f32::MAX, "LOD")
+    .degenerate(vec![
+        value(
+            "zero gradients",
+            "log2(DIFF_MIN_MAGNITUDE)",
+            (Derivatives2::default(),),
+            vec![DIFF_MIN_MAGNITUDE.log2()],
+        ),
+        mirror(
+            "NaN in",
+            "CPU: log2 of the other components' extent (Rust's `max` ignores NaN)",
+            (Derivatives2::new(Vec2::new(NAN, 1.0), Vec2::ZERO),),
+            vec![0.0],
+        ),
+        value(
+            "unit texel gradients",
+            "0",
+            (Derivatives2::new(Vec2::X, Vec2::Y),),
+            vec![0.0],
+        ),
+        value(
+            "dx = (1, 0), dy = (-1, 0)",
+            "1: the box adds magnitudes, opposite signs do not cancel",
+            (Derivatives2::new(Vec2::X, Vec2::NEG_X),),
+            vec![1.0],
+        ),
+    ])
 }
 
 /// `rf_sample_grad_gradients`.
 pub fn sample_grad_gradients() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "sample_grad_gradients",
         |(g, scale)| rd::sample_grad_gradients(g, scale),
         || (derivatives2(), -1.0f32..4.0).boxed(),
     )
     .enclosure(|&(g, scale)| {
-        let scale = s(scale.max(0.0));
-        b_derivatives2(v2(g.dx) * scale, v2(g.dy) * scale)
+        let scale = Interval::exact(scale.max(0.0));
+        enclosure::derivatives2(interval2(g.dx) * scale, interval2(g.dy) * scale)
     })
     .fuzz(|d| (d.derivatives2(), d.scalar()))
     .degenerate(vec![

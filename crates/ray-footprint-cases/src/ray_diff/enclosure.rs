@@ -1,7 +1,8 @@
-//! Interval enclosures of the ray_diff functions: each `b_*` re-evaluates one shader function (or
-//! a step of one) in interval arithmetic, in the same order of operations as `src/ray_diff.rs`,
-//! widening after each operation by the rounding error that Vulkan's precision rules allow the
-//! device (and that the mirror makes). The width of the result is the check's tolerance. Also here:
+//! Interval enclosures of the ray_diff functions: each function here re-evaluates the shader
+//! function of its name (or a step of one) in interval arithmetic, in the same order of operations
+//! as `src/ray_diff.rs`, widening after each operation by the rounding error that Vulkan's
+//! precision rules allow the device (and that the mirror makes). The width of the result is the
+//! record's tolerance. Also here:
 //! the conditioning tests that keep a check to inputs whose enclosure says something
 //! ([`WELL_CONDITIONED`]).
 
@@ -12,192 +13,213 @@ use ray_footprint::ray_diff::{
     DIFF_MIN_COS, DIFF_MIN_MAGNITUDE, DIFF_MIN_SINE,
 };
 use shader_proptest::interval::{
-    interval2 as v2, interval3 as v3, mat_vec, Interval as I, Interval2 as V2, Interval3 as V3,
-    IntervalVec as V, F32,
+    interval2, interval3, mat_vec, Interval, Interval2, Interval3, IntervalVec, F32,
 };
 
-pub(super) fn s(x: f32) -> I {
-    I::exact(x)
-}
-
-fn zero3() -> V3 {
-    V([I::c(0.0); 3])
+fn zero3() -> Interval3 {
+    IntervalVec([Interval::c(0.0); 3])
 }
 
 /// A `RayDiff`'s 16 components, pads exactly 0.
-fn b_ray_diff(o_dx: V3, o_dy: V3, d_dx: V3, d_dy: V3) -> Vec<I> {
+fn ray_diff(o_dx: Interval3, o_dy: Interval3, d_dx: Interval3, d_dy: Interval3) -> Vec<Interval> {
     [o_dx, o_dy, d_dx, d_dy]
         .iter()
-        .flat_map(|v| v.components().into_iter().chain([I::c(0.0)]))
+        .flat_map(|v| v.components().into_iter().chain([Interval::c(0.0)]))
         .collect()
 }
 
-pub(super) fn b_derivatives2(dx: V2, dy: V2) -> Vec<I> {
+pub(super) fn derivatives2(dx: Interval2, dy: Interval2) -> Vec<Interval> {
     [dx.components(), dy.components()].concat()
 }
 
-pub(super) fn b_derivatives3(dx: V3, dy: V3) -> Vec<I> {
+pub(super) fn derivatives3(dx: Interval3, dy: Interval3) -> Vec<Interval> {
     [dx.components(), dy.components()].concat()
 }
 
-fn b_eye_ray_extent(image_size: Vec2, fov_y: f32) -> V2 {
+fn eye_ray_extent(image_size: Vec2, fov_y: f32) -> Interval2 {
     let size = image_size.max(Vec2::ONE);
-    let f = I::tan_exact(0.5 * fov_y.clamp(0.0, DIFF_MAX_FOV_Y));
-    V([s(size.x) / s(size.y) * f, f])
+    let f = Interval::tan_exact(0.5 * fov_y.clamp(0.0, DIFF_MAX_FOV_Y));
+    IntervalVec([Interval::exact(size.x) / Interval::exact(size.y) * f, f])
 }
 
-fn b_pixel_ndc(pixel: Vec2, image_size: Vec2) -> V2 {
+fn pixel_ndc(pixel: Vec2, image_size: Vec2) -> Interval2 {
     let size = image_size.max(Vec2::ONE);
-    V(std::array::from_fn(|i| {
-        (s(pixel[i]) + I::c(0.5)) / s(size[i]) * I::c(2.0) - I::c(1.0)
+    IntervalVec(std::array::from_fn(|i| {
+        (Interval::exact(pixel[i]) + Interval::c(0.5)) / Interval::exact(size[i]) * Interval::c(2.0)
+            - Interval::c(1.0)
     }))
 }
 
-pub(super) fn b_eye_ray_direction(&(pixel, size, fov, right, up, view): &Camera) -> V3 {
-    let c = b_pixel_ndc(pixel, size);
-    let extent = b_eye_ray_extent(size, fov);
-    v3(right) * (c.0[0] * extent.0[0]) - v3(up) * (c.0[1] * extent.0[1]) - v3(view)
+pub(super) fn eye_ray_direction(&(pixel, size, fov, right, up, view): &Camera) -> Interval3 {
+    let c = pixel_ndc(pixel, size);
+    let extent = eye_ray_extent(size, fov);
+    interval3(right) * (c.0[0] * extent.0[0]) - interval3(up) * (c.0[1] * extent.0[1]) - interval3(view)
 }
 
-pub(super) fn b_normalized_derivative(v: V3, dv: V3) -> V3 {
+pub(super) fn normalized_derivative(v: Interval3, dv: Interval3) -> Interval3 {
     let length2 = v.dot(v).max_c(f64::from(DIFF_MIN_MAGNITUDE));
     (dv - v * (v.dot(dv) / length2)) / length2.sqrt()
 }
 
 /// The direction differentials of `eye_ray_diff` (its origin differentials are exactly 0).
-pub fn b_eye_ray_direction_derivatives(camera: &Camera) -> (V3, V3) {
+pub fn eye_ray_direction_derivatives(camera: &Camera) -> (Interval3, Interval3) {
     let &(_, image_size, fov, right, up, _) = camera;
-    let d = b_eye_ray_direction(camera);
+    let d = eye_ray_direction(camera);
     let size = image_size.max(Vec2::ONE);
-    let extent = b_eye_ray_extent(image_size, fov);
-    let dd_dx = v3(right) * (I::c(2.0) * extent.0[0] / s(size.x));
-    let dd_dy = v3(up) * -(I::c(2.0) * extent.0[1] / s(size.y));
-    (
-        b_normalized_derivative(d, dd_dx),
-        b_normalized_derivative(d, dd_dy),
-    )
+    let extent = eye_ray_extent(image_size, fov);
+    let dd_dx = interval3(right) * (Interval::c(2.0) * extent.0[0] / Interval::exact(size.x));
+    let dd_dy = interval3(up) * -(Interval::c(2.0) * extent.0[1] / Interval::exact(size.y));
+    (normalized_derivative(d, dd_dx), normalized_derivative(d, dd_dy))
 }
 
-pub(super) fn b_eye_ray_diff(camera: &Camera) -> Vec<I> {
-    let (dd_dx, dd_dy) = b_eye_ray_direction_derivatives(camera);
-    b_ray_diff(zero3(), zero3(), dd_dx, dd_dy)
+pub(super) fn eye_ray_diff(camera: &Camera) -> Vec<Interval> {
+    let (dd_dx, dd_dy) = eye_ray_direction_derivatives(camera);
+    ray_diff(zero3(), zero3(), dd_dx, dd_dy)
 }
 
-fn b_safe_normalize(v: V3) -> V3 {
+fn safe_normalize(v: Interval3) -> Interval3 {
     v / v.dot(v).max_c(f64::from(DIFF_MIN_MAGNITUDE)).sqrt()
 }
 
-fn b_matrix_ray_direction(ndc: V2, view_inv: Mat4, proj_inv: Mat4) -> V3 {
-    let far_point = mat_vec(proj_inv, V([ndc.0[0], ndc.0[1], I::c(1.0)]), I::c(1.0), F32);
-    mat_vec(view_inv, b_safe_normalize(far_point), I::c(0.0), F32)
+fn matrix_ray_direction(ndc: Interval2, view_inv: Mat4, proj_inv: Mat4) -> Interval3 {
+    let far_point = mat_vec(
+        proj_inv,
+        IntervalVec([ndc.0[0], ndc.0[1], Interval::c(1.0)]),
+        Interval::c(1.0),
+        F32,
+    );
+    mat_vec(view_inv, safe_normalize(far_point), Interval::c(0.0), F32)
 }
 
-pub(super) fn b_eye_ray_direction_from_matrices(&(pixel, size, view_inv, proj_inv): &Matrices) -> V3 {
-    b_matrix_ray_direction(b_pixel_ndc(pixel, size), view_inv, proj_inv)
+pub(super) fn eye_ray_direction_from_matrices(&(pixel, size, view_inv, proj_inv): &Matrices) -> Interval3 {
+    matrix_ray_direction(pixel_ndc(pixel, size), view_inv, proj_inv)
 }
 
-pub(super) fn b_eye_ray_diff_from_matrices(&(pixel, image_size, view_inv, proj_inv): &Matrices) -> Vec<I> {
+pub(super) fn eye_ray_diff_from_matrices(
+    &(pixel, image_size, view_inv, proj_inv): &Matrices,
+) -> Vec<Interval> {
     let size = image_size.max(Vec2::ONE);
-    let ndc = b_pixel_ndc(pixel, image_size);
-    let far_point = mat_vec(proj_inv, V([ndc.0[0], ndc.0[1], I::c(1.0)]), I::c(1.0), F32);
-    let dfar_dx = v3(proj_inv.x_axis.xyz()) * (I::c(2.0) / s(size.x));
-    let dfar_dy = v3(proj_inv.y_axis.xyz()) * (I::c(2.0) / s(size.y));
+    let ndc = pixel_ndc(pixel, image_size);
+    let far_point = mat_vec(
+        proj_inv,
+        IntervalVec([ndc.0[0], ndc.0[1], Interval::c(1.0)]),
+        Interval::c(1.0),
+        F32,
+    );
+    let dfar_dx = interval3(proj_inv.x_axis.xyz()) * (Interval::c(2.0) / Interval::exact(size.x));
+    let dfar_dy = interval3(proj_inv.y_axis.xyz()) * (Interval::c(2.0) / Interval::exact(size.y));
     let dd_dx = mat_vec(
         view_inv,
-        b_normalized_derivative(far_point, dfar_dx),
-        I::c(0.0),
+        normalized_derivative(far_point, dfar_dx),
+        Interval::c(0.0),
         F32,
     );
     let dd_dy = mat_vec(
         view_inv,
-        b_normalized_derivative(far_point, dfar_dy),
-        I::c(0.0),
+        normalized_derivative(far_point, dfar_dy),
+        Interval::c(0.0),
         F32,
     );
-    b_ray_diff(zero3(), zero3(), dd_dx, dd_dy)
+    ray_diff(zero3(), zero3(), dd_dx, dd_dy)
 }
 
-pub(super) fn b_pixel_directions(&(pixel, size, view_inv, proj_inv): &Matrices) -> Vec<I> {
-    let ndc = b_pixel_ndc(pixel, size);
-    let next = b_pixel_ndc(pixel + 1.0, size);
-    let right = b_matrix_ray_direction(V([next.0[0], ndc.0[1]]), view_inv, proj_inv);
-    let below = b_matrix_ray_direction(V([ndc.0[0], next.0[1]]), view_inv, proj_inv);
-    b_derivatives3(right, below)
+pub(super) fn pixel_directions(&(pixel, size, view_inv, proj_inv): &Matrices) -> Vec<Interval> {
+    let ndc = pixel_ndc(pixel, size);
+    let next = pixel_ndc(pixel + 1.0, size);
+    let right = matrix_ray_direction(IntervalVec([next.0[0], ndc.0[1]]), view_inv, proj_inv);
+    let below = matrix_ray_direction(IntervalVec([ndc.0[0], next.0[1]]), view_inv, proj_inv);
+    derivatives3(right, below)
 }
 
 /// One origin differential transferred to the plane at `t` with normal `normal`; the differential
 /// comes as intervals (from earlier operations), the ray and the plane are exact.
-pub fn b_transferred_origin(d_origin: V3, d_direction: V3, direction: Vec3, t: f32, normal: Vec3) -> V3 {
-    let cosine = v3(direction).dot(v3(normal));
-    let q = d_origin + d_direction * s(t);
-    let dt = (-q.dot(v3(normal))).div_away(cosine, f64::from(DIFF_MIN_COS));
-    q + v3(direction) * dt
+pub fn transferred_origin(
+    d_origin: Interval3,
+    d_direction: Interval3,
+    direction: Vec3,
+    t: f32,
+    normal: Vec3,
+) -> Interval3 {
+    let cosine = interval3(direction).dot(interval3(normal));
+    let q = d_origin + d_direction * Interval::exact(t);
+    let dt = (-q.dot(interval3(normal))).div_away(cosine, f64::from(DIFF_MIN_COS));
+    q + interval3(direction) * dt
 }
 
-pub(super) fn b_transfer(&(diff, direction, t, normal): &(RayDiff, Vec3, f32, Vec3)) -> Vec<I> {
-    b_ray_diff(
-        b_transferred_origin(
-            v3(diff.d_origin_dx),
-            v3(diff.d_direction_dx),
+pub(super) fn transfer(&(diff, direction, t, normal): &(RayDiff, Vec3, f32, Vec3)) -> Vec<Interval> {
+    ray_diff(
+        transferred_origin(
+            interval3(diff.d_origin_dx),
+            interval3(diff.d_direction_dx),
             direction,
             t,
             normal,
         ),
-        b_transferred_origin(
-            v3(diff.d_origin_dy),
-            v3(diff.d_direction_dy),
+        transferred_origin(
+            interval3(diff.d_origin_dy),
+            interval3(diff.d_direction_dy),
             direction,
             t,
             normal,
         ),
-        v3(diff.d_direction_dx),
-        v3(diff.d_direction_dy),
+        interval3(diff.d_direction_dx),
+        interval3(diff.d_direction_dy),
     )
 }
 
 /// `x / k` clamped to `DIFF_MAX_VALUE`, `k` clamped away from 0 to `DIFF_MIN_MAGNITUDE`.
-fn b_barycentric_quotient(numerator: I, k: I) -> I {
+fn barycentric_quotient(numerator: Interval, k: Interval) -> Interval {
     let max = f64::from(DIFF_MAX_VALUE);
     numerator
         .div_away(k, f64::from(DIFF_MIN_MAGNITUDE))
         .clamp_c(-max, max)
 }
 
-pub(super) fn b_barycentric_derivatives(&(diff, direction, t, p0, p1, p2): &BarycentricArgs) -> Vec<I> {
-    let d = v3(direction);
-    let e1 = v3(p1) - v3(p0);
-    let e2 = v3(p2) - v3(p0);
-    let k = b_determinant(d, v3(p0), v3(p1), v3(p2));
+pub(super) fn barycentric_derivatives(&(diff, direction, t, p0, p1, p2): &BarycentricArgs) -> Vec<Interval> {
+    let d = interval3(direction);
+    let e1 = interval3(p1) - interval3(p0);
+    let e2 = interval3(p2) - interval3(p0);
+    let k = determinant(d, interval3(p0), interval3(p1), interval3(p2));
     let cu = e2.cross(d);
     let cv = d.cross(e1);
-    let q = v3(diff.d_origin_dx) + v3(diff.d_direction_dx) * s(t);
-    let r = v3(diff.d_origin_dy) + v3(diff.d_direction_dy) * s(t);
-    let quotient = |n: I| b_barycentric_quotient(n, k);
-    b_derivatives2(
-        V([quotient(cu.dot(q)), quotient(cv.dot(q))]),
-        V([quotient(cu.dot(r)), quotient(cv.dot(r))]),
+    let q = interval3(diff.d_origin_dx) + interval3(diff.d_direction_dx) * Interval::exact(t);
+    let r = interval3(diff.d_origin_dy) + interval3(diff.d_direction_dy) * Interval::exact(t);
+    let quotient = |n: Interval| barycentric_quotient(n, k);
+    derivatives2(
+        IntervalVec([quotient(cu.dot(q)), quotient(cv.dot(q))]),
+        IntervalVec([quotient(cu.dot(r)), quotient(cv.dot(r))]),
     )
 }
 
-pub(super) fn b_texture_derivatives(b: Derivatives2, t0: Vec2, t1: Vec2, t2: Vec2) -> (V2, V2) {
-    let g1 = v2(t1) - v2(t0);
-    let g2 = v2(t2) - v2(t0);
-    (g1 * s(b.dx.x) + g2 * s(b.dx.y), g1 * s(b.dy.x) + g2 * s(b.dy.y))
+pub(super) fn texture_derivatives(b: Derivatives2, t0: Vec2, t1: Vec2, t2: Vec2) -> (Interval2, Interval2) {
+    let g1 = interval2(t1) - interval2(t0);
+    let g2 = interval2(t2) - interval2(t0);
+    (
+        g1 * Interval::exact(b.dx.x) + g2 * Interval::exact(b.dx.y),
+        g1 * Interval::exact(b.dy.x) + g2 * Interval::exact(b.dy.y),
+    )
 }
 
-pub(super) fn b_secondary_origin_derivatives(&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3)) -> Vec<I> {
-    let e1 = v3(p1) - v3(p0);
-    let e2 = v3(p2) - v3(p0);
-    b_derivatives3(e1 * s(b.dx.x) + e2 * s(b.dx.y), e1 * s(b.dy.x) + e2 * s(b.dy.y))
+pub(super) fn secondary_origin_derivatives(
+    &(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3),
+) -> Vec<Interval> {
+    let e1 = interval3(p1) - interval3(p0);
+    let e2 = interval3(p2) - interval3(p0);
+    derivatives3(
+        e1 * Interval::exact(b.dx.x) + e2 * Interval::exact(b.dx.y),
+        e1 * Interval::exact(b.dy.x) + e2 * Interval::exact(b.dy.y),
+    )
 }
 
-pub(super) fn b_lod_isotropic(g: Derivatives2) -> I {
-    let rho2 = v2(g.dx).dot(v2(g.dx)).max(v2(g.dy).dot(v2(g.dy)));
-    I::c(0.5) * rho2.max_c(f64::from(DIFF_MIN_MAGNITUDE)).log2()
+pub(super) fn lod_isotropic(g: Derivatives2) -> Interval {
+    let rho2 = interval2(g.dx)
+        .dot(interval2(g.dx))
+        .max(interval2(g.dy).dot(interval2(g.dy)));
+    Interval::c(0.5) * rho2.max_c(f64::from(DIFF_MIN_MAGNITUDE)).log2()
 }
 
-pub(super) fn b_lod_box(g: Derivatives2) -> I {
-    let extent = v2(g.dx).abs() + v2(g.dy).abs();
+pub(super) fn lod_box(g: Derivatives2) -> Interval {
+    let extent = interval2(g.dx).abs() + interval2(g.dy).abs();
     extent.0[0]
         .max(extent.0[1])
         .max_c(f64::from(DIFF_MIN_MAGNITUDE))
@@ -206,49 +228,58 @@ pub(super) fn b_lod_box(g: Derivatives2) -> I {
 
 type NormalArgs = (Vec3, Vec3, Vec3, Vec2, Derivatives2);
 
-pub(super) fn b_normal_derivatives(&(n0, n1, n2, uv, b): &NormalArgs) -> Vec<I> {
-    let (n0, n1, n2) = (v3(n0), v3(n1), v3(n2));
-    let n = n0 * (I::c(1.0) - s(uv.x) - s(uv.y)) + n1 * s(uv.x) + n2 * s(uv.y);
-    let dn_dx = (n1 - n0) * s(b.dx.x) + (n2 - n0) * s(b.dx.y);
-    let dn_dy = (n1 - n0) * s(b.dy.x) + (n2 - n0) * s(b.dy.y);
-    b_derivatives3(
-        b_normalized_derivative(n, dn_dx),
-        b_normalized_derivative(n, dn_dy),
-    )
+pub(super) fn normal_derivatives(&(n0, n1, n2, uv, b): &NormalArgs) -> Vec<Interval> {
+    let (n0, n1, n2) = (interval3(n0), interval3(n1), interval3(n2));
+    let n = n0 * (Interval::c(1.0) - Interval::exact(uv.x) - Interval::exact(uv.y))
+        + n1 * Interval::exact(uv.x)
+        + n2 * Interval::exact(uv.y);
+    let dn_dx = (n1 - n0) * Interval::exact(b.dx.x) + (n2 - n0) * Interval::exact(b.dx.y);
+    let dn_dy = (n1 - n0) * Interval::exact(b.dy.x) + (n2 - n0) * Interval::exact(b.dy.y);
+    derivatives3(normalized_derivative(n, dn_dx), normalized_derivative(n, dn_dy))
 }
 
 /// One direction differential reflected at a hit; the differentials come as intervals, the ray
 /// and the normal are exact.
-pub fn b_reflected_direction(dd: V3, direction: Vec3, normal: Vec3, dn: V3) -> V3 {
-    let (d, n) = (v3(direction), v3(normal));
+pub fn reflected_direction(dd: Interval3, direction: Vec3, normal: Vec3, dn: Interval3) -> Interval3 {
+    let (d, n) = (interval3(direction), interval3(normal));
     let cosine = d.dot(n);
-    dd - (dn * cosine + n * (dd.dot(n) + d.dot(dn))) * I::c(2.0)
+    dd - (dn * cosine + n * (dd.dot(n) + d.dot(dn))) * Interval::c(2.0)
 }
 
 type ReflectArgs = (RayDiff, Vec3, Vec3, Derivatives3);
 
-pub(super) fn b_reflect_ray_diff(&(diff, direction, normal, dn): &ReflectArgs) -> Vec<I> {
-    b_ray_diff(
-        v3(diff.d_origin_dx),
-        v3(diff.d_origin_dy),
-        b_reflected_direction(v3(diff.d_direction_dx), direction, normal, v3(dn.dx)),
-        b_reflected_direction(v3(diff.d_direction_dy), direction, normal, v3(dn.dy)),
+pub(super) fn reflect_ray_diff(&(diff, direction, normal, dn): &ReflectArgs) -> Vec<Interval> {
+    ray_diff(
+        interval3(diff.d_origin_dx),
+        interval3(diff.d_origin_dy),
+        reflected_direction(
+            interval3(diff.d_direction_dx),
+            direction,
+            normal,
+            interval3(dn.dx),
+        ),
+        reflected_direction(
+            interval3(diff.d_direction_dy),
+            direction,
+            normal,
+            interval3(dn.dy),
+        ),
     )
 }
 
 type RefractArgs = (RayDiff, Vec3, Vec3, Derivatives3, f32);
 
 /// The refracted branch, for the part of `k`'s interval that is `>= 0`.
-fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I> {
-    let (d, n, eta) = (v3(direction), v3(normal), s(eta));
+fn refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: Interval) -> Vec<Interval> {
+    let (d, n, eta) = (interval3(direction), interval3(normal), Interval::exact(eta));
     let cosine = d.dot(n);
-    let root = I {
+    let root = Interval {
         lo: k.lo.max(0.0),
         ..k
     }
     .sqrt();
     // A magnitude with the sign of `cosine`: both signs where `cosine` straddles 0.
-    let with_cosine_sign = |magnitude: I| {
+    let with_cosine_sign = |magnitude: Interval| {
         if cosine.hi <= 0.0 {
             -magnitude
         } else if cosine.lo > 0.0 {
@@ -262,36 +293,36 @@ fn b_refracted(&(diff, direction, normal, dn, eta): &RefractArgs, k: I) -> Vec<I
     let clamped_cos = with_cosine_sign(root.max_c(f64::from(DIFF_MIN_COS)));
     let rate = eta - (eta * eta * cosine).div_away(clamped_cos, f64::from(DIFF_MIN_COS));
     let refracted = |dd: Vec3, dnormal: Vec3| {
-        let (dd, dnormal) = (v3(dd), v3(dnormal));
+        let (dd, dnormal) = (interval3(dd), interval3(dnormal));
         let d_cos = dd.dot(n) + d.dot(dnormal);
         dd * eta - (dnormal * mu + n * (rate * d_cos))
     };
-    b_ray_diff(
-        v3(diff.d_origin_dx),
-        v3(diff.d_origin_dy),
+    ray_diff(
+        interval3(diff.d_origin_dx),
+        interval3(diff.d_origin_dy),
         refracted(diff.d_direction_dx, dn.dx),
         refracted(diff.d_direction_dy, dn.dy),
     )
 }
 
 /// `k = 1 - eta^2 (1 - dot(D, N)^2)`: negative for total internal reflection.
-pub(super) fn b_refraction_determinant(&(_, direction, normal, _, eta): &RefractArgs) -> I {
-    let cosine = v3(direction).dot(v3(normal));
-    I::c(1.0) - s(eta) * s(eta) * (I::c(1.0) - cosine * cosine)
+pub(super) fn refraction_determinant(&(_, direction, normal, _, eta): &RefractArgs) -> Interval {
+    let cosine = interval3(direction).dot(interval3(normal));
+    Interval::c(1.0) - Interval::exact(eta) * Interval::exact(eta) * (Interval::c(1.0) - cosine * cosine)
 }
 
 /// Either branch, or the hull of both (flag `[0, 1]`) when `k`'s sign is uncertain.
-pub(super) fn b_refract_ray_diff(args: &RefractArgs) -> Vec<I> {
+pub(super) fn refract_ray_diff(args: &RefractArgs) -> Vec<Interval> {
     let &(diff, direction, normal, dn, _) = args;
-    let k = b_refraction_determinant(args);
+    let k = refraction_determinant(args);
     let reflected = || {
         [
-            b_reflect_ray_diff(&(diff, direction, normal, dn)),
-            vec![I::c(1.0)],
+            reflect_ray_diff(&(diff, direction, normal, dn)),
+            vec![Interval::c(1.0)],
         ]
         .concat()
     };
-    let refracted = || [b_refracted(args, k), vec![I::c(0.0)]].concat();
+    let refracted = || [refracted(args, k), vec![Interval::c(0.0)]].concat();
     if k.hi < 0.0 {
         reflected()
     } else if k.lo >= 0.0 {
@@ -318,13 +349,14 @@ fn use_backward(
     forward_step > epsilon && backward_step < forward_step
 }
 
-fn b_gbuffer_steps(start: GBufferSample, end: GBufferSample) -> (V3, V3) {
+fn gbuffer_steps(start: GBufferSample, end: GBufferSample) -> (Interval3, Interval3) {
     let reflect = |g: GBufferSample| {
-        let (e, n) = (v3(g.eye_direction), v3(g.normal));
-        e - n * (I::c(2.0) * n.dot(e))
+        let (e, n) = (interval3(g.eye_direction), interval3(g.normal));
+        e - n * (Interval::c(2.0) * n.dot(e))
     };
     (
-        v3(end.eye_direction) * s(end.distance) - v3(start.eye_direction) * s(start.distance),
+        interval3(end.eye_direction) * Interval::exact(end.distance)
+            - interval3(start.eye_direction) * Interval::exact(start.distance),
         reflect(end) - reflect(start),
     )
 }
@@ -338,35 +370,38 @@ type GBufferArgs = (
     f32,
 );
 
-pub(super) fn b_gbuffer_ray_diff(&(center, right, left, below, above, epsilon): &GBufferArgs) -> Vec<I> {
+pub(super) fn gbuffer_ray_diff(&(center, right, left, below, above, epsilon): &GBufferArgs) -> Vec<Interval> {
     let pair = |forward, backward| {
         if use_backward(center, forward, backward, epsilon) {
-            b_gbuffer_steps(backward, center)
+            gbuffer_steps(backward, center)
         } else {
-            b_gbuffer_steps(center, forward)
+            gbuffer_steps(center, forward)
         }
     };
     let (x, y) = (pair(right, left), pair(below, above));
-    b_ray_diff(x.0, y.0, x.1, y.1)
+    ray_diff(x.0, y.0, x.1, y.1)
 }
 
-pub(super) fn b_tangent_plane_offset(rd: Vec3, rd_neighbour: Vec3, t: f32, normal: Vec3) -> V3 {
-    let (rd, rdn, n) = (v3(rd), v3(rd_neighbour), v3(normal));
+pub(super) fn tangent_plane_offset(rd: Vec3, rd_neighbour: Vec3, t: f32, normal: Vec3) -> Interval3 {
+    let (rd, rdn, n) = (interval3(rd), interval3(rd_neighbour), interval3(normal));
     let ratio = rd.dot(n).div_away(rdn.dot(n), f64::from(DIFF_MIN_COS));
-    (rdn * ratio - rd) * s(t)
+    (rdn * ratio - rd) * Interval::exact(t)
 }
 
-pub(super) fn b_triplanar_weights(normal: Vec3, sharpness: f32) -> Vec<I> {
+pub(super) fn triplanar_weights(normal: Vec3, sharpness: f32) -> Vec<Interval> {
     let k = sharpness.clamp(0.0, DIFF_MAX_SHARPNESS);
     let size = normal.abs();
-    let largest = s(size.x.max(size.y).max(size.z.max(DIFF_MIN_MAGNITUDE)));
-    let m: [I; 3] =
-        std::array::from_fn(|i| (s(size[i]) / largest).max_c(f64::from(DIFF_MIN_MAGNITUDE)).pow(k));
+    let largest = Interval::exact(size.x.max(size.y).max(size.z.max(DIFF_MIN_MAGNITUDE)));
+    let m: [Interval; 3] = std::array::from_fn(|i| {
+        (Interval::exact(size[i]) / largest)
+            .max_c(f64::from(DIFF_MIN_MAGNITUDE))
+            .pow(k)
+    });
     let sum = (m[0] + m[1] + m[2]).max_c(f64::from(DIFF_MIN_MAGNITUDE));
     m.iter().map(|&x| x / sum).collect()
 }
 
-fn b_scaled_length(v: V3) -> I {
+fn scaled_length(v: Interval3) -> Interval {
     let a = v.abs();
     let m = a.0[0]
         .max(a.0[1])
@@ -377,7 +412,7 @@ fn b_scaled_length(v: V3) -> I {
 
 /// The determinant `k = dot(cross(e1, e2), direction)` of a ray against a triangle's plane (RTG
 /// Eq. 12-20): the divisor of every barycentric quotient.
-pub(super) fn b_determinant(direction: V3, p0: V3, p1: V3, p2: V3) -> I {
+pub(super) fn determinant(direction: Interval3, p0: Interval3, p1: Interval3, p2: Interval3) -> Interval {
     (p1 - p0).cross(p2 - p0).dot(direction)
 }
 
@@ -390,43 +425,49 @@ pub const WELL_CONDITIONED: f64 = 1.0 / 1024.0;
 
 /// Whether a quotient by `k` is well-conditioned ([`WELL_CONDITIONED`]); an exact 0 is, since both
 /// sides then take the clamp.
-pub(super) fn well_conditioned(k: I) -> bool {
+pub(super) fn well_conditioned(k: Interval) -> bool {
     k.relative_width() <= WELL_CONDITIONED
 }
 
-pub(super) fn b_intersect_triangle_plane(origin: V3, direction: V3, p0: V3, p1: V3, p2: V3) -> V3 {
+pub(super) fn intersect_triangle_plane(
+    origin: Interval3,
+    direction: Interval3,
+    p0: Interval3,
+    p1: Interval3,
+    p2: Interval3,
+) -> Interval3 {
     let e1 = p1 - p0;
     let e2 = p2 - p0;
     let s0 = origin - p0;
-    let k = b_determinant(direction, p0, p1, p2);
-    let u = b_barycentric_quotient(e2.cross(direction).dot(s0), k);
-    let v = b_barycentric_quotient(direction.cross(e1).dot(s0), k);
-    V([I::c(1.0) - u - v, u, v])
+    let k = determinant(direction, p0, p1, p2);
+    let u = barycentric_quotient(e2.cross(direction).dot(s0), k);
+    let v = barycentric_quotient(direction.cross(e1).dot(s0), k);
+    IntervalVec([Interval::c(1.0) - u - v, u, v])
 }
 
 /// The object-space origin and the two neighbour directions of the re-intersection.
-fn b_object_rays(&(w2o, origin, _, _, _, dir_x, dir_y, _): &OffsetArgs) -> (V3, V3, V3) {
-    let transform = |p: V3| mat_vec(w2o, p, I::c(1.0), F32);
-    let object_origin = transform(v3(origin));
-    let object_x = transform(v3(origin) + v3(dir_x)) - object_origin;
-    let object_y = transform(v3(origin) + v3(dir_y)) - object_origin;
+fn object_rays(&(w2o, origin, _, _, _, dir_x, dir_y, _): &OffsetArgs) -> (Interval3, Interval3, Interval3) {
+    let transform = |p: Interval3| mat_vec(w2o, p, Interval::c(1.0), F32);
+    let object_origin = transform(interval3(origin));
+    let object_x = transform(interval3(origin) + interval3(dir_x)) - object_origin;
+    let object_y = transform(interval3(origin) + interval3(dir_y)) - object_origin;
     (object_origin, object_x, object_y)
 }
 
-pub(super) fn b_barycentric_offsets(args: &OffsetArgs) -> (V3, V3) {
+pub(super) fn barycentric_offsets(args: &OffsetArgs) -> (Interval3, Interval3) {
     let &(_, _, p0, p1, p2, _, _, hit) = args;
-    let (object_origin, object_x, object_y) = b_object_rays(args);
-    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    let (object_origin, object_x, object_y) = object_rays(args);
+    let (p0, p1, p2) = (interval3(p0), interval3(p1), interval3(p2));
     (
-        b_intersect_triangle_plane(object_origin, object_x, p0, p1, p2) - v3(hit),
-        b_intersect_triangle_plane(object_origin, object_y, p0, p1, p2) - v3(hit),
+        intersect_triangle_plane(object_origin, object_x, p0, p1, p2) - interval3(hit),
+        intersect_triangle_plane(object_origin, object_y, p0, p1, p2) - interval3(hit),
     )
 }
 
 /// Whether a direction is known to [`WELL_CONDITIONED`]: its widest component's enclosure is at
 /// most that fraction of its largest component (an object-space neighbour direction is not, when
 /// the origin is so far from the object that `T(O + d) - T(O)` cancels most of its bits).
-pub fn direction_well_conditioned(direction: V3) -> bool {
+pub fn direction_well_conditioned(direction: Interval3) -> bool {
     let width = direction.0.iter().map(|c| c.hi - c.lo).fold(0.0, f64::max);
     let magnitude = direction.0.iter().map(|c| c.magnitude()).fold(0.0, f64::max);
     width <= WELL_CONDITIONED * magnitude
@@ -436,33 +477,39 @@ pub fn direction_well_conditioned(direction: V3) -> bool {
 /// object-space directions and their determinants against the triangle.
 pub(super) fn offsets_well_conditioned(args: &OffsetArgs) -> bool {
     let &(_, _, p0, p1, p2, _, _, _) = args;
-    let (_, object_x, object_y) = b_object_rays(args);
-    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+    let (_, object_x, object_y) = object_rays(args);
+    let (p0, p1, p2) = (interval3(p0), interval3(p1), interval3(p2));
     [object_x, object_y]
         .iter()
-        .all(|&d| direction_well_conditioned(d) && well_conditioned(b_determinant(d, p0, p1, p2)))
+        .all(|&d| direction_well_conditioned(d) && well_conditioned(determinant(d, p0, p1, p2)))
 }
 
-pub(super) fn b_cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> Vec<I> {
-    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
-    let area2 = b_scaled_length((p1 - p0).cross(p2 - p0)).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+pub(super) fn cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> Vec<Interval> {
+    let (p0, p1, p2) = (interval3(p0), interval3(p1), interval3(p2));
+    let area2 = scaled_length((p1 - p0).cross(p2 - p0)).max_c(f64::from(DIFF_MIN_MAGNITUDE));
     [p2 - p1, p2 - p0, p1 - p0]
         .iter()
-        .map(|&edge| (s(footprint.abs()) * b_scaled_length(edge) / area2).min_c(f64::from(DIFF_MAX_VALUE)))
+        .map(|&edge| {
+            (Interval::exact(footprint.abs()) * scaled_length(edge) / area2).min_c(f64::from(DIFF_MAX_VALUE))
+        })
         .collect()
 }
 
 /// Componentwise hull of two vectors.
-fn hull3(a: V3, b: V3) -> V3 {
+fn hull3(a: Interval3, b: Interval3) -> Interval3 {
     a.zip(b, |x, y| x.hull(y))
 }
 
-fn b_orthonormal_tangent(n: V3) -> V3 {
+fn orthonormal_tangent(n: Interval3) -> Interval3 {
     let branch = |sign: f64| {
         let [x, y, z] = n.0;
-        let s = I::c(sign);
-        let a = I::c(-1.0) / (s + z);
-        V([I::c(1.0) + s * x * x * a, s * x * y * a, I::c(-sign) * x])
+        let s = Interval::c(sign);
+        let a = Interval::c(-1.0) / (s + z);
+        IntervalVec([
+            Interval::c(1.0) + s * x * x * a,
+            s * x * y * a,
+            Interval::c(-sign) * x,
+        ])
     };
     let z = n.0[2];
     if z.lo >= 0.0 {
@@ -476,14 +523,18 @@ fn b_orthonormal_tangent(n: V3) -> V3 {
 
 /// The major and the minor axis; the hull of both choices of the minor axis where `|cross(n, d)|^2`
 /// is within rounding of `DIFF_MIN_SINE^2`.
-pub(super) fn b_anisotropic_cone_axes(width: f32, normal: V3, direction: V3) -> (V3, V3) {
+pub(super) fn anisotropic_cone_axes(
+    width: f32,
+    normal: Interval3,
+    direction: Interval3,
+) -> (Interval3, Interval3) {
     let across = normal.cross(direction);
     let length2 = across.dot(across);
     let min2 = f64::from(DIFF_MIN_SINE * DIFF_MIN_SINE);
-    let fixed = || normal.cross(b_orthonormal_tangent(normal));
+    let fixed = || normal.cross(orthonormal_tangent(normal));
     let measured = || {
         across
-            / I {
+            / Interval {
                 lo: length2.lo.max(min2),
                 ..length2
             }
@@ -496,48 +547,48 @@ pub(super) fn b_anisotropic_cone_axes(width: f32, normal: V3, direction: V3) -> 
     } else {
         hull3(fixed(), measured())
     };
-    let size = s(width.abs());
+    let size = Interval::exact(width.abs());
     let cosine = normal.dot(direction).abs().max_c(f64::from(DIFF_MIN_COS));
     (minor.cross(normal) * (size / cosine), minor * size)
 }
 
-pub(super) fn b_anisotropic_cone_gradients(
+pub(super) fn anisotropic_cone_gradients(
     &(width, direction, p0, p1, p2, uv0, uv1, uv2): &ConeGradientArgs,
-) -> Vec<I> {
-    let (p0, p1, p2) = (v3(p0), v3(p1), v3(p2));
+) -> Vec<Interval> {
+    let (p0, p1, p2) = (interval3(p0), interval3(p1), interval3(p2));
     let (e1, e2) = (p1 - p0, p2 - p0);
     let area_normal = e1.cross(e2);
-    let normal = area_normal / b_scaled_length(area_normal).max_c(f64::from(DIFF_MIN_MAGNITUDE));
-    let (major, minor) = b_anisotropic_cone_axes(width, normal, v3(direction));
+    let normal = area_normal / scaled_length(area_normal).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    let (major, minor) = anisotropic_cone_axes(width, normal, interval3(direction));
     let k = e1.cross(e2).dot(normal);
     let (cu, cv) = (e2.cross(normal), normal.cross(e1));
-    let barycentric = |offset: V3| {
+    let barycentric = |offset: Interval3| {
         [
-            b_barycentric_quotient(cu.dot(offset), k),
-            b_barycentric_quotient(cv.dot(offset), k),
+            barycentric_quotient(cu.dot(offset), k),
+            barycentric_quotient(cv.dot(offset), k),
         ]
     };
-    let (g1, g2) = (v2(uv1) - v2(uv0), v2(uv2) - v2(uv0));
-    let uv = |[du, dv]: [I; 2]| g1 * du + g2 * dv;
-    b_derivatives2(uv(barycentric(major)), uv(barycentric(minor)))
+    let (g1, g2) = (interval2(uv1) - interval2(uv0), interval2(uv2) - interval2(uv0));
+    let uv = |[du, dv]: [Interval; 2]| g1 * du + g2 * dv;
+    derivatives2(uv(barycentric(major)), uv(barycentric(minor)))
 }
 
-pub(super) fn b_ray_diff_from_cone(&(cone, direction): &(Vec2, Vec3)) -> Vec<I> {
-    let d = v3(direction);
-    let u = b_orthonormal_tangent(d);
+pub(super) fn ray_diff_from_cone(&(cone, direction): &(Vec2, Vec3)) -> Vec<Interval> {
+    let d = interval3(direction);
+    let u = orthonormal_tangent(d);
     let v = d.cross(u);
-    let (width, spread) = (s(cone.x), s(cone.y));
-    b_ray_diff(u * width, v * width, u * spread, v * spread)
+    let (width, spread) = (Interval::exact(cone.x), Interval::exact(cone.y));
+    ray_diff(u * width, v * width, u * spread, v * spread)
 }
 
 /// One axis; the sign of the spread is exact when the origin change is exactly 0 (then the dot
 /// product is exactly 0 on every implementation), else the hull of both where rounding leaves it
 /// open.
-fn b_transverse_cone(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> [I; 2] {
-    let d = v3(direction);
-    let across = |v: Vec3| v3(v) - d * v3(v).dot(d);
+fn transverse_cone(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> [Interval; 2] {
+    let d = interval3(direction);
+    let across = |v: Vec3| interval3(v) - d * interval3(v).dot(d);
     let (origin, turn) = (across(d_origin), across(d_direction));
-    let spread = b_scaled_length(turn);
+    let spread = scaled_length(turn);
     let alignment = origin.dot(turn);
     let signed = if alignment.lo >= 0.0 || d_origin == Vec3::ZERO {
         spread
@@ -546,11 +597,11 @@ fn b_transverse_cone(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> [I; 
     } else {
         spread.hull(-spread)
     };
-    [b_scaled_length(origin), signed]
+    [scaled_length(origin), signed]
 }
 
-pub(super) fn b_cone_from_ray_diff(&(diff, direction): &(RayDiff, Vec3)) -> Vec<I> {
-    let x = b_transverse_cone(diff.d_origin_dx, diff.d_direction_dx, direction);
-    let y = b_transverse_cone(diff.d_origin_dy, diff.d_direction_dy, direction);
-    vec![I::c(0.5) * (x[0] + y[0]), I::c(0.5) * (x[1] + y[1])]
+pub(super) fn cone_from_ray_diff(&(diff, direction): &(RayDiff, Vec3)) -> Vec<Interval> {
+    let x = transverse_cone(diff.d_origin_dx, diff.d_direction_dx, direction);
+    let y = transverse_cone(diff.d_origin_dy, diff.d_direction_dy, direction);
+    vec![Interval::c(0.5) * (x[0] + y[0]), Interval::c(0.5) * (x[1] + y[1])]
 }

@@ -1,9 +1,9 @@
 //! Records of `ray_diff`: G-buffer differentials (RTG Sec. 20.3.3).
 
-use super::enclosure::{b_derivatives3, b_gbuffer_ray_diff, b_tangent_plane_offset};
-use super::record;
+use super::enclosure;
 use super::rows::sample_at;
 use super::strategy::gbuffer_sample;
+use super::MODULE;
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -17,7 +17,8 @@ use shader_proptest::{Args, Value};
 pub fn gbuffer_ray_diff() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
-    record(
+    Record::new(
+        MODULE,
         "gbuffer_ray_diff",
         |(c, r, l, b, a, eps)| rd::gbuffer_ray_diff(c, r, l, b, a, eps),
         // The neighbour choice compares correctly rounded differences: the device makes the same
@@ -33,7 +34,7 @@ pub fn gbuffer_ray_diff() -> Record<impl Args + Perturb, impl Value> {
                 .boxed()
         },
     )
-    .enclosure(b_gbuffer_ray_diff)
+    .enclosure(enclosure::gbuffer_ray_diff)
     .fuzz(|d| {
         (
             d.gbuffer_sample(),
@@ -108,7 +109,8 @@ pub fn tangent_plane_offsets() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
     let in_plane_cos = -1.0 / DIFF_MIN_COS;
-    record(
+    Record::new(
+        MODULE,
         "tangent_plane_offsets",
         |(rd, rdx, rdy, t, n)| rd::tangent_plane_offsets(rd, rdx, rdy, t, n),
         || {
@@ -118,9 +120,9 @@ pub fn tangent_plane_offsets() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(|&(r, rdx, rdy, t, n)| {
-        let dx = b_tangent_plane_offset(r, rdx, t, n);
-        let dy = b_tangent_plane_offset(r, rdy, t, n);
-        b_derivatives3(dx, dy)
+        let dx = enclosure::tangent_plane_offset(r, rdx, t, n);
+        let dy = enclosure::tangent_plane_offset(r, rdy, t, n);
+        enclosure::derivatives3(dx, dy)
     })
     .fuzz(|d| (d.unit(), d.unit(), d.unit(), d.distance(), d.unit()))
     .degenerate(vec![

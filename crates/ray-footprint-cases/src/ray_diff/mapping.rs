@@ -1,8 +1,8 @@
 //! Records of `ray_diff`: Planar and triplanar mapping (Quilez).
 
-use super::enclosure::{b_derivatives2, b_triplanar_weights, s};
-use super::record;
+use super::enclosure;
 use super::strategy::derivatives3;
+use super::MODULE;
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -12,22 +12,21 @@ use proptest::prelude::*;
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, TriplanarGradients, DIFF_MIN_MAGNITUDE,
 };
-use shader_proptest::interval::{
-    interval2 as v2, interval3 as v3, Interval as I, Interval3 as V3, IntervalVec as V,
-};
+use shader_proptest::interval::{interval2, interval3, Interval, Interval3, IntervalVec};
 use shader_proptest::{Args, Value};
 
 /// `rf_planar_mapping_gradients`.
 pub fn planar_mapping_gradients() -> Record<impl Args + Perturb, impl Value> {
     let y = Vec3::Y;
-    record(
+    Record::new(
+        MODULE,
         "planar_mapping_gradients",
         |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
         || (derivatives3(), vec2_of(-10.0f32..10.0, -10.0f32..10.0)).boxed(),
     )
     .enclosure(|&(dp, scale)| {
-        let project = |v: Vec3| v2(Vec2::new(v.x, v.z)) * v2(scale);
-        b_derivatives2(project(dp.dx), project(dp.dy))
+        let project = |v: Vec3| interval2(Vec2::new(v.x, v.z)) * interval2(scale);
+        enclosure::derivatives2(project(dp.dx), project(dp.dy))
     })
     .fuzz(|d| (d.derivatives3(), d.vec2()))
     .degenerate(vec![
@@ -57,7 +56,8 @@ pub fn planar_mapping_gradients() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_triplanar_weights`.
 pub fn triplanar_weights() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "triplanar_weights",
         |(normal, sharpness)| rd::triplanar_weights(normal, sharpness),
         || {
@@ -65,7 +65,7 @@ pub fn triplanar_weights() -> Record<impl Args + Perturb, impl Value> {
             (normal, prop_oneof![4 => 0.0f32..16.0, 1 => -2.0f32..100.0]).boxed()
         },
     )
-    .enclosure(|&(normal, sharpness)| b_triplanar_weights(normal, sharpness))
+    .enclosure(|&(normal, sharpness)| enclosure::triplanar_weights(normal, sharpness))
     .fuzz(|d| (d.unit(), d.scalar()))
     .range(0.0, 1.0, "weight")
     .degenerate(vec![
@@ -94,18 +94,22 @@ pub fn triplanar_weights() -> Record<impl Args + Perturb, impl Value> {
 pub fn triplanar_gradients() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let y = Vec3::Y;
-    record(
+    Record::new(
+        MODULE,
         "triplanar_gradients",
         |(dp, scale)| rd::triplanar_gradients(dp, scale),
         || (derivatives3(), -10.0f32..10.0).boxed(),
     )
     .enclosure(|&(dp, scale)| {
-        let (dx, dy) = (v3(dp.dx) * s(scale), v3(dp.dy) * s(scale));
-        let pick = |v: V3, a: usize, b: usize| V([v.0[a], v.0[b]]);
+        let (dx, dy) = (
+            interval3(dp.dx) * Interval::exact(scale),
+            interval3(dp.dy) * Interval::exact(scale),
+        );
+        let pick = |v: Interval3, a: usize, b: usize| IntervalVec([v.0[a], v.0[b]]);
         let planes = [(1, 2), (2, 0), (0, 1)];
-        let all: Vec<I> = planes
+        let all: Vec<Interval> = planes
             .iter()
-            .flat_map(|&(a, b)| b_derivatives2(pick(dx, a, b), pick(dy, a, b)))
+            .flat_map(|&(a, b)| enclosure::derivatives2(pick(dx, a, b), pick(dy, a, b)))
             .collect();
         all
     })

@@ -1,11 +1,9 @@
 //! Records of `ray_diff`: Reflection and refraction (Igehy).
 
-use super::enclosure::{
-    b_normal_derivatives, b_reflect_ray_diff, b_refract_ray_diff, b_refraction_determinant,
-};
-use super::record;
+use super::enclosure;
 use super::rows::direction_dx;
 use super::strategy::{derivatives2, derivatives3, ray_diff};
+use super::MODULE;
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -21,7 +19,8 @@ pub fn normal_derivatives() -> Record<impl Args + Perturb, impl Value> {
     let y = Vec3::Y;
     let z = Vec3::Z;
     let g = Derivatives2::new(Vec2::X, Vec2::ZERO);
-    record(
+    Record::new(
+        MODULE,
         "normal_derivatives",
         |(n0, n1, n2, uv, b)| rd::normal_derivatives(n0, n1, n2, uv, b),
         || {
@@ -34,7 +33,7 @@ pub fn normal_derivatives() -> Record<impl Args + Perturb, impl Value> {
                 .boxed()
         },
     )
-    .enclosure(b_normal_derivatives)
+    .enclosure(enclosure::normal_derivatives)
     .fuzz(|d| (d.unit(), d.unit(), d.unit(), d.vec2(), d.derivatives2()))
     .degenerate(vec![
         value(
@@ -64,7 +63,8 @@ pub fn reflect_ray_diff() -> Record<impl Args + Perturb, impl Value> {
     let y = Vec3::Y;
     let z = Vec3::Z;
     let flat = Derivatives3::default();
-    record(
+    Record::new(
+        MODULE,
         "reflect_ray_diff",
         |(diff, d, n, dn)| rd::reflect_ray_diff(diff, d, n, dn),
         || {
@@ -73,7 +73,7 @@ pub fn reflect_ray_diff() -> Record<impl Args + Perturb, impl Value> {
                 .boxed()
         },
     )
-    .enclosure(b_reflect_ray_diff)
+    .enclosure(enclosure::reflect_ray_diff)
     .fuzz(|d| (d.ray_diff(), d.unit(), d.unit(), d.derivatives3()))
     .degenerate(vec![
         value(
@@ -102,7 +102,8 @@ pub fn refract_ray_diff() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
     let flat = Derivatives3::default();
-    record(
+    Record::new(
+        MODULE,
         "refract_ray_diff",
         |(diff, d, n, dn, eta)| rd::refract_ray_diff(diff, d, n, dn, eta),
         // Within rounding of the critical angle (the enclosure of `k` contains 0) either branch is
@@ -112,12 +113,12 @@ pub fn refract_ray_diff() -> Record<impl Args + Perturb, impl Value> {
             (ray_diff(), normal_and_direction(), derivatives3(), eta)
                 .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
                 .prop_filter("within rounding of the critical angle", |args| {
-                    !b_refraction_determinant(args).contains_zero()
+                    !enclosure::refraction_determinant(args).contains_zero()
                 })
                 .boxed()
         },
     )
-    .enclosure(b_refract_ray_diff)
+    .enclosure(enclosure::refract_ray_diff)
     .fuzz(|d| (d.ray_diff(), d.unit(), d.unit(), d.derivatives3(), d.scalar()))
     .degenerate(vec![
         value(

@@ -1,12 +1,9 @@
 //! Records of `ray_diff`: Re-intersection of the neighbour rays (RTG Eq. 13).
 
-use super::enclosure::{
-    b_barycentric_offsets, b_derivatives2, b_derivatives3, b_determinant, b_intersect_triangle_plane, s,
-    well_conditioned,
-};
+use super::enclosure::{self, well_conditioned};
 use super::rows::{delta_rows, offset_rows, plane_intersection_rows, OFFSET};
 use super::strategy::{any_direction, derivatives3, well_conditioned_offset_args, F32_ORIGIN_EXPONENT};
-use super::{record, OffsetArgs};
+use super::{OffsetArgs, MODULE};
 use crate::degenerate::value;
 use crate::record::Record;
 use crate::special::Perturb;
@@ -14,25 +11,38 @@ use crate::strategy::{triangle, uv_triangle, vec3, with_corners};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, DIFF_MAX_VALUE};
-use shader_proptest::interval::{interval2 as v2, interval3 as v3};
+use shader_proptest::interval::{interval2, interval3, Interval};
 use shader_proptest::{Args, Value};
 
 /// `rf_intersect_triangle_plane`.
 pub fn intersect_triangle_plane() -> Record<impl Args + Perturb, impl Value> {
-    record(
+    Record::new(
+        MODULE,
         "intersect_triangle_plane",
         |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
         || {
             (vec3(), any_direction(), triangle())
                 .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
                 .prop_filter("an ill-conditioned determinant", |&(_, d, p0, p1, p2)| {
-                    well_conditioned(b_determinant(v3(d), v3(p0), v3(p1), v3(p2)))
+                    well_conditioned(enclosure::determinant(
+                        interval3(d),
+                        interval3(p0),
+                        interval3(p1),
+                        interval3(p2),
+                    ))
                 })
                 .boxed()
         },
     )
     .enclosure(|&(o, d, p0, p1, p2)| {
-        b_intersect_triangle_plane(v3(o), v3(d), v3(p0), v3(p1), v3(p2)).components()
+        enclosure::intersect_triangle_plane(
+            interval3(o),
+            interval3(d),
+            interval3(p0),
+            interval3(p1),
+            interval3(p2),
+        )
+        .components()
     })
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, b, promises| {
@@ -49,7 +59,8 @@ pub fn intersect_triangle_plane() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_barycentric_offsets`: the enclosure of the signed differences.
 pub fn barycentric_offsets() -> Record<OffsetArgs, Derivatives3> {
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "barycentric_offsets",
         |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_offsets(m, o, p0, p1, p2, x, y, b),
         // Where a neighbour ray is parallel to the triangle plane within rounding (its determinant
@@ -61,8 +72,8 @@ pub fn barycentric_offsets() -> Record<OffsetArgs, Derivatives3> {
         || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
     )
     .enclosure(|a| {
-        let (dx, dy) = b_barycentric_offsets(a);
-        b_derivatives3(dx, dy)
+        let (dx, dy) = enclosure::barycentric_offsets(a);
+        enclosure::derivatives3(dx, dy)
     })
     .fuzz(|d| d.reintersection())
     .degenerate(offset_rows(
@@ -74,13 +85,14 @@ pub fn barycentric_offsets() -> Record<OffsetArgs, Derivatives3> {
 /// `rf_barycentric_deltas`: the enclosure of the deltas.
 pub fn barycentric_deltas() -> Record<OffsetArgs, Vec3> {
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "barycentric_deltas",
         |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
         || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
     )
     .enclosure(|a| {
-        let (dx, dy) = b_barycentric_offsets(a);
+        let (dx, dy) = enclosure::barycentric_offsets(a);
         (dx.abs() + dy.abs()).components()
     })
     .fuzz(|d| d.reintersection())
@@ -94,14 +106,19 @@ pub fn barycentric_deltas() -> Record<OffsetArgs, Vec3> {
 /// `rf_uv_gradients_from_offsets`: the enclosure of the UV gradients.
 pub fn uv_gradients_from_offsets() -> Record<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
     let max = DIFF_MAX_VALUE;
-    record(
+    Record::new(
+        MODULE,
         "uv_gradients_from_offsets",
         |(o, uv0, uv1, uv2)| rd::uv_gradients_from_offsets(o, uv0, uv1, uv2),
         || with_corners(derivatives3(), uv_triangle()),
     )
     .enclosure(|&(o, uv0, uv1, uv2)| {
-        let sum = |w: Vec3| v2(uv0) * s(w.x) + v2(uv1) * s(w.y) + v2(uv2) * s(w.z);
-        b_derivatives2(sum(o.dx), sum(o.dy))
+        let sum = |w: Vec3| {
+            interval2(uv0) * Interval::exact(w.x)
+                + interval2(uv1) * Interval::exact(w.y)
+                + interval2(uv2) * Interval::exact(w.z)
+        };
+        enclosure::derivatives2(sum(o.dx), sum(o.dy))
     })
     .fuzz(|d| (d.derivatives3(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![

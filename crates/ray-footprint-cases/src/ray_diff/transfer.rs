@@ -1,9 +1,9 @@
 //! Records of `ray_diff`: Transfer to a hit (Igehy).
 
-use super::enclosure::b_transfer;
-use super::record;
+use super::enclosure;
 use super::rows::{direction_dx, zero_diff_dx};
 use super::strategy::ray_diff;
+use super::MODULE;
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -18,7 +18,8 @@ pub fn transfer() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
     let z = Vec3::Z;
     let in_plane_cos = -1.0 / DIFF_MIN_COS;
-    record(
+    Record::new(
+        MODULE,
         "transfer",
         |(diff, direction, t, normal)| rd::transfer(diff, direction, t, normal),
         || {
@@ -27,7 +28,7 @@ pub fn transfer() -> Record<impl Args + Perturb, impl Value> {
                 .boxed()
         },
     )
-    .enclosure(b_transfer)
+    .enclosure(enclosure::transfer)
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.unit()))
     .degenerate(vec![
         value(
