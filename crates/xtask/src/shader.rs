@@ -1,5 +1,5 @@
-//! The shared declarations in WGSL, GLSL and Slang: each item preceded by its doc comment's first
-//! paragraph, struct fields by theirs.
+//! The shared declarations in WGSL, GLSL, Slang and HLSL: each item preceded by its doc comment's
+//! first paragraph, struct fields by theirs.
 
 use crate::comment;
 use crate::rust_items::{Field, Item, Kind, RustItems, Type, Value};
@@ -9,10 +9,11 @@ pub enum Language {
     Wgsl,
     Glsl,
     Slang,
+    Hlsl,
 }
 
 impl Language {
-    pub const ALL: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Slang];
+    pub const ALL: [Language; 4] = [Language::Wgsl, Language::Glsl, Language::Slang, Language::Hlsl];
 
     /// The directory under `shaders/` and the file extension.
     pub fn extension(self) -> &'static str {
@@ -20,6 +21,7 @@ impl Language {
             Language::Wgsl => "wgsl",
             Language::Glsl => "glsl",
             Language::Slang => "slang",
+            Language::Hlsl => "hlsl",
         }
     }
 
@@ -27,15 +29,16 @@ impl Language {
     fn doc_marker(self) -> &'static str {
         match self {
             Language::Slang => "/// ",
-            Language::Wgsl | Language::Glsl => "// ",
+            Language::Wgsl | Language::Glsl | Language::Hlsl => "// ",
         }
     }
 
-    /// Declaration keywords before a constant's type (GLSL, Slang) or name (WGSL).
+    /// Declaration keywords before a constant's type (GLSL, Slang, HLSL) or name (WGSL).
     fn const_keywords(self) -> &'static str {
         match self {
             Language::Wgsl | Language::Glsl => "const",
             Language::Slang => "public static const",
+            Language::Hlsl => "static const",
         }
     }
 
@@ -45,10 +48,10 @@ impl Language {
             (Language::Wgsl, Type::F64) => "f64",
             (Language::Wgsl, Type::I32) => "i32",
             (Language::Wgsl, Type::U32) => "u32",
-            (Language::Glsl | Language::Slang, Type::F32) => "float",
-            (Language::Glsl | Language::Slang, Type::F64) => "double",
-            (Language::Glsl | Language::Slang, Type::I32) => "int",
-            (Language::Glsl | Language::Slang, Type::U32) => "uint",
+            (_, Type::F32) => "float",
+            (_, Type::F64) => "double",
+            (_, Type::I32) => "int",
+            (_, Type::U32) => "uint",
             (_, Type::Bool) => "bool",
             (_, Type::Vector(components)) => return self.vector_type(*components),
             (_, Type::Struct(name)) => return format!("Rf{name}"),
@@ -60,7 +63,7 @@ impl Language {
         match self {
             Language::Wgsl => format!("vec{components}<f32>"),
             Language::Glsl => format!("vec{components}"),
-            Language::Slang => format!("float{components}"),
+            Language::Slang | Language::Hlsl => format!("float{components}"),
         }
     }
 
@@ -98,7 +101,7 @@ impl Language {
         Ok(match self {
             Language::Wgsl => format!("f64({literal}f)"),
             Language::Glsl => format!("double({literal})"),
-            Language::Slang => format!("double({literal}f)"),
+            Language::Slang | Language::Hlsl => format!("double({literal}f)"),
         })
     }
 
@@ -122,7 +125,7 @@ impl Language {
                     .collect::<Result<_, _>>()
                     .map_err(at)?;
                 let struct_name = format!("Rf{ty}");
-                let value = format!("{struct_name}({})", values.join(", "));
+                let value = self.struct_value(&struct_name, &values);
                 lines.push(self.constant(&item.name, &struct_name, &value));
             }
             Kind::Struct { fields, .. } => lines.extend(self.structure(&item.name, fields, names)),
@@ -131,11 +134,24 @@ impl Language {
         Ok(lines)
     }
 
+    /// A struct value from its field values in order: a constructor call, or in HLSL (which has
+    /// no struct constructors) an initializer list.
+    fn struct_value(self, struct_name: &str, values: &[String]) -> String {
+        match self {
+            Language::Hlsl => format!("{{ {} }}", values.join(", ")),
+            Language::Wgsl | Language::Glsl | Language::Slang => {
+                format!("{struct_name}({})", values.join(", "))
+            }
+        }
+    }
+
     fn constant(self, name: &str, ty: &str, value: &str) -> String {
         let keywords = self.const_keywords();
         match self {
             Language::Wgsl => format!("{keywords} RF_{name}: {ty} = {value};"),
-            Language::Glsl | Language::Slang => format!("{keywords} {ty} RF_{name} = {value};"),
+            Language::Glsl | Language::Slang | Language::Hlsl => {
+                format!("{keywords} {ty} RF_{name} = {value};")
+            }
         }
     }
 
@@ -148,12 +164,14 @@ impl Language {
             let ty = self.type_name(&field.ty);
             lines.push(match self {
                 Language::Wgsl => format!("    {}: {ty},", field.name),
-                Language::Glsl | Language::Slang => format!("    {public}{ty} {};", field.name),
+                Language::Glsl | Language::Slang | Language::Hlsl => {
+                    format!("    {public}{ty} {};", field.name)
+                }
             });
         }
         lines.push(match self {
             Language::Wgsl => "}".to_string(),
-            Language::Glsl | Language::Slang => "};".to_string(),
+            Language::Glsl | Language::Slang | Language::Hlsl => "};".to_string(),
         });
         lines
     }
