@@ -4,6 +4,8 @@
 use crate::back::{Backend, Language};
 use crate::compile::{base_capabilities, CompileError};
 use crate::layout::{LayoutError, StructLayout};
+#[cfg(feature = "gpu")]
+use crate::value::{ShaderType, StructType};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, OnceLock, PoisonError};
@@ -166,5 +168,27 @@ impl Shader {
     /// WGSL layout, or the element of a `std430` buffer compiled by glslang or slangc.
     pub fn struct_layout(&self, name: &str) -> Result<StructLayout, LayoutError> {
         self.backend().struct_layout(self, name)
+    }
+
+    /// Compares the Rust layout of every `pod` struct among `parameters` and `result` (and the
+    /// structs they hold) with this source's ([`Shader::struct_layout`]), before a check runs.
+    #[cfg(feature = "gpu")]
+    pub(crate) fn check_layouts(
+        &self,
+        parameters: &[ShaderType],
+        result: ShaderType,
+    ) -> Result<(), LayoutError> {
+        let mut structs: Vec<&'static StructType> = Vec::new();
+        parameters
+            .iter()
+            .chain([&result])
+            .for_each(|ty| ty.structs(&mut structs));
+        for ty in structs {
+            let Some(rust_layout) = ty.rust_layout else {
+                continue;
+            };
+            crate::layout::compare(&rust_layout(), &self.struct_layout(ty.name)?)?;
+        }
+        Ok(())
     }
 }
