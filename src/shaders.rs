@@ -149,8 +149,9 @@ impl Module {
 
     /// The module as a `shader_proptest::Shader` in `language` (feature `shader-proptest`): the
     /// WGSL module text with its naga capabilities, `#include "<stem>.glsl"` with
-    /// [`GLSL_INCLUDE_DIR`] on the include path, or `import <stem>;` with [`SLANG_INCLUDE_DIR`] on
-    /// the search path; the `_f64` modules require `shaderFloat64`. Check your own functions that
+    /// [`GLSL_INCLUDE_DIR`] on the include path, `import <stem>;` with [`SLANG_INCLUDE_DIR`] on
+    /// the search path, or for either HLSL compiler `#include "<stem>.hlsl"` with
+    /// [`HLSL_INCLUDE_DIR`] on the include path; the `_f64` modules require `shaderFloat64`. Check your own functions that
     /// use the module by appending them to its source.
     #[cfg(feature = "shader-proptest")]
     pub fn shader(self, language: shader_proptest::Language) -> shader_proptest::Shader {
@@ -162,6 +163,10 @@ impl Module {
             }
             Language::Slang => {
                 Shader::slang(format!("import {};", self.stem())).include_dir(SLANG_INCLUDE_DIR)
+            }
+            Language::HlslGlslang | Language::HlslSlangc => {
+                Shader::new(language, format!("#include \"{}.hlsl\"", self.stem()))
+                    .include_dir(HLSL_INCLUDE_DIR)
             }
         };
         if self.needs_f64() {

@@ -1,6 +1,7 @@
 //! What each shader function costs: for every public function of every module (the agreement
 //! suite's checks, in module order) and every language, the function compiled alone in the
-//! suite's kernel for it (WGSL by naga, GLSL by glslang, Slang by slangc), optimised by `spirv-opt -O`, and
+//! suite's kernel for it (WGSL by naga, GLSL by glslang, Slang by slangc, HLSL by glslang and by
+//! slangc), optimised by `spirv-opt -O`, and
 //! counted with `shader_proptest::spirv`: instructions inside functions (the kernel's own loads
 //! and stores included: every function pays them, per argument and result word), conditional
 //! branches and switches, extended-instruction calls and, among them, transcendental calls
@@ -8,7 +9,7 @@
 //! conditional branch and one switch of its own: its bounds check, an early return that
 //! spirv-opt's merge-return pass wraps in a one-case switch.
 //!
-//! Prints a Markdown table (the README's), with a `*` where the WGSL or the Slang instruction count
+//! Prints a Markdown table (the README's), with a `*` where another language's instruction count
 //! differs from GLSL's by more than a quarter. Below it, when `rf_process_wireframe` is measured, the same counts
 //! for a yardstick in the same kernel: `unguarded_process_wireframe` (`benches/unguarded/`), the
 //! wireframe tutorial's coverage formula without the crate's guards, so that the table says what
@@ -20,7 +21,7 @@
 //! (`process_wireframe`); `--module` a module's file stem (`wireframe`).
 
 use glam::Vec3;
-use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
+use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_cases::records;
 use ray_footprint_lab::cli::options_or_exit;
@@ -28,14 +29,22 @@ use shader_proptest::spirv::{self, Statistics, TRANSCENDENTAL};
 use shader_proptest::{kernel_source, Args, Check, Language, Shader, Value};
 use std::process::{Command, ExitCode};
 
+/// The languages, in the order of [`Language::ALL`].
+const LANGUAGES: usize = Language::ALL.len();
+
+/// The unguarded yardstick of `rf_process_wireframe` in HLSL, for both HLSL compilers.
+const UNGUARDED_WIREFRAME_HLSL: &str = include_str!("unguarded/process_wireframe.hlsl");
+
 /// The unguarded yardstick of `rf_process_wireframe`, per language, appended to the module.
-const UNGUARDED_WIREFRAME: [(Language, &str); 3] = [
+const UNGUARDED_WIREFRAME: [(Language, &str); LANGUAGES] = [
     (Language::Wgsl, include_str!("unguarded/process_wireframe.wgsl")),
     (Language::Glsl, include_str!("unguarded/process_wireframe.glsl")),
     (Language::Slang, include_str!("unguarded/process_wireframe.slang")),
+    (Language::HlslGlslang, UNGUARDED_WIREFRAME_HLSL),
+    (Language::HlslSlangc, UNGUARDED_WIREFRAME_HLSL),
 ];
 
-/// Largest relative difference between the WGSL (or Slang) and GLSL instruction counts left
+/// Largest relative difference between another language's and GLSL's instruction counts left
 /// unmarked.
 const MARK_ABOVE: f64 = 0.25;
 
@@ -105,6 +114,9 @@ fn measure_unguarded(language: Language) -> Result<Statistics, String> {
         Language::Slang => {
             Shader::slang(format!("{}\n{yardstick}", module.source())).include_dir(SLANG_INCLUDE_DIR)
         }
+        Language::HlslGlslang | Language::HlslSlangc => {
+            Shader::new(language, format!("{}\n{yardstick}", module.source())).include_dir(HLSL_INCLUDE_DIR)
+        }
     };
     let kernel = kernel_source(
         &shader,
@@ -141,16 +153,29 @@ fn difference(other: usize, glsl: usize) -> String {
     format!("{:+.0}%{}", 100.0 * (ratio - 1.0), if marked { " *" } else { "" })
 }
 
+/// The languages other than GLSL, whose instruction counts are compared with GLSL's.
+fn compared_with_glsl() -> impl Iterator<Item = (usize, Language)> {
+    Language::ALL
+        .into_iter()
+        .enumerate()
+        .filter(|(_, language)| *language != Language::Glsl)
+}
+
 /// One table row: per count, the languages in the order of [`Language::ALL`].
-fn row(module: Module, function: &str, counts: &[Statistics; 3]) -> String {
-    let [wgsl, glsl, slang] = counts;
+fn row(module: Module, function: &str, counts: &[Statistics; LANGUAGES]) -> String {
+    let glsl = &counts[Language::ALL
+        .iter()
+        .position(|language| *language == Language::Glsl)
+        .expect("GLSL is a language")];
     let cells = |count: fn(&Statistics) -> String| counts.iter().map(count).collect::<Vec<_>>().join(" | ");
+    let differences: Vec<String> = compared_with_glsl()
+        .map(|(index, _)| difference(counts[index].instructions, glsl.instructions))
+        .collect();
     format!(
-        "| {} | `{function}` | {} | {} | {} | {} | {} | {} |",
+        "| {} | `{function}` | {} | {} | {} | {} | {} |",
         module.stem(),
         cells(|s| s.instructions.to_string()),
-        difference(wgsl.instructions, glsl.instructions),
-        difference(slang.instructions, glsl.instructions),
+        differences.join(" | "),
         cells(|s| format!("{}+{}", s.conditional_branches, s.switches)),
         cells(|s| s.extended_calls.to_string()),
         cells(|s| s.transcendental_calls.to_string()),
@@ -163,30 +188,32 @@ fn print_header() {
             .map(|language| format!("{} {count}", language.name()))
             .join(" | ")
     };
+    let differences: Vec<String> = compared_with_glsl()
+        .map(|(_, language)| format!("{} vs GLSL", language.name()))
+        .collect();
     println!(
-        "| module | function | {} | WGSL vs GLSL | Slang vs GLSL | {} | {} | {} |",
+        "| module | function | {} | {} | {} | {} | {} |",
         per_language("instructions"),
+        differences.join(" | "),
         per_language("branches"),
         per_language("extended"),
         per_language("transcendental")
     );
-    println!("| --- | --- |{}", " ---: |".repeat(14));
+    println!("| --- | --- |{}", " ---: |".repeat(5 * LANGUAGES - 1));
 }
 
 /// Prints the row of `function`, or its errors; whether it was measured in every language.
-fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>; 3]) -> bool {
-    match counts {
-        [Ok(wgsl), Ok(glsl), Ok(slang)] => {
-            println!("{}", row(module, function, &[wgsl, glsl, slang]));
-            true
-        }
-        counts => {
-            for error in counts.into_iter().filter_map(Result::err) {
-                eprintln!("error: {error}");
-            }
-            false
-        }
+fn print_row(module: Module, function: &str, counts: [Result<Statistics, String>; LANGUAGES]) -> bool {
+    let errors: Vec<&String> = counts.iter().filter_map(|count| count.as_ref().err()).collect();
+    if !errors.is_empty() {
+        errors.iter().for_each(|error| eprintln!("error: {error}"));
+        return false;
     }
+    println!(
+        "{}",
+        row(module, function, &counts.map(|count| count.expect("no errors")))
+    );
+    true
 }
 
 fn main() -> ExitCode {
@@ -213,7 +240,7 @@ fn main() -> ExitCode {
     println!("transcendental: GLSL.std.450 {}", names.join(", "));
     println!(
         "branches: conditional branches + switches, the kernel's own 1+1 (its bounds check) included; \
-         * marks a WGSL/GLSL or Slang/GLSL instruction difference above 25%\n"
+         * marks an instruction difference from GLSL above 25%\n"
     );
     print_header();
     let mut failed = 0;
