@@ -1,43 +1,13 @@
-//! The shader compilers: WGSL through naga, GLSL through glslang (`glslangValidator`, the compiler
-//! Vulkan's GLSL users use), Slang through `slangc` (the Slang compiler), each to SPIR-V words. One
-//! function per language; kernels, layout probes and any other shader a user builds with this crate
-//! go through them.
+//! The shader compilers: naga (WGSL), glslang (`glslangValidator`, the compiler Vulkan's GLSL users
+//! use) and `slangc` (the Slang compiler), each to SPIR-V words. One function per compiler; the
+//! back ends ([`Language`]) choose one for their kernels and layout probes, and any other shader a
+//! user builds with this crate goes through them too.
 
+pub use crate::back::Language;
 use std::fmt;
 use std::path::Path;
 use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// A shader language.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Language {
-    /// WGSL, compiled by naga.
-    Wgsl,
-    /// GLSL 460, compiled by glslang.
-    Glsl,
-    /// Slang, compiled by slangc.
-    Slang,
-}
-
-impl Language {
-    /// Every language.
-    pub const ALL: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Slang];
-
-    /// `"WGSL"`, `"GLSL"` or `"Slang"`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Language::Wgsl => "WGSL",
-            Language::Glsl => "GLSL",
-            Language::Slang => "Slang",
-        }
-    }
-}
-
-impl fmt::Display for Language {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.pad(self.name())
-    }
-}
 
 /// The Vulkan version a shader targets, which fixes its SPIR-V version.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -52,6 +52,7 @@
 //! descriptions and the layout reader only (no ash, no proptest).
 #![deny(missing_docs)]
 
+mod back;
 pub mod compile;
 pub mod interval;
 mod kernel;
@@ -66,7 +67,8 @@ pub mod value;
 #[cfg(feature = "gpu")]
 mod gpu;
 
-pub use compile::{CompileError, Language};
+pub use back::Language;
+pub use compile::CompileError;
 pub use kernel::{echo_kernel_source, kernel_source, WORKGROUP_SIZE};
 pub use shader::{Feature, Shader};
 pub use tolerance::Tolerance;
