@@ -14,6 +14,9 @@
 //!   ([`Spread`]); a verdict only where the two spreads do not overlap ([`verdict`]).
 //! - The GPU's clocks from `nvidia-smi` at the start and the end of a run ([`gpu_clocks`]).
 //!
+//! [`function`] writes the kernels that time one shader function, [`peers`] those of the peers'
+//! originals beside them.
+//!
 //! ```
 //! use ray_footprint_lab::timing::{verdict, Spread, Verdict};
 //!
@@ -23,6 +26,9 @@
 //! let close = Spread::of(&[2.01, 2.03, 1.98, 2.00]);
 //! assert_eq!(verdict(&close, &baseline), Verdict::NotSeparable);
 //! ```
+
+pub mod function;
+pub mod peers;
 
 use ash::vk;
 use shader_proptest::{vulkan, Error, Gpu, Object, Owner};
