@@ -63,14 +63,24 @@ struct RfRayConePushConstants {
 // The cone as two f16 in one word (width in the low half, spread angle in the high half), each
 // clamped to the f16 range first.
 uint rf_pack_ray_cone(RfRayCone cone) {
-    float2 values = float2(cone.width, cone.spread_angle);
-    uint2 halves = f32tof16(clamp(values, -RF_F16_MAX, RF_F16_MAX));
+    float2 values = clamp(float2(cone.width, cone.spread_angle), -RF_F16_MAX, RF_F16_MAX);
+#ifdef __SLANG__
+    // slangc lowers f32tof16 through 16-bit types (the Float16 and Int16 capabilities).
+    return packHalf2x16(values);
+#else
+    uint2 halves = f32tof16(values);
     return halves.x | (halves.y << 16);
+#endif
 }
 
 // The inverse of rf_pack_ray_cone.
 RfRayCone rf_unpack_ray_cone(uint packed) {
-    RfRayCone cone = { f16tof32(packed & 0xffffu), f16tof32(packed >> 16) };
+#ifdef __SLANG__
+    float2 values = unpackHalf2x16ToFloat(packed);
+#else
+    float2 values = f16tof32(uint2(packed & 0xffffu, packed >> 16));
+#endif
+    RfRayCone cone = { values.x, values.y };
     return cone;
 }
 

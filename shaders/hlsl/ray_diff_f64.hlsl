@@ -44,15 +44,34 @@ double rf_clamp_away_from_zero_f64(double value, double min_magnitude) {
     return abs(value) < min_magnitude ? signed_minimum : value;
 }
 
+// cross(a, b) of double vectors, written out: glslang's HLSL front end evaluates the cross, dot and
+// clamp (and min and max) intrinsics of double vectors in float.
+double3 ray_footprint_cross_f64(double3 a, double3 b) {
+    return double3(a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y);
+}
+
+// dot(a, b) of double vectors, written out (see ray_footprint_cross_f64).
+double ray_footprint_dot_f64(double3 a, double3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// clamp(value, -limit, limit) of a double, written out (see ray_footprint_cross_f64).
+double ray_footprint_clamp_f64(double value, double limit) {
+    return value < -limit ? -limit : (value > limit ? limit : value);
+}
+
 // In double: the barycentrics (w, u, v) at which the ray meets the triangle's unbounded plane (RTG
 // Eq. 13 with g = d), k pushed RF_F64_MIN_MAGNITUDE away from 0, u and v clamped to RF_F64_MAX_VALUE.
 double3 rf_plane_barycentrics_f64(double3 origin, double3 direction, double3 p0, double3 p1, double3 p2) {
     double3 e1 = p1 - p0;
     double3 e2 = p2 - p0;
     double3 s0 = origin - p0;
-    double k = rf_clamp_away_from_zero_f64(dot(cross(e1, e2), direction), RF_F64_MIN_MAGNITUDE);
-    double2 uv = clamp(double2(dot(cross(e2, direction), s0), dot(cross(direction, e1), s0)) / k,
-        -RF_F64_MAX_VALUE, RF_F64_MAX_VALUE);
+    double k = rf_clamp_away_from_zero_f64(ray_footprint_dot_f64(ray_footprint_cross_f64(e1, e2), direction),
+        RF_F64_MIN_MAGNITUDE);
+    double2 unclamped = double2(ray_footprint_dot_f64(ray_footprint_cross_f64(e2, direction), s0),
+                            ray_footprint_dot_f64(ray_footprint_cross_f64(direction, e1), s0)) / k;
+    double2 uv = double2(ray_footprint_clamp_f64(unclamped.x, RF_F64_MAX_VALUE),
+                         ray_footprint_clamp_f64(unclamped.y, RF_F64_MAX_VALUE));
     return double3(double(1.0) - uv.x - uv.y, uv.x, uv.y);
 }
 
