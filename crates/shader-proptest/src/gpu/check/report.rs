@@ -111,7 +111,7 @@ impl fmt::Display for Report {
         };
         write!(
             f,
-            "{:<38} {:<5} {:>9} cases  max error {:>9.3e}  ({:>6.4} of tolerance)  vacuous {:>6.2}%  {verdict}",
+            "{:<38} {:<14} {:>9} cases  max error {:>9.3e}  ({:>6.4} of tolerance)  vacuous {:>6.2}%  {verdict}",
             self.function,
             self.language.name(),
             self.cases,
