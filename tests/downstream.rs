@@ -20,6 +20,7 @@ const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 /// The crates built together, by package name.
 const TOGETHER: &[&str] = &[
     "downstream-glsl-build-script",
+    "downstream-hlsl-build-script",
     "downstream-naga-oil",
     "downstream-shader-proptest-user",
     "downstream-slang-build-script",
@@ -226,6 +227,19 @@ fn slang_build_script_compiles_a_compute_shader() {
     run_together(
         "slang-build-script",
         &["cases agree with the mirror", &package_modules("Slang")],
+    );
+}
+
+/// A Vulkan user writing HLSL: a compute shader `#include`s the HLSL ray-differential module
+/// through the directory the crate exports to dependents' build scripts
+/// (`DEP_RAY_FOOTPRINT_HLSL_INCLUDE`, checked against `HLSL_INCLUDE_DIR`), compiled by glslang's HLSL
+/// front end, run on lavapipe with the validation layer on, its eye rays (from glam's matrices in
+/// HLSL float4x4s) checked against the mirror.
+#[test]
+fn hlsl_build_script_compiles_a_compute_shader() {
+    run_together(
+        "hlsl-build-script",
+        &["eye rays agree with the mirror", &package_modules("HLSL")],
     );
 }
 
