@@ -20,9 +20,11 @@
 //!   roundings of the sum of the term magnitudes for `n` terms;
 //! - every rounding may also flush a denormal: plus the smallest normal number;
 //! - an exact zero (the difference of equal inputs, a product with a zero) is computed exactly;
-//! - an f32 result that may exceed `f32::MAX` may overflow to an infinity of either sign (a fused
-//!   multiply-add overflows where separate roundings do not, and the other way round), and so
-//!   may everything computed from it: the interval becomes unbounded ([`Interval::round`]).
+//! - an f32 result that may exceed `f32::MAX` may overflow to an infinity of its sign, or stay
+//!   finite where the device fuses it into the next operation: the interval is unbounded on that
+//!   side and keeps its other bound ([`Interval::within_range`]); a sum of products whose partial
+//!   sums may overflow is unbounded on both sides (a fused multiply-add overflows where separate
+//!   roundings do not, and the other way round, so cancelling terms give either sign).
 //!
 //! For f64 arithmetic the same budgets apply with f64 units ([`F64`]), and a final conversion to f32
 //! adds half an f32 ULP.
@@ -148,7 +150,7 @@ impl Interval {
 
     /// Widens by `ulps` roundings of the largest magnitude, plus one flushed denormal; an exact
     /// zero stays exact. In f32 arithmetic, an interval reaching beyond `f32::MAX` becomes
-    /// unbounded ([`Interval::within_range`]).
+    /// unbounded on that side ([`Interval::within_range`]).
     pub fn round(self, ulps: f64) -> Interval {
         if self.is_exact_zero() {
             return self;
@@ -162,19 +164,24 @@ impl Interval {
         .within_range()
     }
 
-    /// The interval, or the unbounded interval where an f32 result in it may overflow: a value
-    /// beyond `f32::MAX` rounds to an infinity, and which of the device's operations overflow
-    /// depends on how it orders and fuses them (one of two cancelling products may overflow alone,
-    /// and `inf - inf` is NaN), so nothing computed from it is bounded.
+    /// The interval, unbounded on each side where an f32 result in it may overflow: a value
+    /// beyond `f32::MAX` rounds to an infinity of its sign, or stays finite where the device fuses
+    /// the operation into the next one (then the exact value goes on, which the other bound still
+    /// holds). Interval arithmetic carries the infinite bound on: `inf - inf` gives an interval
+    /// unbounded on both sides.
     pub fn within_range(self) -> Interval {
-        if self.p == F32 && self.magnitude() > f64::from(f32::MAX) {
-            Interval {
-                lo: f64::NEG_INFINITY,
-                hi: f64::INFINITY,
-                p: F32,
-            }
-        } else {
-            self
+        if self.p != F32 {
+            return self;
+        }
+        let max = f64::from(f32::MAX);
+        Interval {
+            lo: if self.lo < -max {
+                f64::NEG_INFINITY
+            } else {
+                self.lo
+            },
+            hi: if self.hi > max { f64::INFINITY } else { self.hi },
+            p: F32,
         }
     }
 
@@ -646,12 +653,21 @@ pub fn mat_vec(matrix: glam::Mat4, v: Interval3, w: Interval, p: Precision) -> I
 mod tests {
     use super::*;
 
-    /// A product beyond `f32::MAX` may be an infinity on the device: unbounded, in f32 only.
+    /// A product beyond `f32::MAX` may be an infinity of its sign on the device: unbounded on
+    /// that side, in f32 only; a clamp after it gives the clamp's bound.
     #[test]
     fn a_product_that_may_overflow_is_unbounded() {
         let big = Interval::exact(1.0e20);
         let product = big * big;
-        assert_eq!((product.lo, product.hi), (f64::NEG_INFINITY, f64::INFINITY));
+        assert_eq!(product.hi, f64::INFINITY);
+        assert!(product.lo > 0.99e40 && product.lo < 1.0e40);
+        let negative = -big * big;
+        assert_eq!(negative.lo, f64::NEG_INFINITY);
+        assert!(negative.hi < -0.99e40);
+        let clamped = product.clamp_c(-1.0, 1.0);
+        assert_eq!((clamped.lo, clamped.hi), (1.0, 1.0));
+        let difference = product - product;
+        assert_eq!((difference.lo, difference.hi), (f64::NEG_INFINITY, f64::INFINITY));
         let in_f64 = Interval::exact64(1.0e20) * Interval::exact64(1.0e20);
         assert!(in_f64.magnitude() < 1.01e40);
         let small = Interval::exact(1.0e18) * Interval::exact(1.0e18);
