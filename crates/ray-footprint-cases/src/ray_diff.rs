@@ -14,7 +14,7 @@ mod derivatives;
 pub mod enclosure;
 mod gbuffer;
 mod mapping;
-mod reference;
+pub(crate) mod reference;
 mod reflection;
 mod reintersection;
 mod rows;

@@ -34,6 +34,7 @@ pub(super) use reflection::{
 pub(super) use reintersection::{
     barycentric_deltas, barycentric_offsets, intersect_triangle_plane, uv_gradients_from_offsets,
 };
+pub(crate) use reintersection::{exact_offsets, unclamped};
 
 use crate::degenerate::parts;
 use crate::reference::Deviation;
@@ -42,7 +43,7 @@ use shader_proptest::interval::Interval;
 use shader_proptest::Value;
 
 /// The widths of an enclosure's intervals: bounds of the mirror's rounding, component by component.
-fn widths(enclosure: &[Interval]) -> Vec<f64> {
+pub(crate) fn widths(enclosure: &[Interval]) -> Vec<f64> {
     enclosure
         .iter()
         .map(|interval| interval.hi - interval.lo)
@@ -51,7 +52,7 @@ fn widths(enclosure: &[Interval]) -> Vec<f64> {
 
 /// The worst of the components of `got` (as the harness lists them) against `expected`, each within
 /// `bound(index)`.
-fn components<R: Value>(got: R, expected: &[f64], bound: impl Fn(usize) -> f64) -> Deviation {
+pub(crate) fn components<R: Value>(got: R, expected: &[f64], bound: impl Fn(usize) -> f64) -> Deviation {
     let got = parts(got);
     assert_eq!(got.len(), expected.len(), "one expected value per component");
     Deviation::worst(

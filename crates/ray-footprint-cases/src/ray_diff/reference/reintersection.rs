@@ -12,9 +12,10 @@ use proptest::prelude::*;
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, DIFF_MAX_VALUE};
 use shader_proptest::interval::{interval3, Interval3};
 
-/// Whether barycentrics lie inside the range the functions clamp to (with a margin).
-fn unclamped(b: DVec3) -> bool {
-    b.abs().max_element() < 0.99 * f64::from(DIFF_MAX_VALUE)
+/// Whether barycentrics lie inside `[-limit, limit]`, the range the functions clamp to (with a
+/// margin).
+pub(crate) fn unclamped(b: DVec3, limit: f64) -> bool {
+    b.abs().max_element() < 0.99 * limit
 }
 
 /// `rf_intersect_triangle_plane`.
@@ -25,7 +26,7 @@ pub(in crate::ray_diff) fn intersect_triangle_plane() -> Reference<(Vec3, Vec3, 
         plane_intersections,
         |&(o, d, p0, p1, p2), intersect_triangle_plane| {
             let (expected, _) = triangle_hit(o.as_dvec3(), d.as_dvec3(), [p0, p1, p2].map(Vec3::as_dvec3));
-            if !unclamped(expected) {
+            if !unclamped(expected, f64::from(DIFF_MAX_VALUE)) {
                 return None;
             }
             let got = intersect_triangle_plane((o, d, p0, p1, p2));
@@ -39,9 +40,11 @@ pub(in crate::ray_diff) fn intersect_triangle_plane() -> Reference<(Vec3, Vec3, 
 
 /// The exact offsets `(b_x - b, b_y - b)` of the re-intersection: the world origin and the
 /// neighbour directions taken to object space in f64 (the direction by the matrix's linear part,
-/// so `T(O + d) - T(O)` cancels nothing), intersected with the triangle's plane.
-fn exact_offsets(
+/// so `T(O + d) - T(O)` cancels nothing), intersected with the triangle's plane; `None` where a
+/// neighbour's barycentrics leave `[-limit, limit]`.
+pub(crate) fn exact_offsets(
     &(world_to_object, origin, p0, p1, p2, dir_x, dir_y, hit): &OffsetArgs,
+    limit: f64,
 ) -> Option<[DVec3; 2]> {
     let matrix = world_to_object.as_dmat4();
     let object_origin = matrix.transform_point3(origin.as_dvec3());
@@ -49,7 +52,7 @@ fn exact_offsets(
     let p = [p0, p1, p2].map(Vec3::as_dvec3);
     let offset = |direction: Vec3| {
         let (b, _) = triangle_hit(object_origin, linear * direction.as_dvec3(), p);
-        unclamped(b).then(|| b - hit.as_dvec3())
+        unclamped(b, limit).then(|| b - hit.as_dvec3())
     };
     Some([offset(dir_x)?, offset(dir_y)?])
 }
@@ -66,7 +69,7 @@ pub(in crate::ray_diff) fn barycentric_offsets() -> Reference<OffsetArgs, Deriva
         "the neighbour rays taken to object space by the f64 matrix (the direction by its linear part, cancelling nothing) and intersected with the triangle's plane as a 3x3 system in f64, minus the hit's barycentrics",
         || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
         |args, barycentric_offsets| {
-            let [dx, dy] = exact_offsets(args)?;
+            let [dx, dy] = exact_offsets(args, f64::from(DIFF_MAX_VALUE))?;
             let got = barycentric_offsets(*args);
             let (x, y) = offset_enclosures(args);
             let bounds = widths(&[x.components(), y.components()].concat());
@@ -83,7 +86,7 @@ pub(in crate::ray_diff) fn barycentric_deltas() -> Reference<OffsetArgs, Vec3> {
         "|b_x - b| + |b_y - b| of the exact offsets (neighbour rays taken to object space by the f64 matrix's linear part and intersected in f64)",
         || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
         |args, barycentric_deltas| {
-            let [dx, dy] = exact_offsets(args)?;
+            let [dx, dy] = exact_offsets(args, f64::from(DIFF_MAX_VALUE))?;
             let got = barycentric_deltas(*args);
             let (x, y) = offset_enclosures(args);
             let bounds = widths(&(x.abs() + y.abs()).components());
