@@ -3,7 +3,7 @@
 //! lab that measures each level-of-detail method against a supersampled ground truth
 //! ([`quality`]), with captioned figures ([`figure`]), and reflection chains that follow a ray
 //! cone and a ray differential along the same paths, on the CPU and in both shader languages
-//! ([`chains`]).
+//! ([`chains`]), and the GPU timing that the benches share ([`timing`]).
 #![deny(missing_docs)]
 
 pub mod chains;
@@ -11,3 +11,4 @@ pub mod cli;
 pub mod figure;
 pub mod quality;
 pub mod rt;
+pub mod timing;

@@ -88,11 +88,7 @@ fn main() {
         (Language::Glsl, GLSL),
         (Language::Slang, SLANG),
     ] {
-        let shader = match language {
-            Language::Wgsl => Shader::wgsl(source),
-            Language::Glsl => Shader::glsl(source),
-            Language::Slang => Shader::slang(source),
-        };
+        let shader = Shader::new(language, source);
         for batch in [16_384, 65_536] {
             for &threads in &threads {
                 let config = RunConfig {

@@ -25,9 +25,9 @@
 //! # Ok::<(), layout::LayoutError>(())
 //! ```
 
-use crate::compile::{compile_glsl, compile_slang, CompileError, Stage, Target};
+pub use crate::back::{glsl_layout, slang_layout, wgsl_layout};
+use crate::compile::CompileError;
 use std::fmt;
-use std::path::Path;
 
 /// One field: name, byte offset and byte size.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -278,71 +278,8 @@ pub fn compare(rust: &StructLayout, shader: &StructLayout) -> Result<LayoutTable
     }
 }
 
-/// The layout naga gives the WGSL struct `name` declared in `source` (the WGSL rules for
-/// host-shareable memory, which storage buffers and push constants use).
-pub fn wgsl_layout(source: &str, name: &str) -> Result<StructLayout, LayoutError> {
-    let module = naga::front::wgsl::parse_str(source)
-        .map_err(|error| LayoutError::Source(error.emit_to_string(source)))?;
-    let mut layouter = naga::proc::Layouter::default();
-    layouter
-        .update(module.to_ctx())
-        .map_err(|error| LayoutError::Source(format!("layout: {error}")))?;
-    let (handle, members, span) = module
-        .types
-        .iter()
-        .find_map(|(handle, ty)| match &ty.inner {
-            naga::TypeInner::Struct { members, span } if ty.name.as_deref() == Some(name) => {
-                Some((handle, members, *span))
-            }
-            _ => None,
-        })
-        .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
-    let fields = members
-        .iter()
-        .map(|member| FieldLayout {
-            name: member.name.clone().unwrap_or_default(),
-            offset: member.offset,
-            size: layouter[member.ty].size,
-        })
-        .collect();
-    Ok(StructLayout {
-        name: name.to_string(),
-        size: span,
-        align: layouter[handle].alignment * 1,
-        fields,
-    })
-}
-
-/// The layout glslang gives the GLSL struct `name` (declared in `source`, a module without
-/// `#version` or `main`, which may `#include` files from `include_dirs`) as the element of a
-/// runtime array in a `packing` storage block: field offsets from the SPIR-V `Offset` decorations,
-/// the size from the array's `ArrayStride`. Needs `glslangValidator` on the `PATH`. Compiler
-/// errors name the lines of `source` as `source:LINE`.
-pub fn glsl_layout(
-    source: &str,
-    name: &str,
-    packing: GlslPacking,
-    include_dirs: &[&Path],
-) -> Result<StructLayout, LayoutError> {
-    if !is_identifier(name) {
-        return Err(LayoutError::StructNotFound(name.to_string()));
-    }
-    // `#line 1` numbers the lines of `source` from 1; the probe block follows on the next line.
-    let probe = format!(
-        "#version 460\n#extension GL_GOOGLE_include_directive : require\n\
-         #extension GL_EXT_scalar_block_layout : require\n#line 1\n{source}\n\
-         layout({}, set = 0, binding = 0) readonly buffer LayoutProbe {{ {name} layout_probe[]; }};\n\
-         layout(local_size_x = 1) in;\nvoid main() {{}}\n",
-        packing.qualifier()
-    );
-    let probe_line = line_after(source);
-    let spirv = compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs)
-        .map_err(|error| probe_error(error, |log| glsl_compile_error(log, name, probe_line)))?;
-    spirv::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
-}
-
 /// Whether `name` is a GLSL identifier (ASCII letters, digits and `_`, not starting with a digit).
-fn is_identifier(name: &str) -> bool {
+pub(crate) fn is_identifier(name: &str) -> bool {
     let mut chars = name.chars();
     chars
         .next()
@@ -352,88 +289,22 @@ fn is_identifier(name: &str) -> bool {
 
 /// The number of a probe's line right after `source`, which starts the probe at line 1 (counted
 /// from the newlines, so that a source ending in one counts right).
-fn line_after(source: &str) -> usize {
+pub(crate) fn line_after(source: &str) -> usize {
     source.matches('\n').count() + 2
 }
 
 /// A failed probe compile as a layout error: the compiler's message when it did not run, else
 /// `from_log` of its log, in which the probe's path reads `source`.
-fn probe_error(error: CompileError, from_log: impl FnOnce(&str) -> LayoutError) -> LayoutError {
+pub(crate) fn probe_error(error: CompileError, from_log: impl FnOnce(&str) -> LayoutError) -> LayoutError {
     match error {
         CompileError::NotRun(message) => LayoutError::Source(message),
         CompileError::Failed { log, source_path } => from_log(&log.replace(&source_path, "source")),
     }
 }
 
-/// The error for a failed probe compile: errors at the probe block alone mean `name` is not a type
-/// the source declares; otherwise glslang's errors about the source (`source:LINE: ...`).
-fn glsl_compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError {
-    let errors: Vec<&str> = log
-        .lines()
-        .filter_map(|line| line.strip_prefix("ERROR: "))
-        .filter(|line| !line.contains("compilation errors") && !line.starts_with("Linking"))
-        .collect();
-    let at_probe = format!("source:{probe_line}:");
-    if !errors.is_empty() && errors.iter().all(|line| line.starts_with(&at_probe)) {
-        LayoutError::StructNotFound(name.to_string())
-    } else if errors.is_empty() {
-        LayoutError::Source(log.to_string())
-    } else {
-        LayoutError::Source(errors.join("\n"))
-    }
-}
-
-/// The layout slangc gives the Slang struct `name` (declared in `source`, which may `import` or
-/// `#include` modules from `search_dirs`) as the element of a `StructuredBuffer` with `packing`'s
-/// data layout: field offsets from the SPIR-V `Offset` decorations, the size from the array's
-/// `ArrayStride`. The struct is found as the element type of the probe buffer, since slangc names
-/// a struct in SPIR-V after its layout (`RfRayCone_std430`, `RfRayCone_natural` under scalar
-/// rules). Needs `slangc` on the `PATH`.
-pub fn slang_layout(
-    source: &str,
-    name: &str,
-    packing: GlslPacking,
-    search_dirs: &[&Path],
-) -> Result<StructLayout, LayoutError> {
-    if !is_identifier(name) {
-        return Err(LayoutError::StructNotFound(name.to_string()));
-    }
-    let probe = format!(
-        "{source}
-[[vk::binding(0, 0)]] RWStructuredBuffer<{name}, {}> layout_probe;
-         [shader(\"compute\")]
-[numthreads(1, 1, 1)]
-         void main() {{ layout_probe[0] = layout_probe[1]; }}
-",
-        packing.slang_layout()
-    );
-    // Errors at the probe buffer alone mean `name` is not a type the source declares.
-    let probe_line = line_after(source);
-    let spirv = compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs)
-        .map_err(|error| probe_error(error, |log| slang_compile_error(log, name, probe_line)))?;
-    let mut layout = spirv::buffer_element_layout(&spirv, "layout_probe")
-        .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
-    layout.name = name.to_string();
-    Ok(layout)
-}
-
-/// The error for a failed Slang probe compile: errors (slangc's `--> source:LINE:` lines) at the probe
-/// buffer alone mean `name` is not a type the source declares; otherwise slangc's log.
-fn slang_compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError {
-    let at_probe = format!("source:{probe_line}:");
-    let errors: Vec<&str> = log
-        .lines()
-        .filter(|line| line.trim_start().starts_with("--> "))
-        .collect();
-    if !errors.is_empty() && errors.iter().all(|line| line.contains(&at_probe)) {
-        LayoutError::StructNotFound(name.to_string())
-    } else {
-        LayoutError::Source(log.to_string())
-    }
-}
-
-/// Reads struct layouts out of SPIR-V: names, member offsets, array strides and type sizes.
-mod spirv {
+/// Reads struct layouts out of SPIR-V (for the GLSL and Slang probes): names, member offsets,
+/// array strides and type sizes.
+pub(crate) mod spirv_layout {
     use super::{FieldLayout, StructLayout};
     use crate::spirv::literal_string;
     use std::collections::HashMap;

@@ -1,4 +1,4 @@
-//! Property tests for shader functions: run a WGSL, GLSL or Slang function on a real Vulkan device over
+//! Property tests for shader functions: run a WGSL, GLSL, Slang or HLSL function on a real Vulkan device over
 //! hundreds of thousands of generated inputs and compare every result with a Rust mirror of the
 //! same function; and check that a Rust struct has exactly the byte layout of its shader twin.
 //!
@@ -27,8 +27,9 @@
 //! 2. A generated compute kernel ([`kernel_source`]) reads each case's arguments as 32-bit words,
 //!    calls the function once per invocation and writes the result's words back. The [`Shader`]'s
 //!    source comes first: a WGSL module (compiled by naga), GLSL that `#include`s yours (compiled
-//!    by glslang, as Vulkan's GLSL users compile it), or Slang that `import`s yours (compiled by
-//!    slangc).
+//!    by glslang, as Vulkan's GLSL users compile it), Slang that `import`s yours (compiled by
+//!    slangc), or HLSL that `#include`s yours (compiled by glslang's HLSL front end or by slangc:
+//!    two languages, [`Language::HlslGlslang`] and [`Language::HlslSlangc`]).
 //! 3. Cases come from a proptest strategy, generated batch by batch from per-batch seeds on every
 //!    processor while the device runs the previous batch (one dispatch per batch).
 //! 4. Every output component is compared with the mirror's within a [`Tolerance`] (ULPs, absolute,
@@ -48,10 +49,11 @@
 //! one on the device, bit for bit.
 //!
 //! The crate needs, at run time, a Vulkan loader, a device, the validation layer, and for GLSL
-//! `glslangValidator`, for Slang `slangc`. Without its default feature `gpu` it is the compilers, the value
+//! `glslangValidator`, for Slang `slangc`, for HLSL the one of them that compiles it. Without its default feature `gpu` it is the compilers, the value
 //! descriptions and the layout reader only (no ash, no proptest).
 #![deny(missing_docs)]
 
+mod back;
 pub mod compile;
 pub mod interval;
 mod kernel;
@@ -66,7 +68,8 @@ pub mod value;
 #[cfg(feature = "gpu")]
 mod gpu;
 
-pub use compile::{CompileError, Language};
+pub use back::Language;
+pub use compile::CompileError;
 pub use kernel::{echo_kernel_source, kernel_source, WORKGROUP_SIZE};
 pub use shader::{Feature, Shader};
 pub use tolerance::Tolerance;

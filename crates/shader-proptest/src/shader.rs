@@ -1,10 +1,11 @@
 //! Where the functions under test come from: a language, the source text in front of the generated
 //! kernel, and what compiling and running it needs.
 
-use crate::compile::{
-    base_capabilities, compile_glsl, compile_slang, compile_wgsl, CompileError, Language, Stage, Target,
-};
-use crate::layout::{glsl_layout, slang_layout, wgsl_layout, GlslPacking, LayoutError, StructLayout};
+use crate::back::{Backend, Language};
+use crate::compile::{base_capabilities, CompileError};
+use crate::layout::{LayoutError, StructLayout};
+#[cfg(feature = "gpu")]
+use crate::value::{ShaderType, StructType};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, OnceLock, PoisonError};
@@ -39,8 +40,9 @@ impl Feature {
 }
 
 /// The functions under test: a language and the source text placed in front of each generated
-/// kernel (a WGSL module, GLSL such as `#include "colour.glsl"`, or Slang such as `import colour;`),
-/// with the GLSL include directories or Slang search paths, the naga capabilities WGSL may use, and
+/// kernel (a WGSL module, GLSL such as `#include "colour.glsl"`, Slang such as `import colour;`, or
+/// HLSL such as `#include "colour.hlsl"`), with the GLSL or HLSL include directories or Slang search
+/// paths, the naga capabilities WGSL may use, and
 /// the device features the code needs.
 ///
 /// ```
@@ -63,32 +65,35 @@ pub struct Shader {
 impl Shader {
     /// WGSL source declaring the functions, with [`base_capabilities`].
     pub fn wgsl(source: impl Into<String>) -> Shader {
-        Shader::new(Language::Wgsl, source.into())
+        Shader::new(Language::Wgsl, source)
     }
 
     /// GLSL source declaring (or `#include`-ing) the functions; no `#version` and no `main`.
     pub fn glsl(source: impl Into<String>) -> Shader {
-        Shader::new(Language::Glsl, source.into())
+        Shader::new(Language::Glsl, source)
     }
 
     /// Slang source declaring the functions, or bringing them in (`import colour;`,
     /// `#include "colour.slang"`); no entry point. Functions of an imported module must be `public`.
     pub fn slang(source: impl Into<String>) -> Shader {
-        Shader::new(Language::Slang, source.into())
+        Shader::new(Language::Slang, source)
     }
 
-    fn new(language: Language, source: String) -> Shader {
+    /// Source in `language`: [`Shader::wgsl`], [`Shader::glsl`] or [`Shader::slang`] by a value,
+    /// and the only way to HLSL (`Language::HlslGlslang`, `Language::HlslSlangc`: no entry point,
+    /// functions and structs declared or `#include`d).
+    pub fn new(language: Language, source: impl Into<String>) -> Shader {
         Shader {
             language,
-            source,
+            source: source.into(),
             include_dirs: Vec::new(),
             capabilities: base_capabilities(),
             features: Vec::new(),
         }
     }
 
-    /// Adds a directory to the GLSL include path, or to the Slang search path (`import` and
-    /// `#include`).
+    /// Adds a directory to the GLSL or HLSL include path, or to the Slang search path (`import`
+    /// and `#include`).
     pub fn include_dir(mut self, dir: impl AsRef<Path>) -> Shader {
         self.include_dirs.push(dir.as_ref().to_path_buf());
         self
@@ -114,12 +119,22 @@ impl Shader {
         self.language
     }
 
+    /// The back end of the language.
+    pub(crate) fn backend(&self) -> &'static dyn Backend {
+        self.language.backend()
+    }
+
+    /// The naga capabilities WGSL may use.
+    pub(crate) fn naga_capabilities(&self) -> naga::valid::Capabilities {
+        self.capabilities
+    }
+
     /// The source text placed in front of every kernel.
     pub fn source(&self) -> &str {
         &self.source
     }
 
-    /// The GLSL include directories or Slang search paths.
+    /// The GLSL or HLSL include directories or Slang search paths.
     pub fn include_dirs(&self) -> Vec<&Path> {
         self.include_dirs.iter().map(PathBuf::as_path).collect()
     }
@@ -144,7 +159,7 @@ impl Shader {
         if let Some(spirv) = compiled.lock().unwrap_or_else(PoisonError::into_inner).get(&key) {
             return Ok(spirv.clone());
         }
-        let spirv = self.compile_uncached(kernel)?;
+        let spirv = self.backend().compile_kernel(self, kernel)?;
         compiled
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
@@ -152,27 +167,31 @@ impl Shader {
         Ok(spirv)
     }
 
-    fn compile_uncached(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
-        match self.language {
-            Language::Wgsl => compile_wgsl(
-                kernel,
-                "kernel.wgsl",
-                self.capabilities | naga::valid::Capabilities::IMMEDIATES,
-                Target::Vulkan1_1,
-            ),
-            Language::Glsl => compile_glsl(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
-            Language::Slang => compile_slang(kernel, Stage::Compute, Target::Vulkan1_1, &self.include_dirs()),
-        }
-    }
-
     /// The layout of the struct `name` this source declares, as a storage buffer holds it: naga's
     /// WGSL layout, or the element of a `std430` buffer compiled by glslang or slangc.
     pub fn struct_layout(&self, name: &str) -> Result<StructLayout, LayoutError> {
-        let dirs = self.include_dirs();
-        match self.language {
-            Language::Wgsl => wgsl_layout(&self.source, name),
-            Language::Glsl => glsl_layout(&self.source, name, GlslPacking::Std430, &dirs),
-            Language::Slang => slang_layout(&self.source, name, GlslPacking::Std430, &dirs),
+        self.backend().struct_layout(self, name)
+    }
+
+    /// Compares the Rust layout of every `pod` struct among `parameters` and `result` (and the
+    /// structs they hold) with this source's ([`Shader::struct_layout`]), before a check runs.
+    #[cfg(feature = "gpu")]
+    pub(crate) fn check_layouts(
+        &self,
+        parameters: &[ShaderType],
+        result: ShaderType,
+    ) -> Result<(), LayoutError> {
+        let mut structs: Vec<&'static StructType> = Vec::new();
+        parameters
+            .iter()
+            .chain([&result])
+            .for_each(|ty| ty.structs(&mut structs));
+        for ty in structs {
+            let Some(rust_layout) = ty.rust_layout else {
+                continue;
+            };
+            crate::layout::compare(&rust_layout(), &self.struct_layout(ty.name)?)?;
         }
+        Ok(())
     }
 }

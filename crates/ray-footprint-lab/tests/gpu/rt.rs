@@ -16,13 +16,12 @@ use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::layout::{self, GlslPacking, StructLayout};
 use ray_footprint::ray_cone::{self as rc, RayCone, RefractedRayCone, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
-use ray_footprint::rust_layout;
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_cases as suite;
 use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, triangle_curvature_error};
 use ray_footprint_lab::rt::abi::{
-    RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
+    self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
 };
 use ray_footprint_lab::rt::{
     open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Material, Mode, Renderer, Scene, Vertex,
@@ -54,88 +53,14 @@ pub(crate) fn gpu() -> Gpu {
 /// (glslang) and in Slang (slangc), field by field; the uniform block's struct also under std140.
 #[test]
 fn renderer_structs_have_one_layout() {
-    let rust = [
-        rust_layout!(RtPushConstants {
-            eye,
-            tan_half_fov_y,
-            right,
-            aspect,
-            up,
-            texture_size,
-            forward,
-            mode,
-            cone,
-            width,
-            height,
-            pixel_offset,
-            flags,
-            pad
-        }),
-        rust_layout!(RtPixelRecord {
-            normal,
-            t,
-            direction,
-            instance,
-            barycentrics,
-            primitive,
-            hit,
-            cone,
-            width,
-            footprint,
-            texel_density,
-            base_lod,
-            lod,
-            gradient,
-            curvature,
-            curvature_spread,
-            reflected,
-            diff,
-            roughness_spread,
-            eta,
-            normal_spread,
-            total_internal_reflection,
-            refracted,
-            cone_uv_dx,
-            cone_uv_dy,
-            pad
-        }),
-        rust_layout!(RtDiffRecord {
-            eye_d_direction_dx,
-            lod,
-            eye_d_direction_dy,
-            offset_lod,
-            barycentric_dx,
-            barycentric_dy,
-            uv_dx,
-            uv_dy,
-            neighbour_right,
-            coverage,
-            neighbour_below,
-            pad0,
-            offset_dx,
-            pad1,
-            offset_dy,
-            pad2,
-            offset_uv_dx,
-            offset_uv_dy,
-            deltas,
-            pad3,
-            cone_deltas,
-            pad4
-        }),
-    ];
-    for rust in rust {
-        compare_layouts(&rust, &[GlslPacking::Std430, GlslPacking::Scalar]);
+    for rust in abi::layouts() {
+        let packings: &[GlslPacking] = if rust.name == "RtUniforms" {
+            &[GlslPacking::Std140, GlslPacking::Std430, GlslPacking::Scalar]
+        } else {
+            &[GlslPacking::Std430, GlslPacking::Scalar]
+        };
+        compare_layouts(&rust, packings);
     }
-    let uniforms = rust_layout!(RtUniforms {
-        view_inv,
-        proj_inv,
-        wireframe
-    });
-    compare_layouts(
-        &uniforms,
-        &[GlslPacking::Std140, GlslPacking::Std430, GlslPacking::Scalar],
-    );
 }
 
 /// Compares `rust` with its WGSL declaration in the ray-query source, its GLSL declaration in

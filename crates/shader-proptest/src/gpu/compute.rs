@@ -6,6 +6,7 @@
 use super::device::{Error, Gpu};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
 use crate::kernel::WORKGROUP_SIZE;
+use crate::shader::Shader;
 use ash::vk;
 use std::sync::Mutex;
 
@@ -66,6 +67,20 @@ impl<'g> ComputeKernel<'g> {
             push_constant_bytes,
             io: Mutex::new(None),
         })
+    }
+
+    /// A pipeline for `kernel`, a compute kernel written against `shader`, compiled by the
+    /// shader's back end; a compiler error quotes the kernel.
+    pub(crate) fn compile(
+        gpu: &'g Gpu,
+        shader: &Shader,
+        kernel: &str,
+        push_constant_bytes: u32,
+    ) -> Result<ComputeKernel<'g>, Error> {
+        let spirv = shader
+            .compile_kernel(kernel)
+            .map_err(|error| Error::Compile(format!("{error}\n--- kernel ---\n{kernel}")))?;
+        ComputeKernel::new(gpu, &spirv, push_constant_bytes)
     }
 
     /// Runs `invocations` invocations over `input` and returns the first `output_words` words of

@@ -218,6 +218,14 @@ impl Gpu {
         self.enabled.contains(&feature)
     }
 
+    /// The first of `features` this device lacks, as a reason: `"llvmpipe ... lacks shaderFloat64"`.
+    pub(crate) fn missing_feature(&self, features: &[Feature]) -> Option<String> {
+        features
+            .iter()
+            .find(|&&feature| !self.has(feature))
+            .map(|feature| format!("{} lacks {}", self.name(), feature.name()))
+    }
+
     /// Why an optional `feature` is not enabled, or `None` when it is (or was not asked for).
     pub fn lacks(&self, feature: Feature) -> Option<&str> {
         self.missing

@@ -1,7 +1,6 @@
 //! Layouts proven on the device: values written from Rust as raw bytes are read field by field by
 //! a shader, from a storage buffer and from push constants, and must come back bit for bit.
 
-use super::check::{compile, missing_feature};
 use super::compute::ComputeKernel;
 use super::device::{Error, Gpu};
 use crate::kernel::echo_kernel_source;
@@ -28,12 +27,12 @@ pub fn echo<T: Value + bytemuck::Pod>(
         panic!("echo needs a struct type, not {:?}", T::TYPE)
     };
     assert!(!values.is_empty(), "echo needs at least one value");
-    if let Some(reason) = missing_feature(gpu, shader) {
+    if let Some(reason) = gpu.missing_feature(shader.features()) {
         return Err(Error::Setup(reason));
     }
     let kernel = echo_kernel_source(shader, packing, ty);
     let size = std::mem::size_of::<T>();
-    let pipeline = ComputeKernel::new(gpu, &compile(shader, &kernel)?, size as u32)?;
+    let pipeline = ComputeKernel::compile(gpu, shader, &kernel, size as u32)?;
     let words = ShaderType::Struct(ty).words();
     let output = pipeline.dispatch_with_push_constants(
         values.len(),

@@ -5,7 +5,7 @@
 float unguarded_process_wireframe(RfWireframeSettings settings, float3 barycentrics, float3 deltas) {
     float e = max(max(barycentrics.x, barycentrics.y), barycentrics.z);
     float factor = lerp(settings.thickness_var.x, settings.thickness_var.y, 1.0 - sin(e * 3.14159265358979));
-    float3 pixel_deltas = settings.screen_space ? deltas : float3(1.0);
+    float3 pixel_deltas = settings.screen_space ? deltas : (float3)1.0;
     float3 start = pixel_deltas * (0.5 * settings.thickness * factor);
     float3 end = start + pixel_deltas * (settings.thickness * settings.smoothing);
     float3 ramp = smoothstep(start, end, barycentrics);

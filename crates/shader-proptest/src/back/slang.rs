@@ -1,0 +1,178 @@
+//! Slang, compiled by slangc: kernels start with the [`Shader`]'s source (for example an
+//! `import`) and declare their buffers as structured buffers, and layouts are read from the SPIR-V
+//! slangc writes for a probe buffer.
+//!
+//! Slang's matrix constructors take a matrix row by row and `m[r]` is row r, so kernels build a
+//! matrix from its elements in row order and store `transpose(m)[c]` ([`MatrixOrder::Rows`]).
+
+use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
+use crate::compile::{compile_slang, CompileError, Stage, Target};
+use crate::kernel::WORKGROUP_SIZE;
+use crate::layout::{
+    is_identifier, line_after, probe_error, spirv_layout, GlslPacking, LayoutError, StructLayout,
+};
+use crate::shader::Shader;
+use crate::value::ShaderType;
+use std::path::Path;
+
+/// The Slang back end.
+pub(crate) struct Slang;
+
+impl Backend for Slang {
+    fn name(&self) -> &'static str {
+        "Slang"
+    }
+
+    fn type_name(&self, ty: ShaderType) -> &'static str {
+        match ty {
+            ShaderType::F32 => "float",
+            ShaderType::U32 => "uint",
+            ShaderType::I32 => "int",
+            ShaderType::Bool => "bool",
+            ShaderType::Vec2 => "float2",
+            ShaderType::Vec3 => "float3",
+            ShaderType::Vec4 => "float4",
+            ShaderType::Mat2 => "float2x2",
+            ShaderType::Mat3 => "float3x3",
+            ShaderType::Mat4 => "float4x4",
+            ShaderType::Struct(s) => s.name,
+        }
+    }
+
+    fn int_from_bits(&self, word: &str) -> String {
+        format!("asint({word})")
+    }
+
+    fn float_bits(&self, value: &str) -> String {
+        format!("asuint({value})")
+    }
+
+    fn int_bits(&self, value: &str) -> String {
+        format!("asuint({value})")
+    }
+
+    fn bool_word(&self, value: &str) -> String {
+        format!("({value} ? 1u : 0u)")
+    }
+
+    fn matrix_order(&self) -> MatrixOrder {
+        MatrixOrder::Rows
+    }
+
+    fn call_kernel(&self, source: &str, call: &KernelCall<'_>) -> String {
+        format!(
+            "{source}
+
+[[vk::binding(0, 0)]] StructuredBuffer<uint> kernel_inputs;
+[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
+
+float kernel_f32(uint word) {{
+    return asfloat(kernel_inputs[word]);
+}}
+
+{main}",
+            main = main(
+                "kernel_outputs",
+                &format!("buffer_length / {}u", call.out_words),
+                |index| call.typed_statements(index),
+            ),
+        )
+    }
+
+    /// Both buffers take `packing`'s data layout.
+    fn echo_kernel(&self, source: &str, packing: GlslPacking, echo: &KernelEcho<'_>) -> String {
+        format!(
+            "{source}
+
+[[vk::binding(0, 0)]] StructuredBuffer<{name}, {layout}> echo_values;
+[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
+[[vk::push_constant]] ConstantBuffer<{name}, {layout}> echo_push;
+
+{main}",
+            name = echo.name,
+            layout = packing.slang_layout(),
+            main = main("echo_values", "buffer_length", |index| echo
+                .typed_statements(index)),
+        )
+    }
+
+    /// slangc, with the shader's search paths.
+    fn compile_kernel(&self, shader: &Shader, kernel: &str) -> Result<Vec<u32>, CompileError> {
+        compile_slang(kernel, Stage::Compute, Target::Vulkan1_1, &shader.include_dirs())
+    }
+
+    /// The element of a `std430` structured buffer.
+    fn struct_layout(&self, shader: &Shader, name: &str) -> Result<StructLayout, LayoutError> {
+        slang_layout(shader.source(), name, GlslPacking::Std430, &shader.include_dirs())
+    }
+}
+
+/// A Slang compute `main`: invocation `id.x` returns unless it is below `cases`, an expression
+/// that may use `buffer_length`, the element count of the structured buffer `buffer`; then runs
+/// `statements` of its index expression.
+fn main(buffer: &str, cases: &str, statements: impl FnOnce(&str) -> String) -> String {
+    let index = "id.x";
+    format!(
+        "[shader(\"compute\")]
+[numthreads({WORKGROUP_SIZE}, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {{
+    uint buffer_length;
+    uint buffer_stride;
+    {buffer}.GetDimensions(buffer_length, buffer_stride);
+    if ({index} >= {cases}) {{
+        return;
+    }}
+{}}}
+",
+        statements(index)
+    )
+}
+
+/// The layout slangc gives the Slang struct `name` (declared in `source`, which may `import` or
+/// `#include` modules from `search_dirs`) as the element of a `StructuredBuffer` with `packing`'s
+/// data layout: field offsets from the SPIR-V `Offset` decorations, the size from the array's
+/// `ArrayStride`. The struct is found as the element type of the probe buffer, since slangc names
+/// a struct in SPIR-V after its layout (`RfRayCone_std430`, `RfRayCone_natural` under scalar
+/// rules). Needs `slangc` on the `PATH`.
+pub fn slang_layout(
+    source: &str,
+    name: &str,
+    packing: GlslPacking,
+    search_dirs: &[&Path],
+) -> Result<StructLayout, LayoutError> {
+    if !is_identifier(name) {
+        return Err(LayoutError::StructNotFound(name.to_string()));
+    }
+    let probe = format!(
+        "{source}
+[[vk::binding(0, 0)]] RWStructuredBuffer<{name}, {}> layout_probe;
+         [shader(\"compute\")]
+[numthreads(1, 1, 1)]
+         void main() {{ layout_probe[0] = layout_probe[1]; }}
+",
+        packing.slang_layout()
+    );
+    // Errors at the probe buffer alone mean `name` is not a type the source declares.
+    let probe_line = line_after(source);
+    let spirv = compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs)
+        .map_err(|error| probe_error(error, |log| compile_error(log, name, probe_line)))?;
+    let mut layout = spirv_layout::buffer_element_layout(&spirv, "layout_probe")
+        .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
+    layout.name = name.to_string();
+    Ok(layout)
+}
+
+/// The error for a failed probe compile: errors (slangc's `--> source:LINE:` lines) at the probe
+/// buffer alone mean `name` is not a type the source declares; otherwise slangc's log.
+fn compile_error(log: &str, name: &str, probe_line: usize) -> LayoutError {
+    let at_probe = format!("source:{probe_line}:");
+    let errors: Vec<&str> = log
+        .lines()
+        .filter(|line| line.trim_start().starts_with("--> "))
+        .collect();
+    if !errors.is_empty() && errors.iter().all(|line| line.contains(&at_probe)) {
+        LayoutError::StructNotFound(name.to_string())
+    } else {
+        LayoutError::Source(log.to_string())
+    }
+}
