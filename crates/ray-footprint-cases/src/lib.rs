@@ -11,7 +11,7 @@
 //! - [`degenerate`]: the degenerate-input table, rendered into the root crate's
 //!   `src/degenerate.md` and run on the CPU and the GPU;
 //! - [`fuzzing`]: the cargo-fuzz targets and the replay of their corpora;
-//! - [`reference`]: each function against independent references (exact geometry, f64 finite
+//! - [`reference`](mod@reference): each function against independent references (exact geometry, f64 finite
 //!   differences, closed forms computed another way, identities, peer originals), and the table of
 //!   the root crate's `src/proven.md`.
 //!
