@@ -18,6 +18,10 @@ pub mod bad_input {}
 pub mod degenerate {}
 #[cfg(feature = "naga_oil")]
 pub mod naga_oil;
+/// How each function is proven: agreement, independent references, degenerate rows.
+///
+#[doc = include_str!("proven.md")]
+pub mod proven {}
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;

@@ -10,18 +10,23 @@
 //!   lab's `verify` and its GPU tests), and each record's special-value check ([`special`]);
 //! - [`degenerate`]: the degenerate-input table, rendered into the root crate's
 //!   `src/degenerate.md` and run on the CPU and the GPU;
-//! - [`fuzzing`]: the cargo-fuzz targets and the replay of their corpora.
+//! - [`fuzzing`]: the cargo-fuzz targets and the replay of their corpora;
+//! - [`reference`](mod@reference): each function against independent references (exact geometry, f64 finite
+//!   differences, closed forms computed another way, identities, peer originals), and the table of
+//!   the root crate's `src/proven.md`.
 //!
 //! Not published: the product (`ray-footprint`) is the shader modules and the Rust mirror.
 
 pub mod agreement;
 pub mod degenerate;
+pub mod exact;
 pub mod fuzzing;
 pub mod order;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
 mod record;
+pub mod reference;
 pub mod special;
 pub mod strategy;
 pub mod wireframe;

@@ -4,7 +4,7 @@
 //! [`shader_proptest::tolerance`]); the comment next to it says how. Bounds that several records
 //! share are in the `bound` submodule; refraction and roughness, which chain dozens of operations,
 //! take the width of an interval enclosure (the `enclosure` submodule); the cases only these
-//! records use are in `strategy`.
+//! records use are in `strategy`; the independent references in `reference`.
 
 mod bound;
 mod camera;
@@ -12,6 +12,7 @@ mod enclosure;
 mod lod;
 mod material;
 mod propagation;
+mod reference;
 mod strategy;
 
 use glam::{Vec2, Vec3};

@@ -6,7 +6,7 @@
 //! precision rules allow the device (and that the mirror makes), so both results lie inside. The
 //! re-evaluations (one per shader function, in the module's order of operations) are in the
 //! `enclosure` submodule, the case strategies in `strategy`, the degenerate rows several records
-//! share in `rows`.
+//! share in `rows`, the independent references in `reference`.
 
 mod camera;
 mod cones;
@@ -14,6 +14,7 @@ mod derivatives;
 pub mod enclosure;
 mod gbuffer;
 mod mapping;
+pub(crate) mod reference;
 mod reflection;
 mod reintersection;
 mod rows;

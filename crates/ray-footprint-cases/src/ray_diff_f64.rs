@@ -5,6 +5,7 @@
 //! conversion back to f32 (the `enclosure` submodule).
 
 mod enclosure;
+mod reference;
 
 use crate::ray_diff::{
     delta_rows, offset_args, offset_rows, plane_intersection_rows, OffsetArgs, OFFSET, WELL_CONDITIONED,
@@ -12,6 +13,7 @@ use crate::ray_diff::{
 use crate::record::Record;
 use crate::special::Perturb;
 use crate::strategy::{triangle, unit_vec3, vec3};
+use glam::Vec3;
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
 use ray_footprint::ray_diff_f64 as rd64;
@@ -29,6 +31,24 @@ fn well_conditioned_offset_args_f64() -> BoxedStrategy<OffsetArgs> {
         .boxed()
 }
 
+/// The arguments of `intersect_triangle_plane_f64`: an origin, a unit or any direction and a
+/// triangle whose f64 determinant is well-conditioned.
+fn plane_intersections_f64() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec3, Vec3)> {
+    let direction = prop_oneof![3 => unit_vec3(), 1 => vec3()];
+    (vec3(), direction, triangle())
+        .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
+        .prop_filter("an ill-conditioned determinant", |&(_, d, p0, p1, p2)| {
+            let k = enclosure::determinant_f64(
+                interval3_f64(d),
+                interval3_f64(p0),
+                interval3_f64(p1),
+                interval3_f64(p2),
+            );
+            k.relative_width() <= WELL_CONDITIONED
+        })
+        .boxed()
+}
+
 /// The module of these records.
 const MODULE: Module = Module::RayDiffF64;
 
@@ -39,21 +59,7 @@ pub fn intersect_triangle_plane_f64() -> Record<impl Args + Perturb, impl Value>
         MODULE,
         "intersect_triangle_plane_f64",
         |(o, d, p0, p1, p2)| rd64::intersect_triangle_plane_f64(o, d, p0, p1, p2),
-        || {
-            let direction = prop_oneof![3 => unit_vec3(), 1 => vec3()];
-            (vec3(), direction, triangle())
-                .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
-                .prop_filter("an ill-conditioned determinant", |&(_, d, p0, p1, p2)| {
-                    let k = enclosure::determinant_f64(
-                        interval3_f64(d),
-                        interval3_f64(p0),
-                        interval3_f64(p1),
-                        interval3_f64(p2),
-                    );
-                    k.relative_width() <= WELL_CONDITIONED
-                })
-                .boxed()
-        },
+        plane_intersections_f64,
     )
     .enclosure(|&(o, d, p0, p1, p2)| {
         let b = enclosure::plane_barycentrics_f64(
@@ -65,6 +71,7 @@ pub fn intersect_triangle_plane_f64() -> Record<impl Args + Perturb, impl Value>
         );
         b.map(Interval::to_f32).components()
     })
+    .reference(reference::intersect_triangle_plane_f64())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, b, promises| {
         let max = rd64::F64_MAX_VALUE as f32;
@@ -91,6 +98,7 @@ pub fn barycentric_offsets_f64() -> Record<impl Args + Perturb, impl Value> {
         let (dx, dy) = enclosure::barycentric_offsets_f64(a);
         [dx.components(), dy.components()].concat()
     })
+    .reference(reference::barycentric_offsets_f64())
     .fuzz(|d| d.reintersection())
     .degenerate(offset_rows(
         "(F64_MAX_VALUE, -F64_MAX_VALUE, 0) - hit rounded to f32 (clamped u, v), (1, 0, 0) - hit",
@@ -111,6 +119,7 @@ pub fn barycentric_deltas_f64() -> Record<impl Args + Perturb, impl Value> {
         let (dx, dy) = enclosure::barycentric_offsets_f64(a);
         (dx.abs() + dy.abs()).components()
     })
+    .reference(reference::barycentric_deltas_f64())
     .fuzz(|d| d.reintersection())
     .range(0.0, f32::MAX, "delta")
     .degenerate(delta_rows(

@@ -5,8 +5,9 @@
 //! degenerate inputs, and how the fuzzer draws its arguments and what it promises about the
 //! result. The runners take what they need from it: the agreement and special-value checks
 //! ([`Record::check`], [`Record::special_check`]), the degenerate table ([`crate::degenerate`]),
-//! the `cpu_mirror` fuzz target ([`crate::fuzzing::mirror`]). Type-erased as [`Function`], the
-//! records of all modules form one list in module order ([`crate::records`]).
+//! the `cpu_mirror` fuzz target ([`crate::fuzzing::mirror`]), and the independent references that
+//! prove the mirror itself ([`crate::reference`]). Type-erased as [`Function`], the records of all
+//! modules form one list in module order ([`crate::records`]).
 //!
 //! ```
 //! use proptest::prelude::*;
@@ -29,6 +30,7 @@
 
 use crate::degenerate::Row;
 use crate::fuzzing::draw::{Draw, Mode};
+use crate::reference::{reference_seed, Kind, Reference, ReferenceReport};
 use crate::special::Perturb;
 use proptest::strategy::BoxedStrategy;
 use ray_footprint::shaders::Module;
@@ -71,6 +73,8 @@ pub struct Record<A, R> {
     degenerate: Vec<Row<A>>,
     fuzz: Option<fn(&mut Draw) -> A>,
     promise: Promise<A, R>,
+    references: Vec<Reference<A, R>>,
+    found: Option<&'static str>,
 }
 
 impl<A: Args + Perturb, R: Value> Record<A, R> {
@@ -92,6 +96,8 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
             degenerate: Vec::new(),
             fuzz: None,
             promise: Promise::Finite,
+            references: Vec::new(),
+            found: None,
         }
     }
 
@@ -151,6 +157,35 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         Record {
             promise: Promise::Custom(promise),
             ..self
+        }
+    }
+
+    /// An independent reference of the function ([`crate::reference`]); a function may have several.
+    pub fn reference(mut self, reference: Reference<A, R>) -> Self {
+        self.references.push(reference);
+        self
+    }
+
+    /// The bug that a check or reference of this function found, in words (for the table of
+    /// `src/proven.md`).
+    pub fn found(self, bug: &'static str) -> Self {
+        Record {
+            found: Some(bug),
+            ..self
+        }
+    }
+
+    /// Runs reference `index` on cases drawn from a seed derived from `seed` and the function's
+    /// name ([`reference_seed`]).
+    pub fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport {
+        let reference = &self.references[index];
+        let seed = reference_seed(seed, self.module, self.function, index);
+        ReferenceReport {
+            function: format!("{}::{}", self.module.stem(), self.function),
+            kind: reference.kind(),
+            description: reference.description(),
+            seed,
+            outcome: reference.run(self.mirror, seed),
         }
     }
 
@@ -227,6 +262,12 @@ pub trait Function: Send + Sync {
     /// Evaluates the mirror on arguments drawn from `data` in `mode`: `Err` names the promises the
     /// result broke, where the function promises something for such arguments.
     fn fuzz(&self, data: &[u8], mode: Mode) -> Result<(), String>;
+    /// The kind and description of each independent reference, in the record's order.
+    fn references(&self) -> Vec<(Kind, &'static str)>;
+    /// [`Record::run_reference`].
+    fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport;
+    /// [`Record::found`]'s bug, if any.
+    fn found(&self) -> Option<&'static str>;
 }
 
 impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
@@ -264,6 +305,21 @@ impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
 
     fn has_fuzz_draw(&self) -> bool {
         self.fuzz.is_some()
+    }
+
+    fn references(&self) -> Vec<(Kind, &'static str)> {
+        self.references
+            .iter()
+            .map(|reference| (reference.kind(), reference.description()))
+            .collect()
+    }
+
+    fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport {
+        Record::run_reference(self, index, seed)
+    }
+
+    fn found(&self) -> Option<&'static str> {
+        self.found
     }
 
     fn fuzz(&self, data: &[u8], mode: Mode) -> Result<(), String> {

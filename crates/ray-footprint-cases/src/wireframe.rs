@@ -8,6 +8,7 @@
 //! times its largest slope nearby.
 
 mod bound;
+mod reference;
 mod strategy;
 
 use crate::degenerate::{mirror, parts, same, value, NAN};
@@ -51,6 +52,7 @@ pub fn unpack_wireframe_settings() -> Record<impl Args + Perturb, impl Value> {
         |(io,)| wf::unpack_wireframe_settings(io),
         || one_argument(settings_io()),
     )
+    .reference(reference::unpack_wireframe_settings())
     .fuzz(|d| (d.settings_io(),))
     .degenerate(vec![
         value(
@@ -114,6 +116,7 @@ pub fn edge_position() -> Record<impl Args + Perturb, impl Value> {
         |(b,)| wf::edge_position(b),
         || one_argument(prop_oneof![3 => barycentrics(), 1 => vec3()]),
     )
+    .reference(reference::edge_position())
     .fuzz(|d| (d.vec3(),))
     .promise(|&(b,), e, promises| promises.within(e - b.max_element(), 0.0, 0.0, "edge position - max(b)"))
     .degenerate(vec![
@@ -148,6 +151,7 @@ pub fn edge_thickness() -> Record<impl Args + Perturb, impl Value> {
         || (vec2_of(size(), size()), position_along_edge()).boxed(),
     )
     .bound(|&(var, _), _, _| edge_thickness_error(var))
+    .reference(reference::edge_thickness())
     .fuzz(|d| (d.vec2(), d.scalar()))
     .range(0.0, wf::MAX_LINE_THICKNESS, "thickness")
     .degenerate(vec![
@@ -188,6 +192,7 @@ pub fn stipple() -> Record<impl Args + Perturb, impl Value> {
                 .boxed()
         },
     )
+    .reference(reference::stipple())
     .fuzz(|d| (d.int(), d.scalar(), d.scalar()))
     .promise(|_, on, promises| promises.within(on * (1.0 - on), 0.0, 0.0, "stipple * (1 - stipple)"))
     .degenerate(vec![
@@ -226,6 +231,7 @@ pub fn edge_ramp() -> Record<impl Args + Perturb, impl Value> {
     )
     // start is an input here, so only the division and the polynomial differ.
     .bound(|&(x, start, width), i, _| edge_ramp_error(x[i], start[i], width[i], 0.0))
+    .reference(reference::edge_ramp())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, 1.0, "ramp")
     .degenerate(vec![
@@ -268,6 +274,7 @@ pub fn line_width() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .bound(|&(d, thickness, smoothing, b), _, _| line_width_error(d, thickness, 0.0, smoothing, b))
+    .reference(reference::line_width())
     .fuzz(|d| (d.vec3(), d.scalar(), d.scalar(), d.vec3()))
     .range(0.0, 1.0, "coverage")
     .degenerate(vec![
@@ -311,6 +318,7 @@ pub fn process_wireframe() -> Record<(WireframeSettings, Vec3, Vec3), f32> {
         },
     )
     .bound(|&(settings, b, d), _, _| process_wireframe_error(settings, b, d))
+    .reference(reference::process_wireframe())
     .fuzz(|d| (d.settings(), d.vec3(), d.vec3()))
     .range(0.0, 1.0, "coverage")
     .degenerate(vec![

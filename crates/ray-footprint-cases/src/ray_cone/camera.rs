@@ -2,7 +2,7 @@
 
 use super::bound::tan_ratio_error;
 use super::strategy::{packed_ray_cone, proj_inv, ray_cone};
-use super::{PinholeRayConeForRayArgs, MODULE};
+use super::{reference, PinholeRayConeForRayArgs, MODULE};
 use crate::degenerate::{cone, mirror, same, value, vulkan_inverse_projection, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -25,6 +25,7 @@ pub fn pack_ray_cone() -> Record<impl Args + Perturb, impl Value> {
     // The rounding mode of packHalf2x16 is the implementation's: one f16 ULP (2^-10
     // relative, 2^-24 absolute for f16 subnormals).
     .bound(|_, _, expected| (expected.abs() / 1024.0).max(1.0 / 16_777_216.0))
+    .reference(reference::pack_ray_cone())
     .fuzz(|d| (d.cone(),))
     .range(-rc::F16_MAX, rc::F16_MAX, "unpacked half")
     .degenerate(vec![
@@ -64,6 +65,7 @@ pub fn unpack_ray_cone() -> Record<impl Args + Perturb, impl Value> {
         |(packed,)| rc::unpack_ray_cone(packed),
         || one_argument(packed_ray_cone()),
     )
+    .reference(reference::unpack_ray_cone())
     .fuzz(|d| (d.packed_cone(),))
     .degenerate(vec![
         value("zero bits", "(0, 0)", (PackedRayCone(0),), vec![0.0, 0.0]),
@@ -103,6 +105,7 @@ pub fn pixel_spread_angle() -> Record<impl Args + Perturb, impl Value> {
             tan_ratio_error(fov, height),
         )
     })
+    .reference(reference::pixel_spread_angle())
     .fuzz(|d| (d.angle(), d.scalar()))
     .range(0.0, FRAC_PI_2, "spread angle")
     .degenerate(vec![
@@ -140,6 +143,8 @@ pub fn pixel_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
     )
     // tan's error (inherited from sin / cos) scaled by 2 / H.
     .bound(|&(fov, height), _, _| tan_ratio_error(fov, height))
+    .reference(reference::pixel_spread_angle_small())
+    .reference(reference::pixel_spread_angle_small_approximation())
     .fuzz(|d| (d.angle(), d.scalar()))
     .range(0.0, f32::MAX, "spread angle")
     .degenerate(vec![
@@ -173,6 +178,7 @@ pub fn pixel_spread_angle_from_proj_inv() -> Record<impl Args + Perturb, impl Va
         let ratio = 2.0 * inverse_projection.y_axis.y.abs() / height.max(1.0);
         atan_error(ratio, ulps(3.5, ratio))
     })
+    .reference(reference::pixel_spread_angle_from_proj_inv())
     .fuzz(|d| (d.mat4(), d.scalar()))
     .range(0.0, FRAC_PI_2, "spread angle")
     .degenerate(vec![
@@ -201,6 +207,7 @@ pub fn pinhole_ray_cone() -> Record<impl Args + Perturb, impl Value> {
         |(spread,)| rc::pinhole_ray_cone(spread),
         || one_argument(angle()),
     )
+    .reference(reference::pinhole_ray_cone())
     .fuzz(|d| (d.angle(),))
     .degenerate(vec![
         value("zero spread", "(0, 0)", (0.0,), vec![0.0, 0.0]),
@@ -241,6 +248,7 @@ pub fn pinhole_ray_cone_for_ray() -> Record<PinholeRayConeForRayArgs, RayCone> {
             spread.abs() * dot_error(direction, view_axis) + ulps(2.0, expected)
         }
     })
+    .reference(reference::pinhole_ray_cone_for_ray())
     .fuzz(|d| (d.angle(), d.unit(), d.unit()))
     .range(-3.2, 3.2, "width and spread")
     .degenerate(vec![
@@ -293,6 +301,7 @@ pub fn orthographic_ray_cone() -> Record<impl Args + Perturb, impl Value> {
     )
     // One division: 2.5 ULP on the device, 0.5 in the mirror.
     .bound(|_, _, expected| ulps(3.0, expected))
+    .reference(reference::orthographic_ray_cone())
     .fuzz(|d| (d.scalar(), d.scalar()))
     .degenerate(vec![
         value(
@@ -330,6 +339,7 @@ pub fn thin_lens_ray_cone() -> Record<impl Args + Perturb, impl Value> {
             ulps(4.0, spread.abs() + quotient.abs())
         }
     })
+    .reference(reference::thin_lens_ray_cone())
     .fuzz(|d| (d.angle(), d.scalar(), d.distance()))
     .degenerate(vec![
         value(

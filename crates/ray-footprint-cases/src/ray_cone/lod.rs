@@ -2,7 +2,7 @@
 
 use super::bound::{area_corners, clamped_cos, uv_area2_error, width_at_error, world_area2_error};
 use super::strategy::{ray_cone, triangle_with_uvs};
-use super::{TextureLodArgs, MODULE};
+use super::{reference, TextureLodArgs, MODULE};
 use crate::degenerate::{cone, direction_at, mirror, same, value, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -39,6 +39,7 @@ pub fn world_footprint() -> Record<impl Args + Perturb, impl Value> {
             + ulps(3.0, expected)
             + expected.abs() * dot_error(normal, direction) / cos
     })
+    .reference(reference::world_footprint())
     .fuzz(|d| (d.cone(), d.distance(), d.unit(), d.unit()))
     .range(0.0, f32::MAX, "footprint")
     .degenerate(vec![
@@ -85,6 +86,7 @@ pub fn triangle_world_area2() -> Record<impl Args + Perturb, impl Value> {
         || triangle().prop_map(|p| (p[0], p[1], p[2])).boxed(),
     )
     .bound(|&(p0, p1, p2), _, _| world_area2_error([p0, p1, p2]))
+    .reference(reference::triangle_world_area2())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, f32::MAX, "area")
     .degenerate(vec![
@@ -120,6 +122,7 @@ pub fn triangle_uv_area2() -> Record<impl Args + Perturb, impl Value> {
         || uv_triangle().prop_map(|uv| (uv[0], uv[1], uv[2])).boxed(),
     )
     .bound(|&(uv0, uv1, uv2), _, _| uv_area2_error([uv0, uv1, uv2]))
+    .reference(reference::triangle_uv_area2())
     .fuzz(|d| (d.vec2(), d.vec2(), d.vec2()))
     .range(0.0, f32::MAX, "area")
     .degenerate(vec![
@@ -160,6 +163,7 @@ pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
             uv.sqrt() / world.max(min).sqrt()
         }) + ulps(14.5, expected)
     })
+    .reference(reference::texel_density())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec2(), d.vec2(), d.vec2()))
     .range(0.0, f32::MAX, "density")
     .degenerate(vec![
@@ -234,6 +238,7 @@ pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
         }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
             + ulps(2.0, expected)
     })
+    .reference(reference::triangle_base_lod())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(
@@ -307,6 +312,7 @@ pub fn texture_lod() -> Record<TextureLodArgs, f32> {
                 base.abs() + logs[0].abs() + 0.5 * (logs[1] + logs[2]) + log_cos.abs(),
             )
     })
+    .reference(reference::texture_lod())
     .fuzz(|d| (d.scalar(), d.scalar(), d.vec2(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -352,6 +358,7 @@ pub fn texture_gradient() -> Record<impl Args + Perturb, impl Value> {
     )
     // One correctly rounded product.
     .bound(|_, _, _| f32::MIN_POSITIVE)
+    .reference(reference::texture_gradient())
     .fuzz(|d| (d.scalar(), d.scalar()))
     .range(0.0, f32::MAX, "gradient")
     .degenerate(vec![
@@ -378,6 +385,7 @@ pub fn environment_lod() -> Record<impl Args + Perturb, impl Value> {
     // A product and a division (3.5 ULP + the mirror's 1) through log2 (/ ln 2), plus log2's
     // own error.
     .bound(|_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected))
+    .reference(reference::environment_lod())
     .fuzz(|d| (d.angle(), d.scalar()))
     .range(rc::MIN_MAGNITUDE.log2(), f32::MAX, "environment LOD")
     .degenerate(vec![

@@ -2,7 +2,7 @@
 
 use super::enclosure::{self, refraction_decided};
 use super::strategy::{eta, ray_cone};
-use super::{RefractArgs, MODULE};
+use super::{reference, RefractArgs, MODULE};
 use crate::degenerate::{cone, direction_at, same, value};
 use crate::record::Record;
 use crate::strategy::{angle, normal_and_direction, one_argument, scalar};
@@ -37,6 +37,13 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
         },
     )
     .enclosure(enclosure::refract_ray_cone)
+    .reference(reference::refract_flat())
+    .reference(reference::refract_curved())
+    .reference(reference::refract_index_one())
+    .reference(reference::refract_first_order())
+    .reference(reference::refract_optix())
+    .reference(reference::refract_negated())
+    .reference(reference::refract_total_internal_reflection())
     .fuzz(|d| (d.cone(), d.unit(), d.unit(), d.angle(), d.scalar()))
     .degenerate(vec![
         value(
@@ -114,6 +121,8 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
         },
     )
     .enclosure(|&(r,)| vec![enclosure::roughness_spread_angle(r)])
+    .reference(reference::roughness_closed_form())
+    .reference(reference::roughness_small())
     .fuzz(|d| (d.scalar(),))
     .range(0.0, 142.0, "roughness spread")
     .degenerate(vec![

@@ -4,7 +4,7 @@ use super::bound::{
     curvature_spread_angle_error, edge_curvature_error, triangle_curvature_error, width_at_error,
 };
 use super::strategy::{off_the_plane, ray_cone};
-use super::MODULE;
+use super::{reference, MODULE};
 use crate::degenerate::{cone, direction_at, mirror, same, value, Row, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -45,6 +45,7 @@ pub fn width_at() -> Record<impl Args + Perturb, impl Value> {
         || (ray_cone(), distance()).boxed(),
     )
     .bound(|&(cone, t), _, _| width_at_error(cone, t))
+    .reference(reference::width_at())
     .fuzz(|d| (d.cone(), d.distance()))
     .degenerate(vec![
         value("t = 0", "width", (cone(0.5, 0.001), 0.0), vec![0.5]),
@@ -83,6 +84,8 @@ pub fn propagate() -> Record<impl Args + Perturb, impl Value> {
             }
         },
     )
+    .reference(reference::propagate_planar())
+    .reference(reference::propagate_curved())
     .fuzz(|d| (d.cone(), d.distance(), d.angle()))
     .degenerate(vec![
         value(
@@ -120,6 +123,7 @@ pub fn normal_spread_angle() -> Record<impl Args + Perturb, impl Value> {
         let length = rc::normal_spread_angle_small(dn_dx, dn_dy);
         2.0 * atan_error(0.5 * length, ulps(9.0, 0.5 * length))
     })
+    .reference(reference::normal_spread_angle())
     .fuzz(|d| (d.vec3(), d.vec3()))
     .range(0.0, PI, "normal spread angle")
     .degenerate(vec![
@@ -150,6 +154,7 @@ pub fn normal_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
     )
     // As above, without atan: 9 ULP.
     .bound(|_, _, expected| ulps(9.0, expected))
+    .reference(reference::normal_spread_angle_small())
     .fuzz(|d| (d.vec3(), d.vec3()))
     .range(0.0, f32::MAX, "normal spread angle")
     .degenerate(vec![
@@ -184,6 +189,7 @@ pub fn curvature_sign() -> Record<impl Args + Perturb, impl Value> {
             0.0
         }
     })
+    .reference(reference::curvature_sign())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, sign, promises| promises.within(sign.abs(), 1.0, 1.0, "|sign|"))
     .degenerate(vec![
@@ -232,6 +238,7 @@ pub fn surface_spread_angle() -> Record<impl Args + Perturb, impl Value> {
     )
     // Three products and a sum, possibly fused: 4 ULP of the larger term.
     .bound(|&(phi, sign, k1, k2), _, _| ulps(4.0, (2.0 * k1 * sign * phi).abs() + k2.abs()))
+    .reference(reference::surface_spread_angle())
     .fuzz(|d| (d.angle(), d.scalar().signum(), d.scalar(), d.angle()))
     .degenerate(vec![
         value(
@@ -266,6 +273,7 @@ pub fn edge_curvature() -> Record<impl Args + Perturb, impl Value> {
         || (vec3(), vec3(), small_vec3(), small_vec3()).boxed(),
     )
     .bound(|&(p_i, p_j, n_i, n_j), _, _| edge_curvature_error(p_i, p_j, n_i, n_j))
+    .reference(reference::edge_curvature())
     .fuzz(|d| (d.vec3(), d.vec3(), d.unit(), d.unit()))
     .degenerate(vec![
         value("zero-length edge", "0", (x, x, z, x), vec![0.0]),
@@ -300,6 +308,7 @@ pub fn triangle_curvature() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .bound(|&(p0, p1, p2, n0, n1, n2), _, _| triangle_curvature_error([p0, p1, p2], [n0, n1, n2]))
+    .reference(reference::triangle_curvature())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -355,6 +364,10 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
     .bound(|&(_, _, normal, direction), _, expected| {
         curvature_spread_angle_error(normal, direction, expected)
     })
+    .found(
+        "the reflected cone's curvature sign: past a focus and on hits behind the stored normals the spread had the wrong sign (it used |width| and |dot(n, d)|); found by the convex- and concave-mirror reproductions of `tests/ray_cone_math.rs`",
+    )
+    .reference(reference::curvature_spread_angle())
     .fuzz(|d| (d.scalar(), d.scalar(), d.unit(), d.unit()))
     .degenerate(vec![
         value(

@@ -3,7 +3,7 @@
 use super::enclosure;
 use super::rows::{centre_camera, matrix_rows};
 use super::strategy::{any_direction, camera, camera_with_a_view, differential_vec3, matrices};
-use super::{Matrices, MODULE};
+use super::{reference, Matrices, MODULE};
 use crate::degenerate::{mirror, parts, same, value, vulkan_inverse_projection, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -25,6 +25,7 @@ pub fn eye_ray_direction() -> Record<impl Args + Perturb, impl Value> {
         camera,
     )
     .enclosure(|a| enclosure::eye_ray_direction(a).components())
+    .reference(reference::eye_ray_direction())
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -59,6 +60,7 @@ pub fn normalized_derivative() -> Record<impl Args + Perturb, impl Value> {
         || (any_direction(), differential_vec3()).boxed(),
     )
     .enclosure(|&(v, dv)| enclosure::normalized_derivative(interval3(v), interval3(dv)).components())
+    .reference(reference::normalized_derivative())
     .fuzz(|d| (d.vec3(), d.vec3()))
     .degenerate(vec![
         value(
@@ -91,6 +93,7 @@ pub fn eye_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         camera_with_a_view,
     )
     .enclosure(enclosure::eye_ray_diff)
+    .reference(reference::eye_ray_diff())
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         same(
@@ -126,6 +129,7 @@ pub fn eye_ray_direction_from_matrices() -> Record<impl Args + Perturb, impl Val
         matrices,
     )
     .enclosure(|a| enclosure::eye_ray_direction_from_matrices(a).components())
+    .reference(reference::eye_ray_direction_from_matrices())
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(
         inverse_projection,
@@ -146,6 +150,7 @@ pub fn eye_ray_diff_from_matrices() -> Record<Matrices, RayDiff> {
         matrices,
     )
     .enclosure(enclosure::eye_ray_diff_from_matrices)
+    .reference(reference::eye_ray_diff_from_matrices())
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", parts(RayDiff::ZERO)))
 }
@@ -162,6 +167,7 @@ pub fn pixel_directions() -> Record<Matrices, NeighbourDirections> {
         matrices,
     )
     .enclosure(enclosure::pixel_directions)
+    .reference(reference::pixel_directions())
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", vec![0.0; 6]))
 }

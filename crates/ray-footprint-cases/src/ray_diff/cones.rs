@@ -2,7 +2,7 @@
 
 use super::enclosure;
 use super::strategy::{ray_diff, triangle_and_direction};
-use super::{ConeGradientArgs, MODULE};
+use super::{reference, ConeGradientArgs, MODULE};
 use crate::degenerate::{direction_at, parts, same, value};
 use crate::record::Record;
 use crate::strategy::{
@@ -23,6 +23,7 @@ pub fn cone_barycentric_deltas() -> Record<(f32, Vec3, Vec3, Vec3), Vec3> {
         || with_corners(scalar(), triangle()),
     )
     .enclosure(enclosure::cone_barycentric_deltas)
+    .reference(reference::cone_barycentric_deltas())
     .fuzz(|d| (d.scalar(), d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, rd::DIFF_MAX_VALUE, "delta")
     .degenerate(vec![
@@ -65,6 +66,9 @@ pub fn anisotropic_cone_axes() -> Record<(f32, Vec3, Vec3), Derivatives3> {
         let (major, minor) = enclosure::anisotropic_cone_axes(width, interval3(n), interval3(d));
         enclosure::derivatives3(major, minor)
     })
+    .reference(reference::anisotropic_cone_axes())
+    .reference(reference::anisotropic_cone_axes_growth())
+    .reference(reference::anisotropic_cone_axes_optix())
     .fuzz(|d| (d.scalar(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -106,6 +110,11 @@ pub fn anisotropic_cone_gradients() -> Record<ConeGradientArgs, Derivatives2> {
         },
     )
     .enclosure(enclosure::anisotropic_cone_gradients)
+    .found(
+        "NaN for clamped barycentric changes times large texture coordinates (1e30 * 1e12 overflowed; DIFF_MAX_VALUE is now 2^40); found by the special-value suite",
+    )
+    .reference(reference::anisotropic_cone_gradients())
+    .reference(reference::anisotropic_cone_gradients_isotropic())
     .fuzz(|d| {
         (
             d.scalar(),
@@ -158,6 +167,8 @@ pub fn ray_diff_from_cone() -> Record<(Vec2, Vec3), RayDiff> {
         || (vec2_of(scalar(), angle()), unit_vec3()).boxed(),
     )
     .enclosure(enclosure::ray_diff_from_cone)
+    .reference(reference::ray_diff_from_cone())
+    .reference(reference::ray_diff_from_cone_round_trip())
     .fuzz(|d| (d.vec2(), d.unit()))
     .degenerate(vec![
         value("zero cone", "zero differential", (Vec2::ZERO, -z), vec![0.0; 16]),
@@ -194,6 +205,8 @@ pub fn cone_from_ray_diff() -> Record<(RayDiff, Vec3), Vec2> {
         || (ray_diff(), unit_vec3()).boxed(),
     )
     .enclosure(enclosure::cone_from_ray_diff)
+    .reference(reference::cone_from_ray_diff())
+    .reference(reference::cone_from_ray_diff_propagation())
     .fuzz(|d| (d.ray_diff(), d.unit()))
     .promise(|_, cone, promises| promises.within(cone.x, 0.0, f32::MAX, "width"))
     .degenerate(vec![

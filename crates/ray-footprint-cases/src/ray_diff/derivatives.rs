@@ -3,7 +3,7 @@
 use super::enclosure::{self, well_conditioned};
 use super::rows::{direction_dx, zero_diff_dx};
 use super::strategy::{any_direction, derivatives2, ray_diff};
-use super::{BarycentricArgs, MODULE};
+use super::{reference, BarycentricArgs, MODULE};
 use crate::degenerate::{mirror, same, value, INF, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -39,6 +39,7 @@ pub fn barycentric_derivatives() -> Record<BarycentricArgs, Derivatives2> {
         },
     )
     .enclosure(enclosure::barycentric_derivatives)
+    .reference(reference::barycentric_derivatives())
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.vec3(), d.vec3(), d.vec3()))
     .range(-rd::DIFF_MAX_VALUE, rd::DIFF_MAX_VALUE, "barycentric derivative")
     .degenerate(vec![
@@ -76,6 +77,7 @@ pub fn barycentric_w_derivatives() -> Record<impl Args + Perturb, impl Value> {
         let (dx, dy) = (interval2(b.dx), interval2(b.dy));
         vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]]
     })
+    .reference(reference::barycentric_w_derivatives())
     .fuzz(|d| (d.derivatives2(),))
     .degenerate(vec![
         value("zero", "0", (Derivatives2::default(),), vec![0.0; 2]),
@@ -107,6 +109,7 @@ pub fn texture_derivatives() -> Record<(Derivatives2, Vec2, Vec2, Vec2), Derivat
         let (dx, dy) = enclosure::texture_derivatives(b, t0, t1, t2);
         enclosure::derivatives2(dx, dy)
     })
+    .reference(reference::texture_derivatives())
     .fuzz(|d| (d.derivatives2(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(
@@ -163,6 +166,7 @@ pub fn texel_derivatives() -> Record<impl Args + Perturb, impl Value> {
         let size = interval2(size.max(Vec2::ONE));
         enclosure::derivatives2(dx * size, dy * size)
     })
+    .reference(reference::texel_derivatives())
     .fuzz(|d| (d.derivatives2(), d.vec2(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         same(
@@ -204,6 +208,7 @@ pub fn secondary_origin_derivatives() -> Record<impl Args + Perturb, impl Value>
         || with_corners(derivatives2(), triangle()),
     )
     .enclosure(enclosure::secondary_origin_derivatives)
+    .reference(reference::secondary_origin_derivatives())
     .fuzz(|d| (d.derivatives2(), d.vec3(), d.vec3(), d.vec3()))
     .degenerate(vec![
         value(
@@ -241,6 +246,7 @@ pub fn lod_isotropic() -> Record<(Derivatives2,), f32> {
         || one_argument(derivatives2()),
     )
     .enclosure(|&(g,)| vec![enclosure::lod_isotropic(g)])
+    .reference(reference::lod_isotropic())
     .fuzz(|d| (d.derivatives2(),))
     .range(0.5 * rd::DIFF_MIN_MAGNITUDE.log2(), f32::MAX, "LOD")
     .degenerate(vec![
@@ -280,6 +286,7 @@ pub fn lod_box() -> Record<impl Args + Perturb, impl Value> {
         || one_argument(derivatives2()),
     )
     .enclosure(|&(g,)| vec![enclosure::lod_box(g)])
+    .reference(reference::lod_box())
     .fuzz(|d| (d.derivatives2(),))
     .range(rd::DIFF_MIN_MAGNITUDE.log2(), f32::MAX, "LOD")
     .degenerate(vec![
@@ -322,6 +329,7 @@ pub fn sample_grad_gradients() -> Record<impl Args + Perturb, impl Value> {
         let scale = Interval::exact(scale.max(0.0));
         enclosure::derivatives2(interval2(g.dx) * scale, interval2(g.dy) * scale)
     })
+    .reference(reference::sample_grad_gradients())
     .fuzz(|d| (d.derivatives2(), d.scalar()))
     .degenerate(vec![
         value(

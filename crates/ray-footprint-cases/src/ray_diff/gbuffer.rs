@@ -3,7 +3,7 @@
 use super::enclosure;
 use super::rows::sample_at;
 use super::strategy::gbuffer_sample;
-use super::MODULE;
+use super::{reference, MODULE};
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -35,6 +35,7 @@ pub fn gbuffer_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(enclosure::gbuffer_ray_diff)
+    .reference(reference::gbuffer_ray_diff())
     .fuzz(|d| {
         (
             d.gbuffer_sample(),
@@ -124,6 +125,7 @@ pub fn tangent_plane_offsets() -> Record<impl Args + Perturb, impl Value> {
         let dy = enclosure::tangent_plane_offset(r, rdy, t, n);
         enclosure::derivatives3(dx, dy)
     })
+    .reference(reference::tangent_plane_offsets())
     .fuzz(|d| (d.unit(), d.unit(), d.unit(), d.distance(), d.unit()))
     .degenerate(vec![
         value("t = 0", "0", (-z, x, -z, 0.0, z), vec![0.0; 6]),

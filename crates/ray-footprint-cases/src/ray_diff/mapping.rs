@@ -2,7 +2,7 @@
 
 use super::enclosure;
 use super::strategy::derivatives3;
-use super::MODULE;
+use super::{reference, MODULE};
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -28,6 +28,7 @@ pub fn planar_mapping_gradients() -> Record<impl Args + Perturb, impl Value> {
         let project = |v: Vec3| interval2(Vec2::new(v.x, v.z)) * interval2(scale);
         enclosure::derivatives2(project(dp.dx), project(dp.dy))
     })
+    .reference(reference::planar_mapping_gradients())
     .fuzz(|d| (d.derivatives3(), d.vec2()))
     .degenerate(vec![
         value(
@@ -66,6 +67,10 @@ pub fn triplanar_weights() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(|&(normal, sharpness)| enclosure::triplanar_weights(normal, sharpness))
+    .found(
+        "inf / inf for normals longer than about 2 at high sharpness (now divided by the largest component first); found by the special-value suite",
+    )
+    .reference(reference::triplanar_weights())
     .fuzz(|d| (d.unit(), d.scalar()))
     .range(0.0, 1.0, "weight")
     .degenerate(vec![
@@ -113,6 +118,7 @@ pub fn triplanar_gradients() -> Record<impl Args + Perturb, impl Value> {
             .collect();
         all
     })
+    .reference(reference::triplanar_gradients())
     .fuzz(|d| (d.derivatives3(), d.scalar()))
     .degenerate(vec![
         value(

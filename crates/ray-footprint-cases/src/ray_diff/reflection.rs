@@ -3,7 +3,7 @@
 use super::enclosure;
 use super::rows::direction_dx;
 use super::strategy::{derivatives2, derivatives3, ray_diff};
-use super::MODULE;
+use super::{reference, MODULE};
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -34,6 +34,7 @@ pub fn normal_derivatives() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(enclosure::normal_derivatives)
+    .reference(reference::normal_derivatives())
     .fuzz(|d| (d.unit(), d.unit(), d.unit(), d.vec2(), d.derivatives2()))
     .degenerate(vec![
         value(
@@ -74,6 +75,8 @@ pub fn reflect_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(enclosure::reflect_ray_diff)
+    .reference(reference::reflect_ray_diff())
+    .reference(reference::reflect_ray_diff_mirror_camera())
     .fuzz(|d| (d.ray_diff(), d.unit(), d.unit(), d.derivatives3()))
     .degenerate(vec![
         value(
@@ -119,6 +122,10 @@ pub fn refract_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(enclosure::refract_ray_diff)
+    .found(
+        "the sign of the amplified normal term at exactly the critical angle: dot(T, N) = -0 was clamped to +DIFF_MIN_COS where every angle just short of it gives -DIFF_MIN_COS; found by `refraction_keeps_its_sign_at_the_critical_angle`",
+    )
+    .reference(reference::refract_ray_diff())
     .fuzz(|d| (d.ray_diff(), d.unit(), d.unit(), d.derivatives3(), d.scalar()))
     .degenerate(vec![
         value(

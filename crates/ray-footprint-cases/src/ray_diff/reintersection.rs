@@ -1,15 +1,14 @@
 //! Records of `ray_diff`: Re-intersection of the neighbour rays (RTG Eq. 13).
 
-use super::enclosure::{self, well_conditioned};
+use super::enclosure;
 use super::rows::{delta_rows, offset_rows, plane_intersection_rows, OFFSET};
-use super::strategy::{any_direction, derivatives3, well_conditioned_offset_args, F32_ORIGIN_EXPONENT};
-use super::{OffsetArgs, MODULE};
+use super::strategy::{derivatives3, plane_intersections, well_conditioned_offset_args, F32_ORIGIN_EXPONENT};
+use super::{reference, OffsetArgs, MODULE};
 use crate::degenerate::value;
 use crate::record::Record;
 use crate::special::Perturb;
-use crate::strategy::{triangle, uv_triangle, vec3, with_corners};
+use crate::strategy::{uv_triangle, with_corners};
 use glam::{Vec2, Vec3};
-use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, DIFF_MAX_VALUE};
 use shader_proptest::interval::{interval2, interval3, Interval};
 use shader_proptest::{Args, Value};
@@ -20,19 +19,7 @@ pub fn intersect_triangle_plane() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "intersect_triangle_plane",
         |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
-        || {
-            (vec3(), any_direction(), triangle())
-                .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
-                .prop_filter("an ill-conditioned determinant", |&(_, d, p0, p1, p2)| {
-                    well_conditioned(enclosure::determinant(
-                        interval3(d),
-                        interval3(p0),
-                        interval3(p1),
-                        interval3(p2),
-                    ))
-                })
-                .boxed()
-        },
+        plane_intersections,
     )
     .enclosure(|&(o, d, p0, p1, p2)| {
         enclosure::intersect_triangle_plane(
@@ -44,6 +31,7 @@ pub fn intersect_triangle_plane() -> Record<impl Args + Perturb, impl Value> {
         )
         .components()
     })
+    .reference(reference::intersect_triangle_plane())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, b, promises| {
         for x in [b.y, b.z] {
@@ -75,6 +63,7 @@ pub fn barycentric_offsets() -> Record<OffsetArgs, Derivatives3> {
         let (dx, dy) = enclosure::barycentric_offsets(a);
         enclosure::derivatives3(dx, dy)
     })
+    .reference(reference::barycentric_offsets())
     .fuzz(|d| d.reintersection())
     .degenerate(offset_rows(
         "(DIFF_MAX_VALUE, -DIFF_MAX_VALUE, 0) - hit in f32 (clamped u, v), (1, 0, 0) - hit",
@@ -95,6 +84,7 @@ pub fn barycentric_deltas() -> Record<OffsetArgs, Vec3> {
         let (dx, dy) = enclosure::barycentric_offsets(a);
         (dx.abs() + dy.abs()).components()
     })
+    .reference(reference::barycentric_deltas())
     .fuzz(|d| d.reintersection())
     .range(0.0, f32::MAX, "delta")
     .degenerate(delta_rows(
@@ -120,6 +110,7 @@ pub fn uv_gradients_from_offsets() -> Record<(Derivatives3, Vec2, Vec2, Vec2), D
         };
         enclosure::derivatives2(sum(o.dx), sum(o.dy))
     })
+    .reference(reference::uv_gradients_from_offsets())
     .fuzz(|d| (d.derivatives3(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(

@@ -2,7 +2,7 @@
 //! hits, G-buffer samples and the re-intersection inputs, each drawn where the function is
 //! well-conditioned (ill-conditioned inputs are the edge-case suite's).
 
-use super::enclosure::offsets_well_conditioned;
+use super::enclosure::{determinant, offsets_well_conditioned, well_conditioned};
 use super::{Camera, Matrices, OffsetArgs};
 use crate::strategy::{
     distance, fov_y, image_size, normal_and_direction, perspective_proj_inv, scalar, small_vec3, triangle,
@@ -11,6 +11,7 @@ use crate::strategy::{
 use glam::{Mat4, Quat, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, GBufferSample, RayDiff};
+use shader_proptest::interval::interval3;
 
 /// A pixel inside an image (or, sometimes, outside it) and the image size (from [`image_size`]).
 fn pixel_and_size() -> BoxedStrategy<(Vec2, Vec2)> {
@@ -118,6 +119,22 @@ fn world_to_object(max_exponent: f32) -> BoxedStrategy<Mat4> {
 fn world_origin(max_exponent: f32) -> BoxedStrategy<Vec3> {
     (small_vec3(), -12.0f32..max_exponent - 1.0)
         .prop_map(|(v, e)| v * 10f32.powf(e))
+        .boxed()
+}
+
+/// The arguments of `intersect_triangle_plane`: an origin and a direction (unit or not) from the
+/// whole domain, and a triangle, whose determinant is well-conditioned.
+pub(super) fn plane_intersections() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec3, Vec3)> {
+    (vec3(), any_direction(), triangle())
+        .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
+        .prop_filter("an ill-conditioned determinant", |&(_, d, p0, p1, p2)| {
+            well_conditioned(determinant(
+                interval3(d),
+                interval3(p0),
+                interval3(p1),
+                interval3(p2),
+            ))
+        })
         .boxed()
 }
 

@@ -3,7 +3,7 @@
 use super::enclosure;
 use super::rows::{direction_dx, zero_diff_dx};
 use super::strategy::ray_diff;
-use super::MODULE;
+use super::{reference, MODULE};
 use crate::degenerate::{parts, value};
 use crate::record::Record;
 use crate::special::Perturb;
@@ -29,6 +29,7 @@ pub fn transfer() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .enclosure(enclosure::transfer)
+    .reference(reference::transfer())
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.unit()))
     .degenerate(vec![
         value(
