@@ -138,20 +138,34 @@ fn wgsl_blocks_validate_after_every_module() {
     }
 }
 
-#[test]
-fn glsl_blocks_compile_with_glslang() {
-    for (index, block) in blocks_in("glsl").iter().enumerate() {
+/// Compiles every block in `language` with glslangValidator: `front_end` and the block's stage
+/// (`comp` unless its info string names another), the include directory `include`.
+fn compile_with_glslang(language: &str, front_end: &[&str], include: &str, forbidden: &str) {
+    for (index, block) in blocks_in(language).iter().enumerate() {
         let stage = block.stage.as_deref().unwrap_or("comp");
-        let input = scratch_file(&format!("block{index}.{stage}"), &block.text);
+        let input = scratch_file(&format!("block{index}.{stage}.{language}"), &block.text);
         let mut command = Command::new("glslangValidator");
         command
-            .args(["-V", "--target-env", "vulkan1.2", "-S", stage])
-            .arg(format!("-I{GLSL_INCLUDE_DIR}"))
+            .args(front_end)
+            .args(["-S", stage])
+            .arg(format!("-I{include}"))
             .arg("-o")
             .arg(input.with_extension("spv"))
             .arg(&input);
-        assert_compiles(block, &mut command, "");
+        assert_compiles(block, &mut command, forbidden);
     }
+}
+
+#[test]
+fn glsl_blocks_compile_with_glslang() {
+    compile_with_glslang("glsl", &["-V", "--target-env", "vulkan1.2"], GLSL_INCLUDE_DIR, "");
+}
+
+#[test]
+fn hlsl_blocks_compile_with_glslang() {
+    // glslang reports some HLSL it cannot translate ("Missing functionality") and succeeds.
+    let front_end = ["-D", "-V", "--target-env", "vulkan1.1", "-e", "main"];
+    compile_with_glslang("hlsl", &front_end, HLSL_INCLUDE_DIR, "Missing functionality");
 }
 
 #[test]
@@ -164,23 +178,6 @@ fn slang_blocks_compile_with_slangc() {
             .args(["-target", "spirv", "-O0", "-I", SLANG_INCLUDE_DIR, "-o"])
             .arg(input.with_extension("spv"));
         assert_compiles(block, &mut command, "");
-    }
-}
-
-#[test]
-fn hlsl_blocks_compile_with_glslang() {
-    for (index, block) in blocks_in("hlsl").iter().enumerate() {
-        let stage = block.stage.as_deref().unwrap_or("comp");
-        let input = scratch_file(&format!("block{index}.hlsl"), &block.text);
-        let mut command = Command::new("glslangValidator");
-        command
-            .args(["-D", "-V", "--target-env", "vulkan1.1", "-S", stage, "-e", "main"])
-            .arg(format!("-I{HLSL_INCLUDE_DIR}"))
-            .arg("-o")
-            .arg(input.with_extension("spv"))
-            .arg(&input);
-        // glslang reports some HLSL it cannot translate ("Missing functionality") and succeeds.
-        assert_compiles(block, &mut command, "Missing functionality");
     }
 }
 
