@@ -25,6 +25,15 @@ pub mod proven {}
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
+/// The README's Rust examples, compiled and run as doc tests; they use every feature.
+#[cfg(all(
+    doctest,
+    feature = "validate",
+    feature = "naga_oil",
+    feature = "shader-proptest"
+))]
+#[doc = include_str!("../README.md")]
+mod readme_examples {}
 pub mod shaders;
 #[cfg(feature = "shader-proptest")]
 mod values;

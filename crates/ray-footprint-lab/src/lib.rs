@@ -10,5 +10,9 @@ pub mod chains;
 pub mod cli;
 pub mod figure;
 pub mod quality;
+/// The README's Rust examples, if any, compiled and run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+mod readme_examples {}
 pub mod rt;
 pub mod timing;

@@ -1,6 +1,6 @@
 //! Bad command-line options of the examples (`verify`, `gallery`, `quality`): each must stop the
 //! program before it opens a device, with exit status 2 and a first line on stderr that names the
-//! option and the value received. The table of what was tried is rendered into the README's "Bad
+//! option and the value received. The table of what was tried is rendered into the lab README's "Bad
 //! input" section; regenerate it with
 //! `RAY_FOOTPRINT_BLESS=1 cargo test --release -p ray-footprint-lab --test options`.
 //!
@@ -126,7 +126,7 @@ fn bad_options_are_refused_by_name() {
         rows.len()
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../README.md");
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("README.md");
     let block = format!("\n{}", render(&rows));
     assert_generated_block(
         &path,
