@@ -158,8 +158,20 @@ pub fn compile_glsl(
     target: Target,
     include_dirs: &[&Path],
 ) -> Result<Vec<u32>, CompileError> {
+    glslang(source, stage, target, include_dirs, &[])
+}
+
+/// [`compile_glsl`] with more of glslang's options, such as `--keep-uncalled` (functions no entry
+/// point calls stay in the SPIR-V, as a signature probe needs them).
+pub(crate) fn glslang(
+    source: &str,
+    stage: Stage,
+    target: Target,
+    include_dirs: &[&Path],
+    options: &[&str],
+) -> Result<Vec<u32>, CompileError> {
     let mut command = Command::new("glslangValidator");
-    command.args(["--target-env", target.glslang_env()]);
+    command.args(["--target-env", target.glslang_env()]).args(options);
     for dir in include_dirs {
         command.arg(format!("-I{}", dir.display()));
     }
