@@ -2,7 +2,7 @@
 # Runs every cargo-fuzz target, starting from its committed seed corpus (fuzz/corpus/<target>/; the
 # inputs the fuzzer finds go to a scratch directory). Prints one line per target with the executions,
 # the time, the rate and the crashes found. A crashing input is copied into fuzz/corpus/<target>/,
-# where tests/fuzz_corpus.rs replays it on stable Rust: commit it with the fix. Exits non-zero when
+# where crates/ray-footprint-cases/tests/fuzz_corpus.rs replays it on stable Rust: commit it with the fix. Exits non-zero when
 # any target crashes. Needs a nightly toolchain and cargo-fuzz.
 #
 # Usage:

@@ -4,36 +4,49 @@
 #
 # 1. Here, on the build machine (Debian 12, scripts/setup.sh done), from the repository root:
 #
-#        scripts/nvidia-run.sh pack
+#        [RAY_FOOTPRINT_PEERS=DIR] scripts/nvidia-run.sh pack
 #
-#    builds the release binaries and puts into .nvidia/ (ignored by git, about 65 MiB):
-#      bin/      verify, gallery, quality, gpu-tests (tests/gpu), mode_costs, verification_speed,
-#                stripped
+#    builds the release binaries and puts into .nvidia/ (ignored by git):
+#      bin/      verify, gallery, quality, cost_quality, gpu-tests (tests/gpu), mode_costs,
+#                function_costs, verification_speed, stripped
 #      debs/     the Vulkan loader and the GL/X libraries the NVIDIA driver's ICD loads
 #                (libvulkan1, libglvnd0, libegl1, libgl1, libglx0, libgles2, libx11-6 and what it
 #                needs), vulkan-validationlayers, glslang-tools, spirv-tools (amd64)
 #      slang/    slangc and its libraries, copied from the slangc on the PATH (scripts/setup.sh
 #                installs it), for the Slang checks and the Slang closest hit
+#      peers/    with RAY_FOOTPRINT_PEERS, the peers' files function_costs times beside the
+#                library's functions, copied from under DIR (a Falcor checkout, the
+#                vk_raytracing_tutorial_KHR, nvpro_core2): TexLODHelpers.slang, wireframe.h.slang or
+#                wireframe_helpers.h.slang, rtraydifferentials.slang; never part of the repository
 #      build-root  the directory the binaries were built in (they read shaders from there)
 #
 # 2. There, from a copy of the repository at the same commit with .nvidia/ beside the sources
 #    (the only path to carry), as root:
 #
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
+#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh costs OUT_DIR
 #
-#    unpacks the Vulkan loader and its GL/X libraries into / where the system has no loader, and
-#    the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under /), puts
-#    .nvidia/slang on the PATH; links the build
-#    directory to the repository copy if the paths differ; then runs, with the validation layer on
-#    (any message fails the run) on the device SHADER_PROPTEST_DEVICE names (lavapipe without it):
+#    Both unpack the Vulkan loader and its GL/X libraries into / where the system has no loader,
+#    and the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under
+#    /), put .nvidia/slang on the PATH, link the build directory to the repository copy if the
+#    paths differ, and run with the validation layer on (any message fails the run) on the
+#    device SHADER_PROPTEST_DEVICE names (lavapipe without it). `run` writes seven files:
 #      verify (every check, 100,000 cases per function and language)   -> verify.log
 #      the GPU tests (agreement, abi, degenerate, rt); the WGSL ray-query test
 #        apart: "not run" with the reason where the device has no ray queries -> gpu-tests.log
 #      the gallery at its default size                                   -> gallery.log, ground_modes.png
-#      bench mode_costs (1920 x 1080 off lavapipe)                       -> mode_costs.log
 #      the quality lab at its default settings                           -> quality.log
 #      bench verification_speed                                          -> verification_speed.log
-#    and writes summary.txt (also printed last): eight files in OUT_DIR.
+#      summary.txt (also printed last)
+#    `costs` writes seven:
+#      bench mode_costs (3840 x 2160, 2 x 2 samples, every lab scene and mode, 8 rounds)
+#                                                                        -> mode_costs.log, mode_costs.csv
+#      bench function_costs (every function, 3 languages and the peers' originals from
+#        .nvidia/peers where packed)                                     -> function_costs.log
+#      the quality lab at its default settings, then cost_quality: the quality gained over mip 0
+#        against the time added                                          -> quality.log,
+#                                                                           cost_quality.log, cost_quality.png
+#      costs-summary.txt (also printed last)
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -70,8 +83,8 @@ pack() {
     rm -rf "$PACK"
     mkdir -p "$PACK/bin" "$PACK/debs"
     local target name
-    for target in example:verify example:gallery example:quality test:gpu bench:mode_costs \
-        bench:verification_speed; do
+    for target in example:verify example:gallery example:quality example:cost_quality test:gpu \
+        bench:mode_costs bench:function_costs bench:verification_speed; do
         name=${target#*:}
         [ "$name" = gpu ] && name=gpu-tests
         local path
@@ -91,8 +104,20 @@ pack() {
     say "copying $(dirname "$slangc")"
     cp -r "$(dirname "$slangc")" "$PACK/slang"
     pwd >"$PACK/build-root"
+    pack_peers
     du -sh "$PACK"
     say "carry .nvidia/ with the repository; there run: SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR"
+}
+
+# The peers' files under $RAY_FOOTPRINT_PEERS, into .nvidia/peers (nothing when it is unset).
+pack_peers() {
+    [ -n "${RAY_FOOTPRINT_PEERS:-}" ] || { say "no RAY_FOOTPRINT_PEERS: function_costs will say the peers were not run"; return 0; }
+    mkdir -p "$PACK/peers"
+    local name path
+    for name in TexLODHelpers.slang wireframe.h.slang wireframe_helpers.h.slang rtraydifferentials.slang; do
+        path=$(find "$RAY_FOOTPRINT_PEERS" -name "$name" -type f -print -quit)
+        [ -n "$path" ] && cp "$path" "$PACK/peers/" && say "peer: $path"
+    done
 }
 
 # The Vulkan loader (into / where the system has none), the layer and the tools (under /opt/gl).
@@ -124,6 +149,9 @@ setup_environment() {
         /etc/vulkan/icd.d/nvidia* >/dev/null 2>&1; then
         export VK_DRIVER_FILES="$nvidia_icd"
     fi
+    if [ -d "$PACK/peers" ]; then
+        export RAY_FOOTPRINT_PEERS="$PACK/peers"
+    fi
     # The binaries read the shaders from the directory they were built in.
     local built
     built=$(cat "$PACK/build-root" 2>/dev/null || echo "$ROOT")
@@ -145,15 +173,20 @@ step() {
     STEPS+=("$(printf '%-22s exit %3d  %4d s' "$name" "$status" $((SECONDS - started)))")
 }
 
+# Unpacks, sets the environment, and checks that the binaries are there.
+prepare() {
+    install_packages
+    setup_environment
+    [ -d "$PACK/bin" ] || { say "no binaries in $PACK/bin: run 'scripts/nvidia-run.sh pack' on the build machine"; exit 2; }
+    cd "$ROOT"
+}
+
 run() {
     local out=${1:?usage: nvidia-run.sh run OUT_DIR}
     mkdir -p "$out"
     out=$(cd "$out" && pwd)
-    install_packages
-    setup_environment
+    prepare
     local bin="$PACK/bin"
-    [ -x "$bin/verify" ] || { say "no binaries in $bin: run 'scripts/nvidia-run.sh pack' on the build machine"; exit 2; }
-    cd "$ROOT"
     local wgsl_test=rt::wgsl_ray_query_agrees_with_the_mirror
     local gallery_dir
     gallery_dir=$(mktemp -d)
@@ -164,13 +197,29 @@ run() {
     step "wgsl ray-query test" "$out/wgsl.tmp" "$bin/gpu-tests" "$wgsl_test" --exact --nocapture
     step gallery "$out/gallery.log" "$bin/gallery" --out "$gallery_dir"
     cp "$gallery_dir/ground_modes.png" "$out/" 2>/dev/null
-    step "mode costs" "$out/mode_costs.log" "$bin/mode_costs"
     step quality "$out/quality.log" "$bin/quality" --out "$gallery_dir/quality"
     step "verification speed" "$out/verification_speed.log" "$bin/verification_speed"
     rm -rf "$gallery_dir"
     { printf '\n--- %s ---\n' "$wgsl_test"; cat "$out/wgsl.tmp"; } >>"$out/gpu-tests.log"
     rm -f "$out/wgsl.tmp"
     summary "$out" | tee "$out/summary.txt"
+}
+
+costs() {
+    local out=${1:?usage: nvidia-run.sh costs OUT_DIR}
+    mkdir -p "$out"
+    out=$(cd "$out" && pwd)
+    prepare
+    local bin="$PACK/bin"
+    local quality_dir
+    quality_dir=$(mktemp -d)
+    step "mode costs" "$out/mode_costs.log" "$bin/mode_costs" --csv "$out/mode_costs.csv"
+    step "function costs" "$out/function_costs.log" "$bin/function_costs"
+    step quality "$out/quality.log" "$bin/quality" --out "$quality_dir"
+    step "cost against quality" "$out/cost_quality.log" "$bin/cost_quality" --quality "$quality_dir/table.csv" \
+        --costs "$out/mode_costs.csv" --out "$out/cost_quality.png"
+    rm -rf "$quality_dir"
+    costs_summary "$out" | tee "$out/costs-summary.txt"
 }
 
 # The lines that say how each step went.
@@ -190,20 +239,36 @@ summary() {
         echo "wgsl ray-query test: FAILED (see gpu-tests.log)"
     fi
     echo "gallery: $(grep -m1 '^image size' "$out/gallery.log"); $(grep -m1 '^files written' "$out/gallery.log")"
-    echo "mode costs:"
-    sed -n '/^| mode/,$p' "$out/mode_costs.log"
-    grep -m1 '^not run' "$out/mode_costs.log"
     echo "quality lab: $(grep -c '' "$out/quality.log") lines (quality.log)"
     echo "verification speed:"
     sed -n '/^| threads/,$p' "$out/verification_speed.log"
     grep -h 'VUID\|Validation\|validation layer' "$out"/*.log | head -n 5
+    true
+}
+
+# The lines that say how each cost step went, and the tables.
+costs_summary() {
+    local out=$1
+    echo "device and driver: $(grep -m1 '^device:' "$out/mode_costs.log")"
+    printf '%s\n' "${STEPS[@]}"
+    grep -h '^GPU clocks' "$out/mode_costs.log" "$out/function_costs.log"
+    grep -h -A2 '^goal' "$out/mode_costs.log"
+    grep -h '^not run\|^error' "$out"/*.log | head -n 5
+    echo "function costs against the peers:"
+    grep '^| .*: \(met\|MISSED\|not separable\)' "$out/function_costs.log"
+    echo "quality gained against time added:"
+    grep '^|' "$out/cost_quality.log"
+    grep -h 'VUID\|Validation\|validation layer' "$out"/*.log | head -n 5
+    # A grep that finds nothing is no failure of the run.
+    true
 }
 
 case "${1:-}" in
     pack) pack ;;
     run) shift && run "$@" ;;
+    costs) shift && costs "$@" ;;
     *)
-        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR" >&2
+        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR" >&2
         exit 2
         ;;
 esac

@@ -16,14 +16,11 @@ pub mod bad_input {}
 ///
 #[doc = include_str!("degenerate.md")]
 pub mod degenerate {}
-#[doc(hidden)]
-pub mod fuzzing;
 #[cfg(feature = "naga_oil")]
 pub mod naga_oil;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
-pub mod registry;
 pub mod shaders;
 #[cfg(feature = "shader-proptest")]
 mod values;

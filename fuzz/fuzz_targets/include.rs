@@ -1,6 +1,6 @@
-//! Fuzz target `include`: see `ray_footprint::fuzzing` for the properties it checks.
+//! Fuzz target `include`: see `ray_footprint_cases::fuzzing` for the properties it checks.
 #![no_main]
 
-use ray_footprint::fuzzing;
+use ray_footprint_cases::fuzzing;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| fuzzing::fuzz_one(fuzzing::include::include, data));

@@ -1,19 +1,43 @@
-//! What each render mode costs: the gallery's ground view traced by each mode's colour-only
-//! pipeline (no per-pixel records; each mode computes only what it needs), timed with GPU
-//! timestamps around the trace. Prints, per mode, the median over the timed frames (after
-//! untimed warm-up frames) in milliseconds, its ratio to mip 0, the payload's size in bytes and
-//! the closest-hit shader's SPIR-V after `spirv-opt -O` (instructions inside functions,
-//! conditional branches + switches, extended calls); then the goals beside the numbers.
+//! What each render mode costs, timed so that the numbers hold when measured again
+//! ([`ray_footprint_lab::timing`]).
 //!
-//! `cargo bench -p ray-footprint-lab --bench mode_costs [-- --width N --height N --frames N --warm-up N]`
+//! Workloads: the quality lab's scenes ([`LabScene::all`]: the ground plane at grazing angles and
+//! under a wide view, the mirror paraboloid in its room, the mirror sphere, the glass sphere that
+//! refracts rays through up to three bounces, the rough mirror reflecting about normals drawn from
+//! its GGX lobe, the torus under the wireframe), each with its texture and view, traced by every
+//! mode's colour-only pipeline (no per-pixel records; each mode computes only what it needs) at
+//! 3840 x 2160 with N x N sub-pixel samples per pixel (default 2 x 2: a 4-spp path), each sample
+//! one trace of the whole image.
 //!
-//! The default size is 1920 x 1080, or the gallery's 480 x 270 on lavapipe (a CPU
-//! implementation); the default is 50 timed frames after 5 warm-up frames per mode.
+//! Method, per scene: warm-up rounds until two successive round medians agree within 2%; then
+//! `--rounds` rounds (at least 8), each timing `--frames` frames of every mode, the modes in
+//! [`Mode::ALL`] order in even rounds and in reverse in odd ones, every frame of a round recorded
+//! into one command buffer and submitted at once (one timestamp pair per frame, a barrier between
+//! frames, no CPU wait); per mode the median of its round medians and their spread (smallest to
+//! largest), its ratio to mip 0, the time it adds to mip 0 with the spread of that difference, and
+//! a verdict only where the spreads do not overlap ("not separable at this load" otherwise); then
+//! the payload's size and the closest-hit shader's SPIR-V after `spirv-opt -O`. The goals (the
+//! ray cone adds at most 5% to mip 0's frame; the ray differential adds at most twice the cone's
+//! added time) are met or MISSED only where the whole spread of the added time lies on one side
+//! of the limit. The GPU's clocks
+//! (nvidia-smi) are printed at the start and the end. On lavapipe, which runs on the CPU, the
+//! default is a smoke run (160 x 90, one sample, 2 frames a round, at most 3 warm-up rounds) and
+//! no verdict is given.
+//!
+//! `--csv FILE` writes one row per scene and mode, which `examples/cost_quality.rs` draws against
+//! the quality lab's table.
+//!
+//! `cargo bench -p ray-footprint-lab --bench mode_costs [-- --width N --height N
+//! --samples-per-axis N --rounds N --frames N --scene NAME --csv FILE]`
 
 use ray_footprint::wireframe::WireframeSettings;
-use ray_footprint_lab::cli::options_or_exit;
-use ray_footprint_lab::rt::{open_device, Camera, Error, Mode, Renderer, Scene};
+use ray_footprint_lab::cli::{options_or_exit, positive_count};
+use ray_footprint_lab::quality::{LabScene, Measure};
+use ray_footprint_lab::rt::abi::RtPushConstants;
+use ray_footprint_lab::rt::{open_device, ColourPipeline, Error, Mode, Renderer};
+use ray_footprint_lab::timing::{self, gpu_clocks, round_order, verdict, warm_up, Spread, Verdict};
 use shader_proptest::spirv::{self, Statistics};
+use std::fmt::Write as _;
 use std::process::ExitCode;
 use std::time::Duration;
 
@@ -21,37 +45,81 @@ use std::time::Duration;
 const CONE_GOAL: f64 = 0.05;
 /// The goal for ray-differential LOD: at most this many times the ray cone's added time.
 const DIFF_GOAL: f64 = 2.0;
-/// Fewest timed frames a median is taken over.
-const MIN_FRAMES: usize = 50;
+/// Fewest timed rounds.
+const MIN_ROUNDS: usize = 8;
 
+/// What to time, from the command line; `None` takes the device's default.
 struct Options {
     size: Option<(u32, u32)>,
-    frames: usize,
-    warm_up: usize,
+    samples_per_axis: Option<u32>,
+    frames: Option<usize>,
+    rounds: usize,
+    scenes: Vec<LabScene>,
+    csv: Option<String>,
 }
+
+/// The defaults on a GPU and on lavapipe (a CPU implementation: a smoke run), and the most
+/// warm-up rounds before the timing goes on with the device unsettled (said in the output).
+struct Defaults {
+    size: (u32, u32),
+    samples_per_axis: u32,
+    frames: usize,
+    max_warm_up_rounds: usize,
+}
+
+const GPU_DEFAULTS: Defaults = Defaults {
+    size: (3840, 2160),
+    samples_per_axis: 2,
+    frames: 10,
+    max_warm_up_rounds: 20,
+};
+
+const LAVAPIPE_DEFAULTS: Defaults = Defaults {
+    size: (160, 90),
+    samples_per_axis: 1,
+    frames: 2,
+    max_warm_up_rounds: 3,
+};
+
+const USAGE: &str = "usage: mode_costs [--width N --height N] [--samples-per-axis N] [--rounds N (>= 8)] \
+                     [--frames N] [--scene NAME] [--csv FILE]";
 
 fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut options = Options {
         size: None,
-        frames: MIN_FRAMES,
-        warm_up: 5,
+        samples_per_axis: None,
+        frames: None,
+        rounds: MIN_ROUNDS,
+        scenes: LabScene::all(),
+        csv: None,
     };
     let (mut width, mut height) = (None, None);
     while let Some(flag) = args.next() {
-        if flag == "--bench" {
-            continue;
+        match flag.as_str() {
+            // cargo bench passes --bench to every benchmark.
+            "--bench" => continue,
+            "--help" | "-h" => return Err(String::new()),
+            _ => {}
         }
         let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
-        let number = value
-            .parse::<u32>()
-            .map_err(|_| format!("{flag} must be a non-negative integer, got '{value}'"))?;
+        let count = || positive_count(&flag, &value);
         match flag.as_str() {
-            "--width" if number > 0 => width = Some(number),
-            "--height" if number > 0 => height = Some(number),
-            "--frames" if number as usize >= MIN_FRAMES => options.frames = number as usize,
-            "--warm-up" => options.warm_up = number as usize,
-            "--width" | "--height" => return Err(format!("{flag} must be positive")),
-            "--frames" => return Err(format!("--frames must be at least {MIN_FRAMES}")),
+            "--width" => width = Some(count()? as u32),
+            "--height" => height = Some(count()? as u32),
+            "--samples-per-axis" => options.samples_per_axis = Some(count()? as u32),
+            "--frames" => options.frames = Some(count()?),
+            "--rounds" => match count()? {
+                rounds if rounds >= MIN_ROUNDS => options.rounds = rounds,
+                rounds => return Err(format!("--rounds must be at least {MIN_ROUNDS}, got {rounds}")),
+            },
+            "--scene" => {
+                options.scenes.retain(|scene| scene.name == value);
+                if options.scenes.is_empty() {
+                    let names: Vec<_> = LabScene::all().iter().map(|s| s.name).collect();
+                    return Err(format!("no scene '{value}'; the scenes: {}", names.join(", ")));
+                }
+            }
+            "--csv" => options.csv = Some(value),
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
@@ -63,25 +131,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
     Ok(options)
 }
 
-/// One mode's figures.
-struct Row {
-    mode: Mode,
-    median: Duration,
-    payload_bytes: u32,
-    closest_hit: Statistics,
-}
-
-fn median(mut times: Vec<Duration>) -> Duration {
-    times.sort();
-    let middle = times.len() / 2;
-    if times.len().is_multiple_of(2) {
-        (times[middle - 1] + times[middle]) / 2
-    } else {
-        times[middle]
-    }
-}
-
-/// Why a mode has no row.
+/// Why the bench stopped.
 enum Failure {
     /// The device cannot time it: the reason.
     NotRun(String),
@@ -98,39 +148,164 @@ impl From<Error> for Failure {
     }
 }
 
-fn measure(
-    renderer: &Renderer<'_>,
-    mode: Mode,
-    (width, height): (u32, u32),
-    options: &Options,
-) -> Result<Row, Failure> {
-    let pipeline = renderer.colour_pipeline(mode)?;
-    let camera = Camera::ground();
-    let push = renderer.push_constants(&camera, mode, 1.0, width, height);
-    let uniforms = camera.uniforms((width, height), WireframeSettings::default());
-    let times = pipeline.time(&push, &uniforms, options.warm_up, options.frames)?;
-    let optimized =
-        spirv::optimize(pipeline.closest_hit_spirv()).map_err(|e| Failure::Error(e.to_string()))?;
-    Ok(Row {
-        mode,
-        median: median(times),
-        payload_bytes: pipeline.payload_bytes(),
-        closest_hit: Statistics::of(&optimized).map_err(|e| Failure::Error(e.to_string()))?,
-    })
+/// What a run is: the image, the samples, the frames per round, and whether verdicts are given.
+struct Run {
+    size: (u32, u32),
+    samples_per_axis: u32,
+    frames: usize,
+    rounds: usize,
+    max_warm_up_rounds: usize,
+    verdicts: bool,
 }
 
-fn print_table(rows: &[Row]) {
-    let mip0 = rows[0].median.as_secs_f64();
-    println!("| mode | ms (median) | vs mip 0 | payload bytes | closest-hit instructions | branches | extended calls |");
-    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: |");
+/// One mode's figures in one scene.
+struct Row {
+    mode: Mode,
+    /// Round medians of the frame time, in ms.
+    time: Spread,
+    payload_bytes: u32,
+    closest_hit: Statistics,
+}
+
+/// The push constants of each sub-pixel sample of a frame of `scene`: an N x N grid of offsets,
+/// each at the centre of its cell, under the scene's ground-truth flags (the rough mirror
+/// reflecting about normals drawn from its GGX lobe).
+fn samples(renderer: &Renderer<'_>, scene: &LabScene, run: &Run) -> Vec<RtPushConstants> {
+    let n = run.samples_per_axis;
+    let cell = 1.0 / n as f32;
+    let (width, height) = run.size;
+    (0..n * n)
+        .map(|k| {
+            let mut push = renderer.push_constants(&scene.camera, Mode::Mip0, 1.0, width, height);
+            let (i, j) = (k % n, k / n);
+            push.pixel_offset = glam::Vec2::new((i as f32 + 0.5) * cell - 0.5, (j as f32 + 0.5) * cell - 0.5);
+            push.flags = scene.truth_flags;
+            push
+        })
+        .collect()
+}
+
+/// The wireframe settings of `scene`'s uniforms: its preset where it measures the wireframe.
+fn wireframe_settings(scene: &LabScene) -> WireframeSettings {
+    match scene.measure {
+        Measure::Wireframe { settings, .. } => settings,
+        Measure::Texture => WireframeSettings::default(),
+    }
+}
+
+/// One round: `frames` frames of every pipeline in the round's order; each pipeline's median frame
+/// time in ms, in [`Mode::ALL`] order.
+fn round(
+    renderer: &Renderer<'_>,
+    pipelines: &[ColourPipeline<'_, '_>],
+    samples: &[RtPushConstants],
+    uniforms: &ray_footprint_lab::rt::abi::RtUniforms,
+    (frames, round): (usize, usize),
+) -> Result<Vec<f64>, Error> {
+    let order = round_order(pipelines.len(), round);
+    let runs: Vec<_> = order.iter().map(|&index| (&pipelines[index], frames)).collect();
+    let times = renderer.time_colour_frames(&runs, samples, uniforms)?;
+    let mut medians = vec![0.0; pipelines.len()];
+    for (&index, run_times) in order.iter().zip(&times) {
+        let ms: Vec<f64> = run_times
+            .iter()
+            .map(|t: &Duration| t.as_secs_f64() * 1e3)
+            .collect();
+        medians[index] = timing::median(&ms);
+    }
+    Ok(medians)
+}
+
+/// Times every mode on `scene` and prints its table; returns its rows.
+fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Result<Vec<Row>, Failure> {
+    let renderer = Renderer::with_texture(gpu, scene.scene.clone(), scene.texture.clone())?;
+    let pipelines = Mode::ALL
+        .into_iter()
+        .map(|mode| renderer.colour_pipeline(mode))
+        .collect::<Result<Vec<_>, _>>()?;
+    let samples = samples(&renderer, scene, run);
+    let uniforms = scene.camera.uniforms(run.size, wireframe_settings(scene));
+    let warm = warm_up(run.max_warm_up_rounds, || {
+        round(&renderer, &pipelines, &samples, &uniforms, (run.frames, 0))
+            .map(|medians| timing::median(&medians))
+    })?;
+    let mut round_medians = vec![Vec::with_capacity(run.rounds); pipelines.len()];
+    for number in 0..run.rounds {
+        let medians = round(&renderer, &pipelines, &samples, &uniforms, (run.frames, number))?;
+        for (mode_medians, median) in round_medians.iter_mut().zip(medians) {
+            mode_medians.push(median);
+        }
+    }
+    let warm_medians: Vec<String> = warm.medians.iter().map(|m| format!("{m:.3}")).collect();
+    println!(
+        "\n### {}: {}\n\nwarm-up round medians (ms): {}{}\n",
+        scene.name,
+        scene.description,
+        warm_medians.join(", "),
+        if warm.settled {
+            String::new()
+        } else {
+            format!(" (NOT settled within 2% after {} rounds)", run.max_warm_up_rounds)
+        }
+    );
+    let rows = pipelines
+        .iter()
+        .zip(&round_medians)
+        .map(|(pipeline, medians)| {
+            let optimized =
+                spirv::optimize(pipeline.closest_hit_spirv()).map_err(|e| Failure::Error(e.to_string()))?;
+            Ok(Row {
+                mode: pipeline.mode(),
+                time: Spread::of(medians),
+                payload_bytes: pipeline.payload_bytes(),
+                closest_hit: Statistics::of(&optimized).map_err(|e| Failure::Error(e.to_string()))?,
+            })
+        })
+        .collect::<Result<Vec<_>, Failure>>()?;
+    print_table(&rows, run);
+    print_goals(&rows, run);
+    Ok(rows)
+}
+
+/// The verdict on `row` against mip 0 (`baseline`), in words.
+fn verdict_text(row: &Row, baseline: &Spread, run: &Run) -> String {
+    if !run.verdicts {
+        return String::from("no verdict (lavapipe)");
+    }
+    if row.mode == Mode::Mip0 {
+        return String::from("baseline");
+    }
+    let percent = 100.0 * (row.time.median / baseline.median - 1.0);
+    match verdict(&row.time, baseline) {
+        Verdict::Slower => format!("slower, {percent:+.1}%"),
+        Verdict::Faster => format!("faster, {percent:+.1}%"),
+        Verdict::NotSeparable => String::from("not separable at this load"),
+    }
+}
+
+fn print_table(rows: &[Row], run: &Run) {
+    let baseline = rows[0].time;
+    println!(
+        "| mode | ms (median of {} round medians) | round medians min-max | vs mip 0 | added ms (min-max) | verdict | payload bytes | closest-hit instructions | branches | extended calls |",
+        run.rounds
+    );
+    println!("| --- | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: |");
     for row in rows {
-        let ms = row.median.as_secs_f64();
+        let added = row.time.minus(&baseline);
+        let added = if row.mode == Mode::Mip0 {
+            String::from("-")
+        } else {
+            format!("{:+.3} ({:+.3} to {:+.3})", added.median, added.min, added.max)
+        };
         let hit = &row.closest_hit;
         println!(
-            "| {} | {:.3} | {:.3} | {} | {} | {}+{} | {} |",
+            "| {} | {:.3} | {:.3}-{:.3} | {:.3} | {added} | {} | {} | {} | {}+{} | {} |",
             row.mode,
-            ms * 1e3,
-            ms / mip0,
+            row.time.median,
+            row.time.min,
+            row.time.max,
+            row.time.median / baseline.median,
+            verdict_text(row, &baseline, run),
             row.payload_bytes,
             hit.instructions,
             hit.conditional_branches,
@@ -140,67 +315,143 @@ fn print_table(rows: &[Row]) {
     }
 }
 
-fn print_goals(rows: &[Row]) {
-    let time = |mode: Mode| {
-        rows.iter()
-            .find(|row| row.mode == mode)
-            .map(|row| row.median.as_secs_f64())
-    };
+fn print_goals(rows: &[Row], run: &Run) {
+    let time = |mode: Mode| rows.iter().find(|row| row.mode == mode).map(|row| row.time);
     let (Some(mip0), Some(cone), Some(diff)) = (time(Mode::Mip0), time(Mode::Cone), time(Mode::RayDiff))
     else {
         return;
     };
-    let verdict = |met: bool| if met { "met" } else { "MISSED" };
-    let cone_added = cone - mip0;
-    let diff_added = diff - mip0;
-    println!(
-        "\ngoal: ray-cone LOD adds <= {:.0}% to the mip-0 frame: adds {:+.1}% ({:+.3} ms): {}",
-        100.0 * CONE_GOAL,
-        100.0 * cone_added / mip0,
-        1e3 * cone_added,
-        verdict(cone_added <= CONE_GOAL * mip0)
+    if !run.verdicts {
+        println!("\ngoals: no verdict on lavapipe, which runs on the CPU");
+        return;
+    }
+    let cone_added = cone.minus(&mip0);
+    let cone_goal = format!(
+        "adds {:+.1}% ({:+.3} ms, {:+.3} to {:+.3}): {}",
+        100.0 * cone_added.median / mip0.median,
+        cone_added.median,
+        cone_added.min,
+        cone_added.max,
+        against_goal(&cone_added, CONE_GOAL * mip0.median, CONE_GOAL * mip0.median)
     );
-    let ratio = diff_added / cone_added;
-    let ratio_text = if cone_added > 0.0 {
-        format!("{ratio:.2}x")
+    println!(
+        "\ngoal: ray-cone LOD adds <= {:.0}% to the mip-0 frame: {cone_goal}",
+        100.0 * CONE_GOAL
+    );
+    let diff_added = diff.minus(&mip0);
+    let diff_goal = if cone_added.min <= 0.0 {
+        format!(
+            "no ratio: the cone adds no time beyond mip 0's spread ({:+.3} ms, {:+.3} to {:+.3}); the \
+             differential adds {:+.3} ms ({:+.3} to {:+.3})",
+            cone_added.median,
+            cone_added.min,
+            cone_added.max,
+            diff_added.median,
+            diff_added.min,
+            diff_added.max
+        )
     } else {
-        String::from("no ratio: the cone adds no time over mip 0")
+        let ratio = diff_added.median / cone_added.median;
+        let verdict = against_goal(
+            &diff_added,
+            DIFF_GOAL * cone_added.min,
+            DIFF_GOAL * cone_added.max,
+        );
+        format!(
+            "adds {:+.3} ms ({:+.3} to {:+.3}) against the cone's {:+.3} ms ({:+.3} to {:+.3}), {ratio:.2}x: {verdict}",
+            diff_added.median, diff_added.min, diff_added.max, cone_added.median, cone_added.min, cone_added.max
+        )
     };
-    println!(
-        "goal: ray-differential LOD costs <= {DIFF_GOAL}x the cone's added cost (RTG ch.20 reports 2-3x): \
-         adds {:+.3} ms, {ratio_text}: {}",
-        1e3 * diff_added,
-        verdict(diff_added <= DIFF_GOAL * cone_added.max(0.0))
+    println!("goal: ray-differential LOD costs <= {DIFF_GOAL}x the cone's added time (RTG ch.20 reports 2-3x): {diff_goal}");
+}
+
+/// Whether the time `added` keeps within a limit that is somewhere from `low` to `high` (a
+/// multiple of another measured spread, or one number twice): met where all of its spread is at
+/// most `low`, MISSED where all of it is above `high`, otherwise not separable at this load.
+fn against_goal(added: &Spread, low: f64, high: f64) -> &'static str {
+    if added.max <= low {
+        "met"
+    } else if added.min > high {
+        "MISSED"
+    } else {
+        "not separable at this load"
+    }
+}
+
+/// The CSV of every scene's rows: the columns `examples/cost_quality.rs` reads.
+fn csv(scenes: &[(&str, Vec<Row>)], run: &Run) -> String {
+    let mut text = String::from(
+        "scene,mode,median_ms,round_min_ms,round_max_ms,added_ms,added_min_ms,added_max_ms,verdict\n",
     );
+    for (scene, rows) in scenes {
+        let baseline = rows[0].time;
+        for row in rows {
+            let added = row.time.minus(&baseline);
+            let _ = writeln!(
+                text,
+                "{scene},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{}",
+                row.mode,
+                row.time.median,
+                row.time.min,
+                row.time.max,
+                added.median,
+                added.min,
+                added.max,
+                verdict_text(row, &baseline, run)
+            );
+        }
+    }
+    text
 }
 
 fn run(options: &Options) -> Result<(), Failure> {
     let gpu = open_device().map_err(|e| Failure::Error(e.to_string()))?;
-    let renderer = Renderer::new(&gpu, Scene::gallery())?;
     let lavapipe = gpu.driver().contains("llvmpipe");
-    let size = options
-        .size
-        .unwrap_or(if lavapipe { (480, 270) } else { (1920, 1080) });
+    let defaults = if lavapipe {
+        &LAVAPIPE_DEFAULTS
+    } else {
+        &GPU_DEFAULTS
+    };
+    let run = Run {
+        size: options.size.unwrap_or(defaults.size),
+        samples_per_axis: options.samples_per_axis.unwrap_or(defaults.samples_per_axis),
+        frames: options.frames.unwrap_or(defaults.frames),
+        rounds: options.rounds,
+        max_warm_up_rounds: defaults.max_warm_up_rounds,
+        verdicts: !lavapipe,
+    };
     println!("device: {} ({})", gpu.name(), gpu.driver());
-    println!(
-        "ground view, {} x {}; median of {} frames after {} warm-up frames per mode; GPU timestamps around the trace",
-        size.0, size.1, options.frames, options.warm_up
-    );
-    let mut rows = Vec::new();
-    for mode in Mode::ALL {
-        rows.push(measure(&renderer, mode, size, options)?);
+    println!("GPU clocks at the start: {}", gpu_clocks());
+    if lavapipe {
+        println!(
+            "lavapipe runs on the CPU: a smoke run of the method; its times say nothing of a GPU, and no verdict is given"
+        );
     }
-    println!();
-    print_table(&rows);
-    print_goals(&rows);
+    let n = run.samples_per_axis;
+    println!(
+        "{} x {}, {n} x {n} samples per pixel (one trace of the image each), {} frames per mode per round, {} rounds \
+         after warm-up rounds until two successive round medians agree within {:.0}%",
+        run.size.0,
+        run.size.1,
+        run.frames,
+        run.rounds,
+        100.0 * timing::SETTLED
+    );
+    let mut scenes = Vec::new();
+    for scene in &options.scenes {
+        scenes.push((scene.name, measure_scene(&gpu, scene, &run)?));
+    }
+    println!("\nGPU clocks at the end: {}", gpu_clocks());
+    if let Some(path) = &options.csv {
+        std::fs::write(path, csv(&scenes, &run))
+            .map_err(|e| Failure::Error(format!("writing {path}: {e}")))?;
+        println!("wrote {path}");
+    }
     Ok(())
 }
 
 fn main() -> ExitCode {
-    let options = options_or_exit(
-        parse_args(std::env::args().skip(1)),
-        "usage: mode_costs [--width N --height N] [--frames N] [--warm-up N]",
-    );
+    let options = options_or_exit(parse_args(std::env::args().skip(1)), USAGE);
     match run(&options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::NotRun(reason)) => {

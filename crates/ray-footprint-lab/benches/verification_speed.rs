@@ -10,7 +10,7 @@
 //! `--cases` sets the cases per check and language (100,000, as `verify`); `--threads` measures
 //! one thread count only.
 
-use ray_footprint_lab::checks::run_all_checks;
+use ray_footprint_cases::agreement::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
 use shader_proptest::{Gpu, Outcome, RunConfig};
 use std::process::ExitCode;

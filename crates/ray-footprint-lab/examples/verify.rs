@@ -9,7 +9,7 @@
 //!
 //! `cargo run --release -p ray-footprint-lab --example verify [-- --cases N] [--batch N]`
 
-use ray_footprint_lab::checks::run_all_checks;
+use ray_footprint_cases::agreement::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
 use shader_proptest::{Gpu, Outcome, RunConfig};
 use std::process::ExitCode;

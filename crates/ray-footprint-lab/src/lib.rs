@@ -1,15 +1,14 @@
-//! ray-footprint on a GPU: the agreement suite that checks every shader function of the crate
-//! against its Rust mirror with shader-proptest ([`checks`]), a Vulkan ray-tracing renderer
+//! ray-footprint on a GPU: a Vulkan ray-tracing renderer
 //! that uses the modules as a user's renderer would ([`rt`]), with its gallery, and the quality
 //! lab that measures each level-of-detail method against a supersampled ground truth
 //! ([`quality`]), with captioned figures ([`figure`]), and reflection chains that follow a ray
 //! cone and a ray differential along the same paths, on the CPU and in both shader languages
-//! ([`chains`]).
+//! ([`chains`]), and the GPU timing that the benches share ([`timing`]).
 #![deny(missing_docs)]
 
 pub mod chains;
-pub mod checks;
 pub mod cli;
 pub mod figure;
 pub mod quality;
 pub mod rt;
+pub mod timing;

@@ -19,7 +19,10 @@
 //! - `dot`, `cross` and matrix products (whose summation order is the implementation's): `2n - 1`
 //!   roundings of the sum of the term magnitudes for `n` terms;
 //! - every rounding may also flush a denormal: plus the smallest normal number;
-//! - an exact zero (the difference of equal inputs, a product with a zero) is computed exactly.
+//! - an exact zero (the difference of equal inputs, a product with a zero) is computed exactly;
+//! - an f32 result that may exceed `f32::MAX` may overflow to an infinity of either sign (a fused
+//!   multiply-add overflows where separate roundings do not, and the other way round), and so
+//!   may everything computed from it: the interval becomes unbounded ([`Interval::round`]).
 //!
 //! For f64 arithmetic the same budgets apply with f64 units ([`F64`]), and a final conversion to f32
 //! adds half an f32 ULP.
@@ -144,7 +147,8 @@ impl Interval {
     }
 
     /// Widens by `ulps` roundings of the largest magnitude, plus one flushed denormal; an exact
-    /// zero stays exact.
+    /// zero stays exact. In f32 arithmetic, an interval reaching beyond `f32::MAX` becomes
+    /// unbounded ([`Interval::within_range`]).
     pub fn round(self, ulps: f64) -> Interval {
         if self.is_exact_zero() {
             return self;
@@ -154,6 +158,23 @@ impl Interval {
             lo: self.lo - w,
             hi: self.hi + w,
             p: self.p,
+        }
+        .within_range()
+    }
+
+    /// The interval, or the unbounded interval where an f32 result in it may overflow: a value
+    /// beyond `f32::MAX` rounds to an infinity, and which of the device's operations overflow
+    /// depends on how it orders and fuses them (one of two cancelling products may overflow alone,
+    /// and `inf - inf` is NaN), so nothing computed from it is bounded.
+    pub fn within_range(self) -> Interval {
+        if self.p == F32 && self.magnitude() > f64::from(f32::MAX) {
+            Interval {
+                lo: f64::NEG_INFINITY,
+                hi: f64::INFINITY,
+                p: F32,
+            }
+        } else {
+            self
         }
     }
 
@@ -459,6 +480,15 @@ pub fn sum_of_products(terms: &[(Interval, Interval)]) -> Interval {
     let magnitude: f64 = exact.iter().map(|t| t.magnitude()).sum();
     let roundings = (2 * terms.len() - 1) as f64;
     let w = roundings * 0.5 * p.ulp * magnitude + roundings * p.floor;
+    // Any partial sum, in any order, is at most the sum of the term magnitudes.
+    let partial_sums = Interval {
+        lo: -magnitude,
+        hi: magnitude,
+        p,
+    };
+    if partial_sums.within_range() != partial_sums {
+        return partial_sums.within_range();
+    }
     Interval {
         lo: sum.lo - w,
         hi: sum.hi + w,
@@ -610,4 +640,35 @@ pub fn mat_vec(matrix: glam::Mat4, v: Interval3, w: Interval, p: Precision) -> I
             (entry(3), w),
         ])
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A product beyond `f32::MAX` may be an infinity on the device: unbounded, in f32 only.
+    #[test]
+    fn a_product_that_may_overflow_is_unbounded() {
+        let big = Interval::exact(1.0e20);
+        let product = big * big;
+        assert_eq!((product.lo, product.hi), (f64::NEG_INFINITY, f64::INFINITY));
+        let in_f64 = Interval::exact64(1.0e20) * Interval::exact64(1.0e20);
+        assert!(in_f64.magnitude() < 1.01e40);
+        let small = Interval::exact(1.0e18) * Interval::exact(1.0e18);
+        assert!(small.hi.is_finite());
+    }
+
+    /// Two cancelling products, each beyond `f32::MAX`: the exact sum is 0, but a device that
+    /// fuses one product into the sum overflows the other alone. Unbounded, and so is a quotient
+    /// of it, which the clamp then bounds by the clamp's range only.
+    #[test]
+    fn a_cancelling_sum_of_overflowing_products_is_unbounded() {
+        let huge = Interval::exact(1.0e20);
+        let sum = sum_of_products(&[(huge, huge), (-huge, huge)]);
+        assert_eq!((sum.lo, sum.hi), (f64::NEG_INFINITY, f64::INFINITY));
+        let clamped = sum.div_away(Interval::exact(1.0), 1.0e-30).clamp_c(-1.0, 1.0);
+        assert_eq!((clamped.lo, clamped.hi), (-1.0, 1.0));
+        let finite = sum_of_products(&[(Interval::exact(1.0e18), huge), (-huge, Interval::exact(1.0e18))]);
+        assert!(finite.hi.is_finite() && finite.contains_zero());
+    }
 }

@@ -87,21 +87,35 @@ fn shader_names(code: &str, names: &RustItems, in_link: bool) -> String {
 }
 
 /// A path is written from its first shared item on, with `.` between segments: `crate::wireframe::
-/// WireframeSettings::stipple` becomes `RfWireframeSettings.stipple`.
+/// WireframeSettings::stipple` becomes `RfWireframeSettings.stipple`, and an enum's variant its
+/// constant: `Mode::Cone` becomes `RT_MODE_CONE`.
 fn shader_name(word: &str, names: &RustItems, in_link: bool) -> String {
     let segments: Vec<&str> = word.split("::").collect();
-    let renamed = |segment: &str| match names.items.get(segment).map(|item| &item.kind) {
-        Some(Kind::Struct { .. }) => Some(format!("Rf{segment}")),
-        Some(Kind::Const { .. } | Kind::Preset { .. }) => Some(format!("RF_{segment}")),
-        _ if (in_link || segments.len() > 1) && names.functions.iter().any(|f| f == segment) => {
-            Some(format!("rf_{segment}"))
-        }
-        _ => None,
-    };
     for (index, segment) in segments.iter().enumerate() {
-        if let Some(first) = renamed(segment) {
-            let rest = segments[index + 1..].iter().map(|s| format!(".{s}"));
-            return std::iter::once(first).chain(rest).collect();
+        let rest = &segments[index + 1..];
+        let renamed = match names.items.get(*segment) {
+            Some(
+                item @ crate::rust_items::Item {
+                    kind: Kind::Enum { variants },
+                    ..
+                },
+            ) => {
+                match rest
+                    .first()
+                    .and_then(|next| variants.iter().find(|v| v.name == *next))
+                {
+                    Some(variant) => return variant.shader_name.clone(),
+                    None => Some(item.shader_name.clone()),
+                }
+            }
+            Some(item) if !matches!(item.kind, Kind::Unreadable(_)) => Some(item.shader_name.clone()),
+            _ if in_link || segments.len() > 1 => names.functions.get(*segment).cloned(),
+            _ => None,
+        };
+        if let Some(first) = renamed {
+            return std::iter::once(first)
+                .chain(rest.iter().map(|s| format!(".{s}")))
+                .collect();
         }
     }
     word.to_string()

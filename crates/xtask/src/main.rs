@@ -12,19 +12,23 @@ mod shader;
 
 use std::path::{Path, PathBuf};
 
-use rust_items::RustItems;
+use rust_items::{Naming, RustItems, LIBRARY, RENDERER};
 use shader::Language;
 
 /// The command that rewrites the generated blocks, named in their markers and in errors.
 pub const COMMAND: &str = "cargo xtask codegen";
 
-/// The Rust files that declare the shared items, relative to the repository root.
-const RUST_SOURCES: &[&str] = &[
-    "src/ray_cone.rs",
-    "src/ray_diff.rs",
-    "src/ray_diff_f64.rs",
-    "src/wireframe.rs",
-    "src/abi.rs",
+/// The Rust files that declare the shared items, relative to the repository root, and how the
+/// shaders name their items: the library's modules, then the lab's renderer.
+const RUST_SOURCES: &[(&str, Naming)] = &[
+    ("src/ray_cone.rs", LIBRARY),
+    ("src/ray_diff.rs", LIBRARY),
+    ("src/ray_diff_f64.rs", LIBRARY),
+    ("src/wireframe.rs", LIBRARY),
+    ("src/abi.rs", LIBRARY),
+    ("crates/ray-footprint-lab/src/rt/mode.rs", RENDERER),
+    ("crates/ray-footprint-lab/src/rt/scene.rs", RENDERER),
+    ("crates/ray-footprint-lab/src/rt/abi.rs", RENDERER),
 ];
 
 /// Each shader module's generated blocks in file order, each the Rust items it declares in order.
@@ -93,13 +97,54 @@ const SHADER_BLOCKS: &[(&str, &[&[&str]])] = &[
     ),
 ];
 
+/// The renderer's shader files with a generated block, each in its language.
+const RENDERER_SHADERS: [(&str, Language); 3] = [
+    (
+        "crates/ray-footprint-lab/src/rt/shaders/ray_query.wgsl",
+        Language::Wgsl,
+    ),
+    (
+        "crates/ray-footprint-lab/src/rt/shaders/rt_abi.glsl",
+        Language::Glsl,
+    ),
+    (
+        "crates/ray-footprint-lab/src/rt/shaders/rt_abi.slang",
+        Language::Slang,
+    ),
+];
+
+/// What the renderer's shaders share with Rust, in block order: the render modes, the materials,
+/// the flags, the layout of the vertex and mesh-table buffers, the shading constants, the structs.
+const RENDERER_BLOCK: &[&str] = &[
+    "Mode",
+    "MATERIAL_TEXTURED",
+    "MATERIAL_MIRROR",
+    "MATERIAL_GLASS",
+    "FLAG_GLOSSY_LOBE",
+    "VERTEX_FLOATS",
+    "MESH_TABLE_WORDS",
+    "MAX_DEPTH",
+    "MAX_DISTANCE",
+    "SURFACE_OFFSET",
+    "MIRROR_REFLECTANCE",
+    "LIGHT",
+    "RtPushConstants",
+    "RtDiffRecord",
+    "RtPixelRecord",
+    "RtUniforms",
+];
+
+/// The renderer's Rust file that lists its structs' layouts.
+const RENDERER_LAYOUTS: &str = "crates/ray-footprint-lab/src/rt/abi.rs";
+
 /// The repository root (this crate lives in `crates/xtask`).
 fn repository_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
 
 /// Every file with generated blocks (relative to the root) and its contents with the blocks
-/// regenerated: the shader modules' declarations, then the Rust lists of the shared structs.
+/// regenerated: the shader modules' declarations, the Rust lists of the shared structs, then the
+/// renderer's declarations and its list of layouts.
 fn generate(root: &Path) -> Result<Vec<(String, String)>, String> {
     let names = rust_items::read(root, RUST_SOURCES)?;
     let mut files = Vec::new();
@@ -118,6 +163,20 @@ fn generate(root: &Path) -> Result<Vec<(String, String)>, String> {
     files.push(("src/values.rs".to_string(), vec![rust_lists::values(&structs)]));
     files.push(("src/abi.rs".to_string(), vec![rust_lists::layouts(&structs)]));
     files.push(("build.rs".to_string(), vec![rust_lists::build_table(&structs)]));
+    for (file, language) in RENDERER_SHADERS {
+        files.push((
+            file.to_string(),
+            vec![shader_block(language, RENDERER_BLOCK, &names)?],
+        ));
+    }
+    let renderer_items = RENDERER_BLOCK
+        .iter()
+        .map(|name| names.get(name))
+        .collect::<Result<Vec<_>, _>>()?;
+    files.push((
+        RENDERER_LAYOUTS.to_string(),
+        vec![rust_lists::renderer_layouts(&renderer_items)],
+    ));
     files
         .into_iter()
         .map(|(file, generated)| {
@@ -135,7 +194,10 @@ fn shader_block(language: Language, items: &[&str], names: &RustItems) -> Result
     let mut previous_was_constant = None;
     for name in items {
         let item = names.get(name)?;
-        let constant = !matches!(item.kind, rust_items::Kind::Struct { .. });
+        let constant = !matches!(
+            item.kind,
+            rust_items::Kind::Struct { .. } | rust_items::Kind::Enum { .. }
+        );
         if previous_was_constant.is_some_and(|previous| !(previous && constant)) {
             lines.push(String::new());
         }

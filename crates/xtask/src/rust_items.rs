@@ -1,6 +1,8 @@
-//! Reads the shared declarations from the crate's Rust source with `syn`: public constants of a
-//! scalar type, public structs with named fields, and presets (public constants of a struct type
-//! written as a struct literal with its fields in declaration order).
+//! Reads the shared declarations from Rust sources with `syn`: public constants of a scalar type,
+//! public structs with named fields, presets (public constants of a struct type written as a struct
+//! literal with its fields in declaration order), and public `#[repr(u32)]` enums whose variants
+//! all have a literal discriminant. Each source file names its items in the shaders by its
+//! [`Naming`].
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -15,6 +17,11 @@ pub enum Type {
     Bool,
     /// glam's `Vec2`, `Vec3`, `Vec4`: the number of f32 components.
     Vector(usize),
+    /// `[u32; N]` for N = 2 to 4, a `uvecN`: the number of components. The array's alignment is a
+    /// `u32`'s, the vector's that of its size; the layout tests hold each field's offset.
+    UVector(usize),
+    /// glam's `Mat4`: four f32 columns of four.
+    Matrix4,
     /// Another shared struct, by its Rust name.
     Struct(String),
 }
@@ -50,15 +57,56 @@ pub enum Kind {
         ty: String,
         values: Vec<Value>,
     },
+    /// A `#[repr(u32)]` enum: one `u32` constant per variant.
+    Enum {
+        variants: Vec<Variant>,
+    },
     /// A public item the generator cannot translate, with the reason; an error only when a
     /// generated block asks for it.
     Unreadable(String),
 }
 
+/// An enum variant: its constant's name in the shaders, its discriminant and its doc comment.
+#[derive(Clone, Debug)]
+pub struct Variant {
+    pub name: String,
+    pub shader_name: String,
+    pub value: String,
+    pub docs: Vec<String>,
+}
+
+/// How a source file's items are named in the shaders: a prefix before a struct's Rust name and
+/// before a constant's, and the prefix of the shader twins of its public functions, if it has any.
+#[derive(Clone, Copy, Debug)]
+pub struct Naming {
+    pub struct_prefix: &'static str,
+    pub constant_prefix: &'static str,
+    pub function_prefix: Option<&'static str>,
+}
+
+/// The library's modules: `RayCone` is `RfRayCone`, `MIN_COS` is `RF_MIN_COS`, `width_at` is
+/// `rf_width_at`.
+pub const LIBRARY: Naming = Naming {
+    struct_prefix: "Rf",
+    constant_prefix: "RF_",
+    function_prefix: Some("rf_"),
+};
+
+/// The lab's renderer: its structs keep their Rust names (`RtPushConstants`), a constant gets
+/// `RT_` (`RT_FLAG_GLOSSY_LOBE`), a variant of enum `Mode` is `RT_MODE_` and its name in capitals
+/// (`Mode::ConeCurvature` is `RT_MODE_CONE_CURVATURE`); its functions have no shader twins.
+pub const RENDERER: Naming = Naming {
+    struct_prefix: "",
+    constant_prefix: "RT_",
+    function_prefix: None,
+};
+
 /// One shared declaration and where it is written.
 #[derive(Clone, Debug)]
 pub struct Item {
     pub name: String,
+    /// The name the shaders give it (an enum's, which only its variants have, is its Rust name).
+    pub shader_name: String,
     /// The file, relative to the repository root, e.g. `src/wireframe.rs`.
     pub file: String,
     /// The Rust module path of the item, e.g. `crate::wireframe::WireframeSettingsIo`.
@@ -67,10 +115,26 @@ pub struct Item {
     pub kind: Kind,
 }
 
-/// Every shared declaration of the files, by name, and the names of their public functions.
+impl Item {
+    /// The item `name` of `file`, named `shader_name` in the shaders, documented by the doc
+    /// comments among `attrs`.
+    fn new(file: &str, name: String, shader_name: String, attrs: &[syn::Attribute], kind: Kind) -> Item {
+        Item {
+            path: module_path(file, &name),
+            shader_name,
+            name,
+            file: file.to_string(),
+            docs: docs(attrs),
+            kind,
+        }
+    }
+}
+
+/// Every shared declaration of the files, by name, and their public functions with their shader
+/// names (where the file's [`Naming`] gives its functions shader twins).
 pub struct RustItems {
     pub items: BTreeMap<String, Item>,
-    pub functions: Vec<String>,
+    pub functions: BTreeMap<String, String>,
 }
 
 impl RustItems {
@@ -86,39 +150,62 @@ impl RustItems {
     }
 }
 
-/// Parses each file (relative to `root`) and collects its shared declarations.
-pub fn read(root: &Path, files: &[&str]) -> Result<RustItems, String> {
+/// Parses each file (relative to `root`) and collects its shared declarations, named by the
+/// file's [`Naming`]. Two public items of one name are an error.
+pub fn read(root: &Path, files: &[(&str, Naming)]) -> Result<RustItems, String> {
     let mut parsed = Vec::new();
-    for file in files {
+    for &(file, naming) in files {
         let text = std::fs::read_to_string(root.join(file)).map_err(|e| format!("{file}: {e}"))?;
         let syntax = syn::parse_file(&text).map_err(|e| format!("{file}: {e}"))?;
-        parsed.push((*file, syntax));
+        parsed.push((file, naming, syntax));
     }
     let mut items = BTreeMap::new();
-    let mut functions = Vec::new();
+    let mut functions = BTreeMap::new();
     // Structs first, so that a preset can be checked against its struct's fields.
-    for (file, syntax) in &parsed {
+    for (file, naming, syntax) in &parsed {
         for item in &syntax.items {
-            if let syn::Item::Struct(item) = item {
-                if let Some(shared) = read_struct(file, item) {
-                    items.insert(shared.name.clone(), shared);
-                }
+            let shared = match item {
+                syn::Item::Struct(item) => read_struct(file, naming, item),
+                syn::Item::Enum(item) if is_pub(&item.vis) => Some(read_enum(file, naming, item)),
+                _ => None,
+            };
+            if let Some(shared) = shared {
+                insert(&mut items, shared)?;
             }
         }
     }
-    for (file, syntax) in &parsed {
+    for (file, naming, syntax) in &parsed {
         for item in &syntax.items {
             match item {
                 syn::Item::Const(item) if is_pub(&item.vis) => {
-                    let shared = read_const(file, item, &items);
-                    items.insert(shared.name.clone(), shared);
+                    let shared = read_const(file, naming, item, &items);
+                    insert(&mut items, shared)?;
                 }
-                syn::Item::Fn(item) if is_pub(&item.vis) => functions.push(item.sig.ident.to_string()),
+                syn::Item::Fn(item) if is_pub(&item.vis) => {
+                    if let Some(prefix) = naming.function_prefix {
+                        let name = item.sig.ident.to_string();
+                        functions.insert(name.clone(), format!("{prefix}{name}"));
+                    }
+                }
                 _ => {}
             }
         }
     }
     Ok(RustItems { items, functions })
+}
+
+/// Adds `item`, unless an item of its name is there already.
+fn insert(items: &mut BTreeMap<String, Item>, item: Item) -> Result<(), String> {
+    match items.get(&item.name) {
+        Some(first) => Err(format!(
+            "`{}` is declared in {} and in {}: shared items need one name each",
+            item.name, first.file, item.file
+        )),
+        None => {
+            items.insert(item.name.clone(), item);
+            Ok(())
+        }
+    }
 }
 
 fn is_pub(vis: &syn::Visibility) -> bool {
@@ -182,6 +269,18 @@ fn type_name(ty: &syn::Type) -> Option<String> {
 }
 
 fn shared_type(ty: &syn::Type) -> Result<Type, String> {
+    if let syn::Type::Array(array) = ty {
+        let components = match number(&array.len).as_deref() {
+            Ok("2") => 2,
+            Ok("3") => 3,
+            Ok("4") => 4,
+            _ => 0,
+        };
+        return match type_name(&array.elem).as_deref() {
+            Some("u32") if components > 0 => Ok(Type::UVector(components)),
+            _ => Err("an array other than `[u32; N]` for N = 2 to 4".to_string()),
+        };
+    }
     let name = type_name(ty).ok_or("a type that is not a plain name")?;
     Ok(match name.as_str() {
         "f32" => Type::F32,
@@ -192,13 +291,14 @@ fn shared_type(ty: &syn::Type) -> Result<Type, String> {
         "Vec2" => Type::Vector(2),
         "Vec3" => Type::Vector(3),
         "Vec4" => Type::Vector(4),
+        "Mat4" => Type::Matrix4,
         _ if name.chars().next().is_some_and(char::is_uppercase) => Type::Struct(name),
         _ => return Err(format!("the type `{name}`, which has no shader twin")),
     })
 }
 
 /// A public struct with named fields, or `None` for other structs (tuple structs, private ones).
-fn read_struct(file: &str, item: &syn::ItemStruct) -> Option<Item> {
+fn read_struct(file: &str, naming: &Naming, item: &syn::ItemStruct) -> Option<Item> {
     let syn::Fields::Named(named) = &item.fields else {
         return None;
     };
@@ -226,18 +326,18 @@ fn read_struct(file: &str, item: &syn::ItemStruct) -> Option<Item> {
         },
         Err(reason) => Kind::Unreadable(reason),
     };
-    Some(Item {
-        path: module_path(file, &name),
-        name,
-        file: file.to_string(),
-        docs: docs(&item.attrs),
-        kind,
-    })
+    let shader_name = format!("{}{name}", naming.struct_prefix);
+    Some(Item::new(file, name, shader_name, &item.attrs, kind))
 }
 
-fn read_const(file: &str, item: &syn::ItemConst, structs: &BTreeMap<String, Item>) -> Item {
+fn read_const(file: &str, naming: &Naming, item: &syn::ItemConst, structs: &BTreeMap<String, Item>) -> Item {
     let name = item.ident.to_string();
-    let kind = match shared_type(&item.ty) {
+    // A count the host indexes with is a `usize` in Rust and a `u32` in the shaders.
+    let ty = match type_name(&item.ty).as_deref() {
+        Some("usize") => Ok(Type::U32),
+        _ => shared_type(&item.ty),
+    };
+    let kind = match ty {
         Ok(Type::Struct(struct_name)) => match read_preset(&item.expr, &struct_name, structs) {
             Ok(values) => Kind::Preset {
                 ty: struct_name,
@@ -251,13 +351,59 @@ fn read_const(file: &str, item: &syn::ItemConst, structs: &BTreeMap<String, Item
         },
         Err(reason) => Kind::Unreadable(format!("has {reason}")),
     };
-    Item {
-        path: module_path(file, &name),
-        name,
-        file: file.to_string(),
-        docs: docs(&item.attrs),
-        kind,
+    let shader_name = format!("{}{name}", naming.constant_prefix);
+    Item::new(file, name, shader_name, &item.attrs, kind)
+}
+
+/// A public enum: with `#[repr(u32)]` and a literal discriminant on every (fieldless) variant, one
+/// constant per variant, `{constant prefix}{ENUM}_{VARIANT}` in capitals with `_` between words.
+fn read_enum(file: &str, naming: &Naming, item: &syn::ItemEnum) -> Item {
+    let name = item.ident.to_string();
+    let repr_u32 = item.attrs.iter().any(|attr| {
+        attr.path().is_ident("repr") && attr.parse_args::<syn::Ident>().is_ok_and(|ty| ty == "u32")
+    });
+    let variants: Result<Vec<Variant>, String> = item
+        .variants
+        .iter()
+        .map(|variant| {
+            let value = match (&variant.fields, &variant.discriminant) {
+                (syn::Fields::Unit, Some((_, expr))) if repr_u32 => number(expr)?,
+                _ => {
+                    return Err(format!(
+                        "variant `{}` is not a unit variant with a literal discriminant under `#[repr(u32)]`",
+                        variant.ident
+                    ))
+                }
+            };
+            let variant_name = variant.ident.to_string();
+            Ok(Variant {
+                shader_name: format!(
+                    "{}{}_{}",
+                    naming.constant_prefix,
+                    capitals(&name),
+                    capitals(&variant_name)
+                ),
+                name: variant_name,
+                value,
+                docs: docs(&variant.attrs),
+            })
+        })
+        .collect();
+    let kind = variants.map_or_else(Kind::Unreadable, |variants| Kind::Enum { variants });
+    Item::new(file, name.clone(), name, &item.attrs, kind)
+}
+
+/// A camel-case name in capitals with `_` between its words: `RayDiffIsotropic` is
+/// `RAY_DIFF_ISOTROPIC`, `Mip0` is `MIP0`.
+fn capitals(camel: &str) -> String {
+    let mut out = String::new();
+    for (index, c) in camel.chars().enumerate() {
+        if c.is_uppercase() && index > 0 {
+            out.push('_');
+        }
+        out.extend(c.to_uppercase());
     }
+    out
 }
 
 /// A struct literal whose fields appear in declaration order, each a plain value.

@@ -1,6 +1,6 @@
 //! The Rust lists that repeat the shared structs' fields: shader-proptest's `Value` declarations
 //! (`src/values.rs`), the layout list of `src/abi.rs` and the build script's table of structs
-//! whose layouts it asserts (`build.rs`).
+//! whose layouts it asserts (`build.rs`); the renderer's layout list (`rt/abi.rs` of the lab).
 
 use crate::blocks::Block;
 use crate::rust_items::{Item, Kind, RustItems, Type};
@@ -50,6 +50,8 @@ fn rust_type(ty: &Type) -> String {
         Type::U32 => "u32".to_string(),
         Type::Bool => "bool".to_string(),
         Type::Vector(components) => format!("Vec{components}"),
+        Type::UVector(components) => format!("[u32; {components}]"),
+        Type::Matrix4 => "Mat4".to_string(),
         Type::Struct(name) => name.clone(),
     }
 }
@@ -77,7 +79,8 @@ pub fn values(structs: &[ModuleStruct]) -> Block {
                 .collect();
             let pod = if module_struct.is_pod() { "pod " } else { "" };
             format!(
-                "shader_struct!({pod}{name} as \"Rf{name}\" {{ {} }});",
+                "shader_struct!({pod}{name} as \"{}\" {{ {} }});",
+                module_struct.item.shader_name,
                 fields.join(", ")
             )
         })
@@ -104,8 +107,9 @@ pub fn layouts(structs: &[ModuleStruct]) -> Block {
         let name = &module_struct.item.name;
         let fields: Vec<&str> = module_struct.fields().iter().map(|f| f.name.as_str()).collect();
         lines.push(format!(
-            "        ({}, rust_layout!({name} as \"Rf{name}\" {{ {} }})),",
+            "        ({}, rust_layout!({name} as \"{}\" {{ {} }})),",
             module_struct.module_variant(),
+            module_struct.item.shader_name,
             fields.join(", ")
         ));
     }
@@ -124,15 +128,48 @@ pub fn build_table(structs: &[ModuleStruct]) -> Block {
         .map(|module_struct| {
             let item = module_struct.item;
             format!(
-                "        ({}, \"Rf{}\", \"{}\"),",
+                "        ({}, \"{}\", \"{}\"),",
                 module_struct.module_variant(),
-                item.name,
+                item.shader_name,
                 item.path
             )
         })
         .collect();
     Block {
         sources: sources(structs),
+        lines,
+    }
+}
+
+/// The lab's `rt/abi.rs`: `layouts`, the Rust layout of each of the renderer's `structs`, under
+/// the name its shaders give it.
+pub fn renderer_layouts(structs: &[&Item]) -> Block {
+    let mut lines = vec![
+        "/// Every struct the renderer's shaders share with Rust, with its Rust layout.".to_string(),
+        "#[rustfmt::skip]".to_string(),
+        "pub fn layouts() -> Vec<shader_proptest::layout::StructLayout> {".to_string(),
+        "    use shader_proptest::rust_layout;".to_string(),
+        "    vec![".to_string(),
+    ];
+    let mut files: Vec<String> = Vec::new();
+    for item in structs {
+        let Kind::Struct { fields, .. } = &item.kind else {
+            continue;
+        };
+        let fields: Vec<&str> = fields.iter().map(|f| f.name.as_str()).collect();
+        lines.push(format!(
+            "        rust_layout!({} as \"{}\" {{ {} }}),",
+            item.name,
+            item.shader_name,
+            fields.join(", ")
+        ));
+        if !files.contains(&item.file) {
+            files.push(item.file.clone());
+        }
+    }
+    lines.extend(["    ]".to_string(), "}".to_string()]);
+    Block {
+        sources: files,
         lines,
     }
 }

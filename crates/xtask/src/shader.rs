@@ -39,7 +39,7 @@ impl Language {
         }
     }
 
-    fn type_name(self, ty: &Type) -> String {
+    fn type_name(self, ty: &Type, names: &RustItems) -> Result<String, String> {
         let name = match (self, ty) {
             (Language::Wgsl, Type::F32) => "f32",
             (Language::Wgsl, Type::F64) => "f64",
@@ -50,10 +50,14 @@ impl Language {
             (Language::Glsl | Language::Slang, Type::I32) => "int",
             (Language::Glsl | Language::Slang, Type::U32) => "uint",
             (_, Type::Bool) => "bool",
-            (_, Type::Vector(components)) => return self.vector_type(*components),
-            (_, Type::Struct(name)) => return format!("Rf{name}"),
+            (Language::Wgsl, Type::Matrix4) => "mat4x4<f32>",
+            (Language::Glsl, Type::Matrix4) => "mat4",
+            (Language::Slang, Type::Matrix4) => "float4x4",
+            (_, Type::Vector(components)) => return Ok(self.vector_type(*components)),
+            (_, Type::UVector(components)) => return Ok(self.unsigned_vector_type(*components)),
+            (_, Type::Struct(name)) => return Ok(names.get(name)?.shader_name.clone()),
         };
-        name.to_string()
+        Ok(name.to_string())
     }
 
     fn vector_type(self, components: usize) -> String {
@@ -64,14 +68,22 @@ impl Language {
         }
     }
 
+    fn unsigned_vector_type(self, components: usize) -> String {
+        match self {
+            Language::Wgsl => format!("vec{components}<u32>"),
+            Language::Glsl => format!("uvec{components}"),
+            Language::Slang => format!("uint{components}"),
+        }
+    }
+
     /// A value of type `ty` in this language's syntax, with the exact value of the Rust literal.
     fn value(self, ty: &Type, value: &Value) -> Result<String, String> {
         match (ty, value) {
             (Type::Bool, Value::Bool(flag)) => Ok(flag.to_string()),
             (Type::F32, Value::Number(digits)) => float(digits),
             (Type::F64, Value::Number(digits)) => self.double(digits),
-            (Type::I32, Value::Number(digits)) => integer(digits),
-            (Type::U32, Value::Number(digits)) => Ok(format!("{}u", integer(digits)?)),
+            (Type::I32, Value::Number(digits)) => integer::<i32>(digits),
+            (Type::U32, Value::Number(digits)) => Ok(format!("{}u", integer::<u32>(digits)?)),
             (Type::Vector(components), Value::Vector(values)) if values.len() == *components => {
                 let values: Vec<String> = values.iter().map(|v| float(v)).collect::<Result<_, _>>()?;
                 Ok(format!(
@@ -109,7 +121,8 @@ impl Language {
         match &item.kind {
             Kind::Const { ty, value } => {
                 let value = self.value(ty, value).map_err(at)?;
-                lines.push(self.constant(&item.name, &self.type_name(ty), &value));
+                let ty = self.type_name(ty, names).map_err(at)?;
+                lines.push(self.constant(&item.shader_name, &ty, &value));
             }
             Kind::Preset { ty, values } => {
                 let Kind::Struct { fields, .. } = &names.get(ty)?.kind else {
@@ -121,11 +134,27 @@ impl Language {
                     .map(|(field, value)| self.value(&field.ty, value))
                     .collect::<Result<_, _>>()
                     .map_err(at)?;
-                let struct_name = format!("Rf{ty}");
+                let struct_name = &names.get(ty)?.shader_name;
                 let value = format!("{struct_name}({})", values.join(", "));
-                lines.push(self.constant(&item.name, &struct_name, &value));
+                lines.push(self.constant(&item.shader_name, struct_name, &value));
             }
-            Kind::Struct { fields, .. } => lines.extend(self.structure(&item.name, fields, names)),
+            Kind::Enum { variants } => {
+                // The enum's own comment stands apart from its first variant's.
+                if !lines.is_empty() {
+                    lines.push(String::new());
+                }
+                let ty = self.type_name(&Type::U32, names)?;
+                for variant in variants {
+                    lines.extend(comment::lines(&variant.docs, self.doc_marker(), names));
+                    let value = self
+                        .value(&Type::U32, &Value::Number(variant.value.clone()))
+                        .map_err(at)?;
+                    lines.push(self.constant(&variant.shader_name, &ty, &value));
+                }
+            }
+            Kind::Struct { fields, .. } => {
+                lines.extend(self.structure(&item.shader_name, fields, names).map_err(at)?)
+            }
             Kind::Unreadable(reason) => return Err(at(reason.clone())),
         }
         Ok(lines)
@@ -134,18 +163,18 @@ impl Language {
     fn constant(self, name: &str, ty: &str, value: &str) -> String {
         let keywords = self.const_keywords();
         match self {
-            Language::Wgsl => format!("{keywords} RF_{name}: {ty} = {value};"),
-            Language::Glsl | Language::Slang => format!("{keywords} {ty} RF_{name} = {value};"),
+            Language::Wgsl => format!("{keywords} {name}: {ty} = {value};"),
+            Language::Glsl | Language::Slang => format!("{keywords} {ty} {name} = {value};"),
         }
     }
 
-    fn structure(self, name: &str, fields: &[Field], names: &RustItems) -> Vec<String> {
+    fn structure(self, name: &str, fields: &[Field], names: &RustItems) -> Result<Vec<String>, String> {
         let public = if self == Language::Slang { "public " } else { "" };
-        let mut lines = vec![format!("{public}struct Rf{name} {{")];
+        let mut lines = vec![format!("{public}struct {name} {{")];
         for field in fields {
             let prefix = format!("    {}", self.doc_marker());
             lines.extend(comment::lines(&field.docs, &prefix, names));
-            let ty = self.type_name(&field.ty);
+            let ty = self.type_name(&field.ty, names)?;
             lines.push(match self {
                 Language::Wgsl => format!("    {}: {ty},", field.name),
                 Language::Glsl | Language::Slang => format!("    {public}{ty} {};", field.name),
@@ -155,7 +184,7 @@ impl Language {
             Language::Wgsl => "}".to_string(),
             Language::Glsl | Language::Slang => "};".to_string(),
         });
-        lines
+        Ok(lines)
     }
 }
 
@@ -169,7 +198,8 @@ fn float(digits: &str) -> Result<String, String> {
     }
 }
 
-fn integer(digits: &str) -> Result<String, String> {
-    digits.parse::<i64>().map_err(|e| format!("{digits}: {e}"))?;
+/// An integer literal whose value the shader type `T` holds.
+fn integer<T: std::str::FromStr<Err = std::num::ParseIntError>>(digits: &str) -> Result<String, String> {
+    digits.parse::<T>().map_err(|e| format!("{digits}: {e}"))?;
     Ok(digits.to_string())
 }

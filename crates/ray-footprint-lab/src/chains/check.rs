@@ -2,15 +2,11 @@
 //! the rounding bound of [`super::bound`]), and the shader against the mirror
 //! ([`reflection_chain_check`]).
 
-use super::mirror::{chain_shader, reflection_chain, ChainArgs, ChainCamera, ChainLeg, ChainSamples};
+use super::enclosure;
+use super::mirror::{chain_shader, reflection_chain, ChainArgs, ChainSamples};
 use super::{head_on_chain_with_one_saddle, in_plane_chain, Chain, ChainStats, Comparison};
-use super::{CHAIN_MAX_BOUNCES, CHAIN_ORTHOGRAPHIC, CHAIN_PINHOLE};
-use crate::checks::ray_diff::{b_eye_ray_direction_derivatives, b_reflected_direction, b_transferred_origin};
-use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRng, TestRunner};
-use ray_footprint::ray_cone::{MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
-use shader_proptest::interval::{interval3 as v3, Interval as I, Interval3 as V3, IntervalVec as V};
 use shader_proptest::{kernel_source, Args, ComputeKernel, FunctionCheck, Gpu, Language, Tolerance, Value};
 use std::cell::RefCell;
 
@@ -116,115 +112,11 @@ pub fn reflection_chain_check() -> FunctionCheck<ChainArgs, ChainSamples> {
     let mirror = |(camera, bounces, leg0, leg1, leg2, leg3, leg4): ChainArgs| {
         reflection_chain(camera, bounces, leg0, leg1, leg2, leg3, leg4)
     };
-    let widths =
-        |args: &ChainArgs, _: &[f32]| b_reflection_chain(args).iter().map(|i| i.tolerance()).collect();
-    FunctionCheck::new("reflection_chain", chains, mirror).tolerance(Tolerance::per_case(widths))
-}
-
-// ---------------------------------------------------------------------------------------------
-// The enclosure of `reflection_chain` (same order of operations as mirror.rs)
-// ---------------------------------------------------------------------------------------------
-
-/// An exact f32 input.
-fn s(x: f32) -> I {
-    I::exact(x)
-}
-
-/// A ray of the chain in intervals: the cone, and the differential's origin and direction changes
-/// per pixel step right and down.
-#[derive(Clone, Copy)]
-struct IntervalRay {
-    width: I,
-    spread: I,
-    d_origin: [V3; 2],
-    d_direction: [V3; 2],
-}
-
-fn b_pixel_spread_angle_small(fov_y: f32, image_height: f32) -> I {
-    I::c(2.0) * I::tan_exact(0.5 * fov_y.clamp(0.0, MAX_FOV_Y)) / s(image_height.max(1.0))
-}
-
-fn b_chain_pixel_axis_ray(width: I, spread: I) -> IntervalRay {
-    let zero = I::c(0.0);
-    IntervalRay {
-        width,
-        spread,
-        d_origin: [V([width, zero, zero]), V([zero, -width, zero])],
-        d_direction: [V([spread, zero, zero]), V([zero, -spread, zero])],
-    }
-}
-
-fn b_chain_primary(camera: ChainCamera) -> IntervalRay {
-    if camera.kind == CHAIN_PINHOLE {
-        let size = Vec2::splat(camera.image_height);
-        let centre = (0.5 * size).floor();
-        let eye = (centre, size, camera.fov_y, Vec3::X, Vec3::Y, Vec3::Z);
-        let (dd_dx, dd_dy) = b_eye_ray_direction_derivatives(&eye);
-        let zero = V([I::c(0.0); 3]);
-        return IntervalRay {
-            width: I::c(0.0),
-            spread: b_pixel_spread_angle_small(camera.fov_y, camera.image_height),
-            d_origin: [zero, zero],
-            d_direction: [dd_dx, dd_dy],
-        };
-    }
-    if camera.kind == CHAIN_ORTHOGRAPHIC {
-        let width = s(camera.view_height) / s(camera.image_height.max(1.0));
-        return b_chain_pixel_axis_ray(width, I::c(0.0));
-    }
-    let alpha = b_pixel_spread_angle_small(camera.fov_y, camera.image_height);
-    let spread = alpha - s(camera.aperture) / s(camera.focus_distance.max(MIN_MAGNITUDE));
-    b_chain_pixel_axis_ray(s(camera.aperture), spread)
-}
-
-fn b_chain_normal_change(leg: &ChainLeg, dp: V3) -> V3 {
-    let (first, second) = (
-        v3(leg.first_principal_direction),
-        v3(leg.second_principal_direction),
-    );
-    let k = leg.principal_curvatures;
-    first * (s(k.x) * first.dot(dp)) + second * (s(k.y) * second.dot(dp))
-}
-
-fn b_chain_reflect(ray: IntervalRay, at_hit: [V3; 2], width: I, leg: &ChainLeg) -> IntervalRay {
-    let facing = -v3(leg.normal).dot(v3(leg.direction));
-    let beta = (I::c(2.0) * s(leg.curvature) * width).div_away(facing, f64::from(MIN_COS));
-    let reflected = |axis: usize| {
-        let normal_change = b_chain_normal_change(leg, at_hit[axis]);
-        b_reflected_direction(ray.d_direction[axis], leg.direction, leg.normal, normal_change)
+    let widths = |args: &ChainArgs, _: &[f32]| {
+        enclosure::reflection_chain(args)
+            .iter()
+            .map(|i| i.tolerance())
+            .collect()
     };
-    IntervalRay {
-        width,
-        spread: ray.spread + beta,
-        d_origin: at_hit,
-        d_direction: [reflected(0), reflected(1)],
-    }
-}
-
-/// The 15 outputs of `reflection_chain`: width and the two footprints after each leg, exactly 0
-/// past the last.
-fn b_reflection_chain(&(camera, bounces, leg0, leg1, leg2, leg3, leg4): &ChainArgs) -> Vec<I> {
-    let legs = [leg0, leg1, leg2, leg3, leg4];
-    let reflections = bounces.min(CHAIN_MAX_BOUNCES) as usize;
-    let mut outputs = vec![I::c(0.0); 15];
-    let mut ray = b_chain_primary(camera);
-    for (index, leg) in legs.iter().enumerate().take(reflections + 1) {
-        let at_hit = [0, 1].map(|axis| {
-            b_transferred_origin(
-                ray.d_origin[axis],
-                ray.d_direction[axis],
-                leg.direction,
-                leg.distance,
-                leg.normal,
-            )
-        });
-        let width = ray.width + ray.spread * s(leg.distance);
-        outputs[3 * index] = width;
-        outputs[3 * index + 1] = at_hit[0].dot(v3(leg.right));
-        outputs[3 * index + 2] = at_hit[1].dot(v3(leg.down));
-        if index < reflections {
-            ray = b_chain_reflect(ray, at_hit, width, leg);
-        }
-    }
-    outputs
+    FunctionCheck::new("reflection_chain", chains, mirror).tolerance(Tolerance::per_case(widths))
 }

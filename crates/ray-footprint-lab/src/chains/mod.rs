@@ -33,6 +33,7 @@
 
 mod bound;
 mod check;
+mod enclosure;
 mod mirror;
 
 pub use bound::{ChainStats, Sample, CHAIN_PRIMARY_ULPS, CHAIN_ULPS_PER_LEG};

@@ -17,8 +17,10 @@
 //! the truth's fine detail kept, the mean change from frame to frame minus the truth's (shimmer),
 //! and the time per frame. On the texture scenes [`footprint`] also measures how far the isotropic
 //! and the anisotropic cone's footprints are from the ray differential's, on the per-pixel records.
-//! [`report`] writes the tables, the goals, the images and the plots.
+//! [`report`] writes the tables, the goals, the images and the plots; [`cost`] joins the table
+//! with the `mode_costs` bench's GPU times into the quality gained against the time added.
 
+pub mod cost;
 pub mod footprint;
 pub mod image;
 mod lab;

@@ -1,6 +1,7 @@
 //! The plots, drawn with `plotters` into bitmaps (text in DejaVu Sans through `ab_glyph`) and
 //! written as PNG: PSNR per scene and method (`psnr.png`, whole image and mask), mean FLIP per
-//! scene and method (`flip.png`), and quality against cost per scene (`quality_cost.png`).
+//! scene and method (`flip.png`), and quality against cost per scene (`quality_cost.png`); and any
+//! scatter plot of panels ([`scatter_plot`], which [`super::cost`] draws).
 
 use super::lab::LabRun;
 use super::LabError;
@@ -190,38 +191,116 @@ fn flip_plot(run: &LabRun, names: &[String], out: &Path) -> Result<PathBuf, LabE
 
 /// `quality_cost.png`: per scene, PSNR over the mask against the time per frame of each method.
 fn quality_cost_plot(run: &LabRun, names: &[String], out: &Path) -> Result<PathBuf, LabError> {
+    let panels: Vec<ScatterPanel> = run
+        .scenes
+        .iter()
+        .map(|scene| ScatterPanel {
+            title: format!("{}: quality against cost", scene.scene.name),
+            points: scene
+                .methods
+                .iter()
+                .map(|m| ScatterPoint {
+                    x: m.ms_per_frame,
+                    x_spread: None,
+                    y: m.psnr_mask,
+                    method: m.method.name.clone(),
+                    separable: true,
+                })
+                .collect(),
+        })
+        .collect();
     plot(&out.join("quality_cost.png"), names, |area| {
-        let columns = 2;
-        let rows = run.scenes.len().div_ceil(columns).max(1);
-        let panels = area.split_evenly((rows, columns));
-        for (scene, panel) in run.scenes.iter().zip(&panels) {
-            let (x_low, x_high) = padded_range(scene.methods.iter().map(|m| m.ms_per_frame));
-            let (y_low, y_high) = padded_range(scene.methods.iter().map(|m| m.psnr_mask));
-            let mut chart = ChartBuilder::on(panel)
-                .caption(
-                    format!("{}: quality against cost", scene.scene.name),
-                    (FAMILY, 17),
-                )
-                .margin(10)
-                .x_label_area_size(36)
-                .y_label_area_size(56)
-                .build_cartesian_2d(x_low.max(0.0)..x_high, y_low..y_high)
-                .map_err(plot_error)?;
-            chart
-                .configure_mesh()
-                .x_desc("ms per frame")
-                .y_desc("PSNR mask dB")
-                .label_style((FAMILY, 13))
-                .draw()
-                .map_err(plot_error)?;
-            let points = scene.methods.iter().map(|m| {
-                let index = names.iter().position(|n| *n == m.method.name).unwrap_or(0);
-                Circle::new((m.ms_per_frame, m.psnr_mask), 6, colour(index).filled())
-            });
-            chart.draw_series(points).map_err(plot_error)?;
-        }
-        Ok(())
+        scatter_panels(area, &panels, names, ("ms per frame", "PSNR mask dB"))
     })
+}
+
+/// A point of a [`ScatterPanel`]: where it is, the method it stands for (its colour in the
+/// legend), and, for a measured time, the spread of x (drawn as a bar).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScatterPoint {
+    /// Horizontal position.
+    pub x: f64,
+    /// Smallest and largest x measured, where x is a median of several.
+    pub x_spread: Option<(f64, f64)>,
+    /// Vertical position.
+    pub y: f64,
+    /// The method's name.
+    pub method: String,
+    /// Whether x differs from the baseline's by more than the spreads (drawn filled; hollow
+    /// otherwise).
+    pub separable: bool,
+}
+
+/// One panel of a scatter plot: its title and points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScatterPanel {
+    /// The caption.
+    pub title: String,
+    /// The points.
+    pub points: Vec<ScatterPoint>,
+}
+
+/// `panels` in a grid of two columns on `area`, each point coloured by its method's place in
+/// `names`, axes described by `(x_desc, y_desc)`.
+fn scatter_panels(
+    area: &Area<'_>,
+    panels: &[ScatterPanel],
+    names: &[String],
+    (x_desc, y_desc): (&str, &str),
+) -> Result<(), LabError> {
+    let columns = 2;
+    let rows = panels.len().div_ceil(columns).max(1);
+    for (panel, region) in panels.iter().zip(&area.split_evenly((rows, columns))) {
+        let xs = panel.points.iter().flat_map(|p| {
+            let (low, high) = p.x_spread.unwrap_or((p.x, p.x));
+            [p.x, low, high]
+        });
+        let (x_low, x_high) = padded_range(xs);
+        let (y_low, y_high) = padded_range(panel.points.iter().map(|p| p.y));
+        let mut chart = ChartBuilder::on(region)
+            .caption(&panel.title, (FAMILY, 17))
+            .margin(10)
+            .x_label_area_size(36)
+            .y_label_area_size(56)
+            .build_cartesian_2d(x_low..x_high, y_low..y_high)
+            .map_err(plot_error)?;
+        chart
+            .configure_mesh()
+            .x_desc(x_desc)
+            .y_desc(y_desc)
+            .label_style((FAMILY, 13))
+            .draw()
+            .map_err(plot_error)?;
+        for point in &panel.points {
+            let index = names.iter().position(|n| *n == point.method).unwrap_or(0);
+            let style = colour(index);
+            if let Some((low, high)) = point.x_spread {
+                let bar = PathElement::new([(low, point.y), (high, point.y)], style.stroke_width(2));
+                chart.draw_series([bar]).map_err(plot_error)?;
+            }
+            let marker = if point.separable {
+                style.filled()
+            } else {
+                style.stroke_width(2)
+            };
+            chart
+                .draw_series([Circle::new((point.x, point.y), 6, marker)])
+                .map_err(plot_error)?;
+        }
+    }
+    Ok(())
+}
+
+/// A scatter plot of `panels` written to `path` as PNG, with the legend of every method in order
+/// of first appearance.
+pub fn scatter_plot(path: &Path, panels: &[ScatterPanel], axes: (&str, &str)) -> Result<PathBuf, LabError> {
+    let mut names: Vec<String> = Vec::new();
+    for point in panels.iter().flat_map(|panel| &panel.points) {
+        if !names.contains(&point.method) {
+            names.push(point.method.clone());
+        }
+    }
+    plot(path, &names, |area| scatter_panels(area, panels, &names, axes))
 }
 
 /// Writes every plot of `run` into `out` and returns their paths.

@@ -15,20 +15,25 @@
 //!   ([`RtUniforms`]); on a primary hit the closest-hit shader measures every ray-cone value, the
 //!   ray differentials, the re-intersected barycentric offsets, the wireframe coverage, the
 //!   material's values (a mirror's roughness spread, glass's refracted cone) and the anisotropic
-//!   cone gradients, and it
-//!   shades in the chosen [`Mode`] with the functions of `rt_common.glsl` that the colour-only
-//!   pipelines ([`ColourPipeline`]) share;
+//!   cone gradients, and it shades in the chosen [`Mode`] with the shading code of
+//!   `rt_shading.glsl` that the colour-only pipelines ([`ColourPipeline`]) share;
 //! - Slang (`shaders/closest_hit.slang`, compiled with slangc with the library's Slang directory
-//!   on the search path): the recording closest-hit stage written in Slang, `import`-ing `ray_cone`,
-//!   `ray_diff` and `wireframe`, with the same bindings, push constants and payload and the same
-//!   measurements and shading, in place of the GLSL one in the recording pipeline with the GLSL ray
-//!   generation and miss ([`Renderer::with_closest_hit`] and [`ClosestHit::Slang`]);
+//!   on the search path): the recording closest-hit stage in Slang, `import`-ing `ray_cone`,
+//!   `ray_diff` and `wireframe` and compiling the same `rt_shading.glsl` through Slang's GLSL
+//!   compatibility (`import glsl;`), so that every library call in it is a call of the Slang
+//!   modules; the same bindings, push constants and payload, declared in Slang, in place of the
+//!   GLSL closest hit in the recording pipeline with the GLSL ray generation and miss
+//!   ([`Renderer::with_closest_hit`] and [`ClosestHit::Slang`]);
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
 //!   with a ray query over the same acceleration structures and measuring the same values with
 //!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.
 //!
 //! All three record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so
-//! the Rust mirror can recompute every value from the same hit data.
+//! the Rust mirror can recompute every value from the same hit data. The structs and constants the
+//! shaders share with Rust are declared once, in [`abi`] (the structs, the flags, the shading
+//! constants), [`Mode`] (the modes' discriminants) and the scene (the materials and the buffers'
+//! layout), and written into `rt_abi.glsl`, `rt_abi.slang` and `ray_query.wgsl` by
+//! `cargo xtask codegen`.
 //!
 //! ```no_run
 //! use ray_footprint::wireframe::WireframeSettings;
@@ -60,7 +65,8 @@ pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
 pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Material, Mesh, Scene, Vertex,
-    GLASS_INDEX, MESH_TABLE_WORDS, ROUGHNESS, VERTEX_FLOATS, WIRE_COLOUR,
+    GLASS_INDEX, MATERIAL_GLASS, MATERIAL_MIRROR, MATERIAL_TEXTURED, MESH_TABLE_WORDS, ROUGHNESS,
+    VERTEX_FLOATS, WIRE_COLOUR,
 };
 pub use texture::{
     checker, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,

@@ -2,8 +2,8 @@
 
 use std::fmt;
 
-/// A render mode. The discriminant is the `RT_MODE_*` constant of `shaders/rt_common.glsl` (and of
-/// `shaders/closest_hit.slang`).
+/// A render mode. `cargo xtask codegen` writes each discriminant into the shaders as a constant
+/// named `RT_MODE_` and the mode's name in capitals: RT_MODE_CONE_CURVATURE for ConeCurvature.
 ///
 /// Every mode traces the same rays and records the same per-pixel values
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
@@ -69,7 +69,7 @@ impl Mode {
         Mode::ConeAnisotropic,
     ];
 
-    /// The value the shaders compare with `RT_MODE_*`.
+    /// The discriminant: the value of the mode's `RT_MODE_*` constant in the shaders.
     pub fn id(self) -> u32 {
         self as u32
     }

@@ -2,7 +2,7 @@
 //! recording shaders, with a GLSL or a Slang closest hit, and the colour-only shaders), and the
 //! WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
 
-use super::abi::RtPushConstants;
+use super::abi::{RtPushConstants, MAX_DEPTH};
 use ash::vk;
 use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use shader_proptest::compile::{
@@ -162,9 +162,9 @@ pub(super) fn compile_stages(files: [&str; 3], defines: &[(&str, String)]) -> Re
 }
 
 /// The ray-tracing pipelines' recursion depth: the primary ray's trace and one per bounce, up to
-/// `RT_MAX_DEPTH` (3, `rt_common.glsl`): a reflection, or a refraction into glass, out of it and
-/// once more (a total internal reflection inside).
-const RECURSION_DEPTH: u32 = 4;
+/// [`MAX_DEPTH`]: a reflection, or a refraction into glass, out of it and once more (a total
+/// internal reflection inside).
+const RECURSION_DEPTH: u32 = MAX_DEPTH + 1;
 
 /// The compiled ray-generation, miss and closest-hit shaders `spirv` in one pipeline (groups: 0
 /// ray generation, 1 miss, 2 triangle hit group), recursion depth [`RECURSION_DEPTH`].

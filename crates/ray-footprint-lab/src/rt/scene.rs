@@ -25,7 +25,15 @@ pub struct Vertex {
     pub uv: Vec2,
 }
 
-/// How a mesh is shaded. [`Material::id`] is the `RT_MATERIAL_*` constant of the shaders.
+/// The material id ([`Material::id`]) of [`Material::Textured`].
+pub const MATERIAL_TEXTURED: u32 = 0;
+/// The material id ([`Material::id`]) of [`Material::Mirror`].
+pub const MATERIAL_MIRROR: u32 = 1;
+/// The material id ([`Material::id`]) of [`Material::Glass`].
+pub const MATERIAL_GLASS: u32 = 2;
+
+/// How a mesh is shaded. [`Material::id`] is one of the `MATERIAL_*` constants, which `cargo xtask
+/// codegen` writes into the shaders as `RT_MATERIAL_*`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Material {
     /// Samples the texture at the mode's level of detail.
@@ -51,12 +59,12 @@ impl Material {
     /// A perfect mirror.
     pub const MIRROR: Material = Material::Mirror { roughness: 0.0 };
 
-    /// The `RT_MATERIAL_*` constant of the shaders.
+    /// The `MATERIAL_*` constant of the material's kind (`RT_MATERIAL_*` in the shaders).
     pub fn id(self) -> u32 {
         match self {
-            Material::Textured => 0,
-            Material::Mirror { .. } => 1,
-            Material::Glass { .. } => 2,
+            Material::Textured => MATERIAL_TEXTURED,
+            Material::Mirror { .. } => MATERIAL_MIRROR,
+            Material::Glass { .. } => MATERIAL_GLASS,
         }
     }
 

@@ -1,20 +1,22 @@
-//! Every shader function agrees with its Rust mirror, in WGSL, GLSL and Slang.
+//! Every shader function agrees with its Rust mirror, in WGSL, GLSL and Slang: each record's
+//! agreement check ([`ray_footprint_cases::Record::check`]).
 //!
 //! Each test prints one line per function: cases checked, largest error, that error as a fraction
 //! of the function's tolerance, and the share of cases whose tolerance is vacuous.
 
 use super::{assert_all_pass, gpu};
 use ray_footprint::ray_cone;
-use ray_footprint::registry::{check_registry, Coverage, Registered};
 use ray_footprint::shaders::Module;
-use ray_footprint_lab::checks;
+use ray_footprint_cases::module_records;
 use shader_proptest::{FunctionCheck, Language, Outcome, RunConfig};
 
 fn agree(module: Module, language: Language) {
     let gpu = gpu();
     println!("device: {} ({})", gpu.name(), gpu.driver());
-    let checks = checks::checks(module);
-    assert!(!checks.is_empty(), "module {} has no checks", module.stem());
+    let checks: Vec<_> = module_records(module)
+        .map(|record| record.agreement_check())
+        .collect();
+    assert!(!checks.is_empty(), "module {} has no records", module.stem());
     let shader = module.shader(language);
     assert_all_pass(
         &gpu,
@@ -23,41 +25,6 @@ fn agree(module: Module, language: Language) {
         checks.iter().map(AsRef::as_ref),
         "disagree",
     );
-}
-
-/// Every public function of every module has an agreement check, registered in module order
-/// under the name of the function the check calls. (The helper functions the shader modules
-/// declare and the Rust mirror keeps private are checked through the public functions that call
-/// them.)
-#[test]
-fn every_function_has_a_check_in_module_order() {
-    let entries = checks::all_entries();
-    check_registry(&entries, Coverage::Complete).unwrap_or_else(|error| panic!("{error}"));
-    for entry in &entries {
-        let calls = format!("rf_{}", entry.function);
-        assert_eq!(entry.item.check.function(), calls, "{}", module_name(entry));
-        assert_eq!(entry.item.edge.function(), calls, "{}", module_name(entry));
-    }
-    println!("{} functions, each with an agreement check", entries.len());
-}
-
-fn module_name(entry: &Registered<checks::Entry>) -> String {
-    format!("{}::{}", entry.module.stem(), entry.function)
-}
-
-#[test]
-fn ray_cone_wgsl() {
-    agree(Module::RayCone, Language::Wgsl);
-}
-
-#[test]
-fn ray_cone_glsl() {
-    agree(Module::RayCone, Language::Glsl);
-}
-
-#[test]
-fn ray_cone_slang() {
-    agree(Module::RayCone, Language::Slang);
 }
 
 /// The harness catches a mirror that is off by one part in a million, and shrinks the case.
@@ -90,6 +57,21 @@ fn harness_reports_a_wrong_mirror() {
         assert!(failure.kernel.contains("rf_width_at("), "{report}");
         println!("{report}");
     }
+}
+
+#[test]
+fn ray_cone_wgsl() {
+    agree(Module::RayCone, Language::Wgsl);
+}
+
+#[test]
+fn ray_cone_glsl() {
+    agree(Module::RayCone, Language::Glsl);
+}
+
+#[test]
+fn ray_cone_slang() {
+    agree(Module::RayCone, Language::Slang);
 }
 
 #[test]

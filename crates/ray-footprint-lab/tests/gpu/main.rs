@@ -6,7 +6,9 @@
 //! - [`chains`]: reflection chains followed by a ray cone and a ray differential in a shader of
 //!   the lab's own, against its Rust mirror and against each other, in WGSL and GLSL;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
-//! - [`degenerate`]: the degenerate-input table on the CPU and the GPU;
+//! - [`special_cases`]: every function on special values (zeros, the domain's bounds, tied
+//!   vectors), in WGSL, GLSL and Slang;
+//! - [`degenerate`]: the degenerate-input table on the GPU;
 //! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror;
 //! - [`quality`]: the quality lab at a tiny size (finite metrics, a ground truth that scores
 //!   itself perfectly).
@@ -14,12 +16,10 @@
 mod abi;
 mod agreement;
 mod chains;
-#[path = "../../../../tests/common/mod.rs"]
-mod common;
 mod degenerate;
-mod edges;
 mod quality;
 mod rt;
+mod special_cases;
 
 use shader_proptest::{Check, Gpu, Language, RunConfig, Shader};
 

@@ -7,7 +7,7 @@
 //! and the anisotropic cone gradients, on the gallery and on the materials scene. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
 //! uniforms; each function is given exactly the inputs the shader gave it, so each comparison
-//! measures one library function, within the tolerance derived for it in `src/checks/`
+//! measures one library function, within the tolerance its record in `ray-footprint-cases` derives
 //! (restated below for the ray-cone values, and reused where the suite exports the check: every
 //! ray_diff and wireframe value).
 
@@ -16,15 +16,12 @@ use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::layout::{self, GlslPacking, StructLayout};
 use ray_footprint::ray_cone::{self as rc, RayCone, RefractedRayCone, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
-use ray_footprint::rust_layout;
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
-use ray_footprint_lab::checks as suite;
-use ray_footprint_lab::checks::ray_cone::{
-    area_corners, curvature_spread_angle_error, triangle_curvature_error,
-};
+use ray_footprint_cases as suite;
+use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, triangle_curvature_error};
 use ray_footprint_lab::rt::abi::{
-    RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
+    self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
 };
 use ray_footprint_lab::rt::{
     open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Material, Mode, Renderer, Scene, Vertex,
@@ -56,88 +53,14 @@ pub(crate) fn gpu() -> Gpu {
 /// (glslang) and in Slang (slangc), field by field; the uniform block's struct also under std140.
 #[test]
 fn renderer_structs_have_one_layout() {
-    let rust = [
-        rust_layout!(RtPushConstants {
-            eye,
-            tan_half_fov_y,
-            right,
-            aspect,
-            up,
-            texture_size,
-            forward,
-            mode,
-            cone,
-            width,
-            height,
-            pixel_offset,
-            flags,
-            pad
-        }),
-        rust_layout!(RtPixelRecord {
-            normal,
-            t,
-            direction,
-            instance,
-            barycentrics,
-            primitive,
-            hit,
-            cone,
-            width,
-            footprint,
-            texel_density,
-            base_lod,
-            lod,
-            gradient,
-            curvature,
-            curvature_spread,
-            reflected,
-            diff,
-            roughness_spread,
-            eta,
-            normal_spread,
-            total_internal_reflection,
-            refracted,
-            cone_uv_dx,
-            cone_uv_dy,
-            pad
-        }),
-        rust_layout!(RtDiffRecord {
-            eye_d_direction_dx,
-            lod,
-            eye_d_direction_dy,
-            offset_lod,
-            barycentric_dx,
-            barycentric_dy,
-            uv_dx,
-            uv_dy,
-            neighbour_right,
-            coverage,
-            neighbour_below,
-            pad0,
-            offset_dx,
-            pad1,
-            offset_dy,
-            pad2,
-            offset_uv_dx,
-            offset_uv_dy,
-            deltas,
-            pad3,
-            cone_deltas,
-            pad4
-        }),
-    ];
-    for rust in rust {
-        compare_layouts(&rust, &[GlslPacking::Std430, GlslPacking::Scalar]);
+    for rust in abi::layouts() {
+        let packings: &[GlslPacking] = if rust.name == "RtUniforms" {
+            &[GlslPacking::Std140, GlslPacking::Std430, GlslPacking::Scalar]
+        } else {
+            &[GlslPacking::Std430, GlslPacking::Scalar]
+        };
+        compare_layouts(&rust, packings);
     }
-    let uniforms = rust_layout!(RtUniforms {
-        view_inv,
-        proj_inv,
-        wireframe
-    });
-    compare_layouts(
-        &uniforms,
-        &[GlslPacking::Std140, GlslPacking::Std430, GlslPacking::Scalar],
-    );
 }
 
 /// Compares `rust` with its WGSL declaration in the ray-query source, its GLSL declaration in
@@ -591,7 +514,7 @@ fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelReco
     let push = &inputs.push;
     // The primary cone: the push constant's spread narrowed by the ray's cosine to the view axis.
     let cone_args = (push.cone.pixel_spread_angle, record.direction, push.forward);
-    let cone_check = suite::ray_cone::pinhole_ray_cone_for_ray();
+    let cone_check = suite::ray_cone::pinhole_ray_cone_for_ray().check();
     compare_with(
         stats,
         "primary cone",
@@ -658,7 +581,7 @@ fn compare_lod(
     compare_with(
         stats,
         value,
-        suite::ray_diff::lod_isotropic(),
+        suite::ray_diff::lod_isotropic().check(),
         ((texels,), lod),
         record,
     );
@@ -685,11 +608,11 @@ fn check_differentials(
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let matrices = (pixel, size, uniforms.view_inv, uniforms.proj_inv);
     let eye = RayDiff::new(Vec3::ZERO, Vec3::ZERO, d.eye_d_direction_dx, d.eye_d_direction_dy);
-    let eye_check = checks::eye_ray_diff_from_matrices();
+    let eye_check = checks::eye_ray_diff_from_matrices().check();
     compare_with(stats, "eye ray diff", eye_check, (matrices, eye), record);
     let barycentric = Derivatives2::new(d.barycentric_dx, d.barycentric_dy);
     let transfer_args = (eye, record.direction, record.t, p[0], p[1], p[2]);
-    let barycentric_check = checks::barycentric_derivatives();
+    let barycentric_check = checks::barycentric_derivatives().check();
     compare_with(
         stats,
         "barycentric derivs",
@@ -702,7 +625,7 @@ fn check_differentials(
     compare_with(
         stats,
         "uv gradients",
-        checks::texture_derivatives(),
+        checks::texture_derivatives().check(),
         (uv_args, gradients),
         record,
     );
@@ -736,13 +659,13 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
     compare_with(
         stats,
         "bary offsets",
-        checks::barycentric_offsets(),
+        checks::barycentric_offsets().check(),
         (offset_args, offsets),
         record,
     );
     let gradients = Derivatives2::new(d.offset_uv_dx, d.offset_uv_dy);
     let uv_args = (offsets, uv[0], uv[1], uv[2]);
-    let uv_check = checks::uv_gradients_from_offsets();
+    let uv_check = checks::uv_gradients_from_offsets().check();
     compare_with(
         stats,
         "offset uv gradients",
@@ -754,12 +677,12 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
     compare_with(
         stats,
         "bary deltas",
-        checks::barycentric_deltas(),
+        checks::barycentric_deltas().check(),
         (offset_args, d.deltas),
         record,
     );
     let settings = inputs.uniforms.wireframe.settings.unpack();
-    let coverage_check = suite::wireframe::process_wireframe();
+    let coverage_check = suite::wireframe::process_wireframe().check();
     compare_with(
         stats,
         "coverage",
@@ -768,7 +691,7 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
         record,
     );
     let cone_args = (record.footprint, p[0], p[1], p[2]);
-    let cone_check = checks::cone_barycentric_deltas();
+    let cone_check = checks::cone_barycentric_deltas().check();
     compare_with(
         stats,
         "cone deltas",
@@ -885,7 +808,7 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let size = Vec2::splat(push.texture_size);
     let lod_args = (r.base_lod, r.width, size, n, d);
     let lod = rc::texture_lod(r.base_lod, r.width, size, n, d);
-    let lod_check = suite::ray_cone::texture_lod();
+    let lod_check = suite::ray_cone::texture_lod().check();
     stats.compare("lod", r.lod, lod, lod_check.bounds(&lod_args, &lod)[0], r);
 
     // texture_gradient of footprint * density: two correctly rounded products, the same on both
@@ -935,7 +858,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     match material {
         Material::Mirror { roughness } => {
             // roughness_spread_angle: the suite's own tolerance, on the mesh's roughness.
-            let check = suite::ray_cone::roughness_spread_angle();
+            let check = suite::ray_cone::roughness_spread_angle().check();
             compare_with(
                 stats,
                 "roughness spread",
@@ -962,7 +885,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let gradient_args = (r.width, r.direction, p[0], p[1], p[2], uv[0], uv[1], uv[2]);
     let gradients = Derivatives2::new(r.cone_uv_dx, r.cone_uv_dy);
-    let gradient_check = suite::ray_diff::anisotropic_cone_gradients();
+    let gradient_check = suite::ray_diff::anisotropic_cone_gradients().check();
     compare_with(
         stats,
         "cone uv gradients",
@@ -1021,6 +944,6 @@ fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mu
     };
     assert!(r.total_internal_reflection <= 1, "a flag: {r:?}");
     stats.total_internal_reflections += r.total_internal_reflection as usize;
-    let check = suite::ray_cone::refract_ray_cone();
+    let check = suite::ray_cone::refract_ray_cone().check();
     compare_with(stats, "refracted cone", check, (args, refracted), r);
 }

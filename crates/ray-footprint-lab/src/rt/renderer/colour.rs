@@ -1,16 +1,18 @@
 //! Colour-only rendering, and its timing with GPU timestamps: the pixels a user's renderer would
 //! produce in one mode, with no per-pixel records. The shaders (`colour_*` in `shaders/`) are
 //! compiled once per mode, so each computes only what its mode needs, and their payload carries
-//! only that ([`Mode::payload`]).
+//! only that ([`Mode::payload`]). [`Renderer::time_colour_frames`] times frames of several modes
+//! back to back in one submission ([`crate::timing`]).
 
 use super::super::abi::{RtPushConstants, RtUniforms};
 use super::super::mode::Mode;
 use super::super::pipeline::{self, RayTracing, COLOUR_STAGES, SHADER_DIR};
 use super::{Error, Frame, Records, Renderer, Target};
+use crate::timing::{query_pool, read_queries, write_timestamp, Timestamps};
 use ash::vk;
 use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use shader_proptest::layout::{glsl_layout, GlslPacking};
-use shader_proptest::{barrier_shader_writes_to_host, vulkan, Gpu, Object, Owner};
+use shader_proptest::{barrier_shader_writes_to_host, Owner};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -22,13 +24,6 @@ pub struct ColourPipeline<'r, 'g> {
     ray_tracing: RayTracing,
     closest_hit: Vec<u32>,
     payload_bytes: u32,
-}
-
-/// The device's timestamps: nanoseconds per tick and the bits that count.
-#[derive(Clone, Copy, Debug)]
-struct Timestamps {
-    period_ns: f64,
-    valid_bits: u32,
 }
 
 impl<'g> Renderer<'g> {
@@ -70,9 +65,11 @@ impl ColourPipeline<'_, '_> {
     pub fn render(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, Error> {
         let target = self.renderer.target(push, uniforms, Records::StandIn)?;
         let started = Instant::now();
-        target
-            .owner
-            .submit(|device, command_buffer| self.record(device, command_buffer, &target, push, None))?;
+        target.owner.submit(|device, command_buffer| {
+            self.trace(device, command_buffer, &target, push);
+            // SAFETY: recording into a command buffer in the recording state.
+            unsafe { barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages()) };
+        })?;
         let trace_time = started.elapsed();
         Ok(Frame {
             width: push.width,
@@ -83,59 +80,15 @@ impl ColourPipeline<'_, '_> {
         })
     }
 
-    /// Traces `warm_up` untimed frames, then `frames` frames each bracketed by GPU timestamps
-    /// (one submission per frame, waited for); returns each timed frame's GPU time. Fails with
-    /// [`Error::NotSupported`] on a queue without timestamps.
-    pub fn time(
-        &self,
-        push: &RtPushConstants,
-        uniforms: &RtUniforms,
-        warm_up: usize,
-        frames: usize,
-    ) -> Result<Vec<Duration>, Error> {
-        let timestamps = timestamps(self.owner.gpu)?;
-        let mut target = self.renderer.target(push, uniforms, Records::StandIn)?;
-        let pool = query_pool(&mut target.owner)?;
-        let mut times = Vec::with_capacity(frames);
-        for frame in 0..warm_up + frames {
-            target.owner.submit(|device, command_buffer| {
-                self.record(device, command_buffer, &target, push, Some(pool))
-            })?;
-            let mut ticks = [0u64; 2];
-            // SAFETY: the submission that wrote both queries was waited for.
-            unsafe {
-                self.owner.device().get_query_pool_results(
-                    pool,
-                    0,
-                    &mut ticks,
-                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
-                )
-            }
-            .map_err(|e| Error::Gpu(vulkan("vkGetQueryPoolResults")(e)))?;
-            if frame >= warm_up {
-                times.push(timestamps.elapsed(ticks));
-            }
-        }
-        Ok(times)
-    }
-
-    /// Records one trace into `command_buffer`, between two timestamps in `timing` when given,
-    /// then makes its writes visible to the host.
-    fn record(
+    /// Records into `command_buffer` (recording) one trace with `push` into `target`, and a
+    /// barrier after it: the next trace writes the same colours.
+    fn trace(
         &self,
         device: &ash::Device,
         command_buffer: vk::CommandBuffer,
         target: &Target<'_>,
         push: &RtPushConstants,
-        timing: Option<vk::QueryPool>,
     ) {
-        if let Some(pool) = timing {
-            // SAFETY: recording into a command buffer in the recording state; the pool is alive.
-            unsafe {
-                device.cmd_reset_query_pool(command_buffer, pool, 0, 2);
-                device.cmd_write_timestamp(command_buffer, vk::PipelineStageFlags::TOP_OF_PIPE, pool, 0);
-            }
-        }
         let bind_point = vk::PipelineBindPoint::RAY_TRACING_KHR;
         self.renderer.bind(
             command_buffer,
@@ -144,13 +97,73 @@ impl ColourPipeline<'_, '_> {
             push,
         );
         self.ray_tracing.trace(command_buffer, push.width, push.height);
-        // SAFETY: recording into a command buffer in the recording state; the pool is alive.
+        let written = vk::MemoryBarrier::default()
+            .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+            .dst_access_mask(vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE);
+        let stage = vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR;
+        // SAFETY: recording into a command buffer in the recording state.
         unsafe {
-            if let Some(pool) = timing {
-                device.cmd_write_timestamp(command_buffer, vk::PipelineStageFlags::BOTTOM_OF_PIPE, pool, 1);
+            device.cmd_pipeline_barrier(
+                command_buffer,
+                stage,
+                stage,
+                vk::DependencyFlags::empty(),
+                &[written],
+                &[],
+                &[],
+            )
+        };
+    }
+}
+
+impl<'g> Renderer<'g> {
+    /// Times frames of colour-only pipelines in one submission: for each `(pipeline, frames)` of
+    /// `runs` in order, `frames` frames, each tracing every sample of `samples` (the push constants
+    /// of one sub-pixel sample each, all of one image size; their `mode` is not read), with a
+    /// timestamp before and after each frame and nothing between two frames but a barrier (each
+    /// trace writes the same colours, so each waits for the one before). Returns each run's frame
+    /// times. The colours of a sample overwrite the last one's: the timing leaves out the sum a
+    /// renderer would keep (a read and a write per pixel per sample). Fails with
+    /// [`Error::NotSupported`] on a queue without timestamps.
+    pub fn time_colour_frames(
+        &self,
+        runs: &[(&ColourPipeline<'_, 'g>, usize)],
+        samples: &[RtPushConstants],
+        uniforms: &RtUniforms,
+    ) -> Result<Vec<Vec<Duration>>, Error> {
+        let first = samples
+            .first()
+            .ok_or_else(|| Error::NotSupported(String::from("a frame needs a sample")))?;
+        let timestamps = Timestamps::of(self.owner.gpu).map_err(Error::NotSupported)?;
+        let mut target = self.target(first, uniforms, Records::StandIn)?;
+        let queries: usize = 2 * runs.iter().map(|&(_, frames)| frames).sum::<usize>();
+        let pool = query_pool(&mut target.owner, queries.max(2) as u32)?;
+        target.owner.submit(|device, command_buffer| {
+            // SAFETY: recording into a command buffer in the recording state; the pool is alive.
+            unsafe { device.cmd_reset_query_pool(command_buffer, pool, 0, queries.max(2) as u32) };
+            let mut query = 0;
+            for &(pipeline, frames) in runs {
+                for _ in 0..frames {
+                    // SAFETY: as above; each query was reset at the start.
+                    unsafe { write_timestamp(device, command_buffer, pool, query) };
+                    for sample in samples {
+                        pipeline.trace(device, command_buffer, &target, sample);
+                    }
+                    // SAFETY: as above.
+                    unsafe { write_timestamp(device, command_buffer, pool, query + 1) };
+                    query += 2;
+                }
             }
-            barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages());
+        })?;
+        let times = timestamps.pairs(&read_queries(&target.owner, pool, queries)?);
+        let mut runs_times = Vec::with_capacity(runs.len());
+        let mut rest = &times[..];
+        for &(_, frames) in runs {
+            let (run, after) = rest.split_at(frames);
+            runs_times.push(run.to_vec());
+            rest = after;
         }
+        Ok(runs_times)
     }
 }
 
@@ -165,53 +178,4 @@ fn payload_bytes(defines: &[(&str, String)]) -> Result<u32, Error> {
     glsl_layout(&source, "RtColourPayload", GlslPacking::Scalar, &include_dirs)
         .map(|layout| layout.size)
         .map_err(|error| Error::Gpu(shader_proptest::Error::Compile(error.to_string())))
-}
-
-/// The timestamps of `gpu`'s queue, or why it has none.
-fn timestamps(gpu: &Gpu) -> Result<Timestamps, Error> {
-    let limits = gpu.properties().limits;
-    // SAFETY: a plain query.
-    let families = unsafe {
-        gpu.instance()
-            .get_physical_device_queue_family_properties(gpu.physical_device())
-    };
-    let valid_bits = families
-        .get(gpu.queue_family() as usize)
-        .map_or(0, |family| family.timestamp_valid_bits);
-    if valid_bits == 0 {
-        let compute_and_graphics = limits.timestamp_compute_and_graphics == vk::TRUE;
-        return Err(Error::NotSupported(format!(
-            "{}: queue family {} has timestampValidBits 0 (timestampComputeAndGraphics {compute_and_graphics})",
-            gpu.name(),
-            gpu.queue_family()
-        )));
-    }
-    Ok(Timestamps {
-        period_ns: f64::from(limits.timestamp_period),
-        valid_bits,
-    })
-}
-
-impl Timestamps {
-    /// The time between two timestamps, counting only the valid bits (which may wrap).
-    fn elapsed(self, [start, end]: [u64; 2]) -> Duration {
-        let mask = if self.valid_bits >= 64 {
-            u64::MAX
-        } else {
-            (1u64 << self.valid_bits) - 1
-        };
-        let ticks = end.wrapping_sub(start) & mask;
-        Duration::from_secs_f64(ticks as f64 * self.period_ns * 1e-9)
-    }
-}
-
-/// A pool of two timestamp queries, kept by `owner`.
-fn query_pool(owner: &mut Owner<'_>) -> Result<vk::QueryPool, Error> {
-    let info = vk::QueryPoolCreateInfo::default()
-        .query_type(vk::QueryType::TIMESTAMP)
-        .query_count(2);
-    // SAFETY: a valid create-info; the pool is handed to the owner.
-    let pool = unsafe { owner.device().create_query_pool(&info, None) }
-        .map_err(|e| Error::Gpu(vulkan("vkCreateQueryPool")(e)))?;
-    Ok(owner.keep(pool, Object::QueryPool))
 }

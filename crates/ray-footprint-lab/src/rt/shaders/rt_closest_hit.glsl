@@ -1,5 +1,5 @@
 // ray-footprint ray-tracing renderer: what both pipelines' closest-hit shaders share, the hit
-// attributes and the hit as the functions of rt_common.glsl take it. Include it after
+// attributes and the hit as the shading code (rt_shading.glsl) takes it. Include it after
 // rt_common.glsl in closest-hit shaders only (it reads their built-in variables).
 
 #ifndef RT_CLOSEST_HIT_GLSL

@@ -1,0 +1,181 @@
+//! Interval enclosures of the ray-cone functions that chain dozens of operations (refraction and
+//! roughness): each function here re-evaluates the shader function of its name, or a step of one,
+//! in interval arithmetic ([`shader_proptest::interval`]) in the same order of operations as
+//! `src/ray_cone.rs`, and its width is the record's tolerance. Also here: whether a refraction's decisions are certain, so that
+//! the check keeps to cases whose enclosure says something.
+
+use super::RefractArgs;
+use glam::Vec3;
+use ray_footprint::ray_cone::{
+    RayCone, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS, MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
+};
+use shader_proptest::interval::{interval3, select, Interval, Interval2, IntervalVec};
+
+/// `(sin, cos)` of an interval.
+fn angle_sin_cos(angle: Interval) -> Interval2 {
+    IntervalVec([angle.sin(), angle.cos()])
+}
+
+fn incidence_sin_cos(normal: Vec3, direction: Vec3, cosine: Interval) -> Interval2 {
+    let tangential = interval3(direction) - interval3(normal) * cosine;
+    let sin_cos = IntervalVec([tangential.dot(tangential).sqrt(), cosine.abs()]);
+    let length = sin_cos.dot(sin_cos).sqrt();
+    let min = f64::from(MIN_MAGNITUDE);
+    let components = select(
+        length.hi < min,
+        length.lo < min,
+        || vec![Interval::c(0.0), Interval::c(1.0)],
+        || (sin_cos / length.at_least(min)).components(),
+    );
+    IntervalVec([components[0], components[1]])
+}
+
+fn boundary_incidence(incidence: Interval2, local: Interval2, side: f64) -> Interval2 {
+    let ([sin_i, cos_i], [sin_q, cos_q]) = (incidence.0, local.0);
+    IntervalVec([
+        sin_i * cos_q + Interval::c(side) * cos_i * sin_q,
+        cos_i * cos_q - Interval::c(side) * sin_i * sin_q,
+    ])
+}
+
+fn refracted_sin_cos(incidence: Interval2, eta: f32) -> Interval2 {
+    let [sin, cos] = incidence.0;
+    let eta = Interval::exact(eta);
+    let cos2 = cos * cos + ((Interval::c(1.0) - eta) * sin) * ((Interval::c(1.0) + eta) * sin);
+    IntervalVec([(eta * sin).clamp_c(-1.0, 1.0), cos2.max_c(0.0).sqrt()])
+}
+
+fn boundary_hit(width: f32, side: f64, incidence: Interval2, half_spread: Interval2) -> Interval {
+    let [sin_i, cos_i] = incidence.0;
+    let [sin_h, cos_h] = half_spread.0;
+    let cos_boundary = cos_i * cos_h - Interval::c(side) * sin_i * sin_h;
+    Interval::c(side) * Interval::c(0.5) * Interval::exact(width) * cos_h
+        / cos_boundary.max_c(f64::from(MIN_COS))
+}
+
+fn boundary_offset(
+    hit: Interval,
+    side: f64,
+    refracted: Interval2,
+    tilt: Interval2,
+    transmitted: Interval2,
+) -> Interval {
+    let ([sin_tau, cos_tau], [sin_tilt, cos_tilt]) = (refracted.0, tilt.0);
+    let cos_rho = cos_tau * cos_tilt + Interval::c(side) * sin_tau * sin_tilt;
+    let sin_rho = sin_tau * cos_tilt - Interval::c(side) * cos_tau * sin_tilt;
+    hit * cos_rho / (cos_rho * transmitted.0[1] + sin_rho * transmitted.0[0]).max_c(f64::from(MIN_COS))
+}
+
+fn refracted_sine_gap(
+    eta: f32,
+    incidence: Interval2,
+    local: Interval2,
+    upper: Interval2,
+    lower: Interval2,
+) -> Interval {
+    let eta = Interval::exact(eta);
+    let (upper_sine, lower_sine) = (eta * upper.0[0], eta * lower.0[0]);
+    let (upper_size, lower_size) = (upper_sine.abs(), lower_sine.abs());
+    select(
+        upper_size.hi <= 1.0 && lower_size.hi <= 1.0,
+        upper_size.lo <= 1.0 && lower_size.lo <= 1.0,
+        || vec![Interval::c(2.0) * eta * incidence.0[1] * local.0[0]],
+        || vec![upper_sine.clamp_c(-1.0, 1.0) - lower_sine.clamp_c(-1.0, 1.0)],
+    )[0]
+}
+
+fn refracted_angle_between(sine_gap: Interval, upper: Interval2, lower: Interval2) -> Interval {
+    let ([sin_u, cos_u], [sin_l, cos_l]) = (upper.0, lower.0);
+    let cos_between = cos_u * cos_l + sin_u * sin_l;
+    let cos_sum = (cos_u + cos_l)
+        .max((sine_gap * (sin_u + sin_l)).abs().sqrt())
+        .max_c(f64::from(MIN_MAGNITUDE));
+    let sin_between = sine_gap * (Interval::c(1.0) + cos_between) / cos_sum;
+    Interval::atan2(sin_between, cos_between)
+}
+
+/// The transmitted cone (its clamps cover the part of `eta sin i`'s interval above 1).
+fn transmitted_cone(cone: RayCone, incidence: Interval2, facing_spread: f32, index: f32) -> Vec<Interval> {
+    let transmitted = refracted_sin_cos(incidence, index);
+    let limit = (Interval::c(f64::from(MAX_INCIDENCE_ANGLE))
+        - Interval::atan2(incidence.0[0], incidence.0[1]))
+    .max_c(0.0);
+    let half_spread = (Interval::c(0.5) * Interval::exact(cone.spread_angle))
+        .max(-limit)
+        .min(limit);
+    let signed_half = if cone.width < 0.0 { -0.5 } else { 0.5 };
+    let tilt = Interval::c(signed_half)
+        * Interval::exact(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD));
+    let local = angle_sin_cos(half_spread + tilt);
+    let upper_incidence = boundary_incidence(incidence, local, 1.0);
+    let lower_incidence = boundary_incidence(incidence, local, -1.0);
+    let upper = refracted_sin_cos(upper_incidence, index);
+    let lower = refracted_sin_cos(lower_incidence, index);
+    let sine_gap = refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
+    let half = angle_sin_cos(half_spread);
+    let tilt_sin_cos = angle_sin_cos(tilt);
+    let upper_hit = boundary_hit(cone.width, 1.0, incidence, half);
+    let lower_hit = boundary_hit(cone.width, -1.0, incidence, half);
+    vec![
+        boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
+            - boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
+        refracted_angle_between(sine_gap, upper, lower) - Interval::c(2.0) * tilt,
+        Interval::c(0.0),
+    ]
+}
+
+/// Both branches of `refract_ray_cone` for one normal orientation (`facing_spread`).
+fn refract_facing(
+    &(cone, normal, direction, _, eta): &RefractArgs,
+    cosine: Interval,
+    facing_spread: f32,
+) -> Vec<Interval> {
+    let incidence = incidence_sin_cos(normal, direction, cosine);
+    let index = eta.max(0.0);
+    let sin_t = Interval::exact(index) * incidence.0[0];
+    select(
+        sin_t.lo > 1.0,
+        sin_t.hi > 1.0,
+        || {
+            vec![
+                Interval::exact(cone.width),
+                Interval::exact(cone.spread_angle) + Interval::c(2.0) * Interval::exact(facing_spread),
+                Interval::c(1.0),
+            ]
+        },
+        || transmitted_cone(cone, incidence, facing_spread, index),
+    )
+}
+
+/// Whether both of `refract_ray_cone`'s decisions are certain: which side of the normal the ray
+/// meets, and whether it is totally internally reflected. Within rounding of either (a grazing ray,
+/// the critical angle) both answers are right and the flag's tolerance would be vacuous; those
+/// cases are checked separately (the degenerate table, the edge-case suite).
+pub(super) fn refraction_decided(&(_, normal, direction, _, eta): &RefractArgs) -> bool {
+    let cosine = interval3(normal).dot(interval3(direction));
+    let incidence = incidence_sin_cos(normal, direction, cosine);
+    let sin_t = Interval::exact(eta.max(0.0)) * incidence.0[0];
+    let side_decided = cosine.lo > 0.0 || cosine.hi <= 0.0;
+    let reflection_decided = sin_t.lo > 1.0 || sin_t.hi <= 1.0;
+    side_decided && reflection_decided
+}
+
+pub(super) fn refract_ray_cone(args: &RefractArgs) -> Vec<Interval> {
+    let &(_, normal, direction, beta, _) = args;
+    let cosine = interval3(normal).dot(interval3(direction));
+    select(
+        cosine.lo > 0.0,
+        cosine.hi > 0.0,
+        || refract_facing(args, cosine, -beta),
+        || refract_facing(args, cosine, beta),
+    )
+}
+
+pub(super) fn roughness_spread_angle(roughness: f32) -> Interval {
+    let r = Interval::exact(roughness.clamp(0.0, 1.0));
+    let alpha = r * r;
+    let alpha2 = alpha * alpha;
+    let variance =
+        Interval::c(0.5) * alpha2 / (Interval::c(1.0) - alpha2).max_c(f64::from(MIN_ROUGHNESS_DENOMINATOR));
+    Interval::c(2.0) * variance.sqrt()
+}

@@ -1,0 +1,130 @@
+//! Records of `ray_cone`: Refraction and roughness.
+
+use super::enclosure::{self, refraction_decided};
+use super::strategy::{eta, ray_cone};
+use super::{RefractArgs, MODULE};
+use crate::degenerate::{cone, direction_at, same, value};
+use crate::record::Record;
+use crate::strategy::{angle, normal_and_direction, one_argument, scalar};
+use glam::Vec3;
+use proptest::prelude::*;
+use ray_footprint::ray_cone::{
+    self as rc, RefractedRayCone, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_ROUGHNESS_DENOMINATOR,
+};
+
+/// `rf_refract_ray_cone`: the enclosure of the refracted cone (the hull of both branches where
+/// the normal's side or total internal reflection is within rounding of changing).
+pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
+    let z = Vec3::Z;
+    let head_on = Vec3::NEG_Z;
+    let in_plane = Vec3::X;
+    let grazing = direction_at(1.0e-6);
+    let thirty_degrees = Vec3::new(0.5, 0.0, -0.866_025_4);
+    Record::new(
+        MODULE,
+        "refract_ray_cone",
+        |(cone, n, d, beta, eta)| rc::refract_ray_cone(cone, n, d, beta, eta),
+        || {
+            (ray_cone(), normal_and_direction(), any::<bool>(), angle(), eta())
+                .prop_map(|(cone, (n, d), behind, beta, eta)| {
+                    (cone, if behind { -n } else { n }, d, beta, eta)
+                })
+                .prop_filter(
+                    "within rounding of grazing or of the critical angle",
+                    refraction_decided,
+                )
+                .boxed()
+        },
+    )
+    .enclosure(enclosure::refract_ray_cone)
+    .fuzz(|d| (d.cone(), d.unit(), d.unit(), d.angle(), d.scalar()))
+    .degenerate(vec![
+        value(
+            "normal incidence, flat, no spread (eta 1.5)",
+            "(width, 0), not reflected",
+            (cone(0.5, 0.0), z, head_on, 0.0, 1.5),
+            vec![0.5, 0.0, 0.0],
+        ),
+        value(
+            "zero cone",
+            "zero cone",
+            (cone(0.0, 0.0), z, thirty_degrees, 0.0, 1.5),
+            vec![0.0, 0.0, 0.0],
+        ),
+        value(
+            "central ray past the critical angle (sin i = 0.8, eta 1.5)",
+            "the reflected cone (width, spread + 2 beta), flag set",
+            (cone(0.25, 0.125), z, Vec3::new(0.8, 0.0, -0.6), 0.0625, 1.5),
+            vec![0.25, 0.25, 1.0],
+        ),
+        same(
+            "normal facing away from the ray (dot(n, d) > 0)",
+            "as the flipped normal with the negated normal spread",
+            (cone(0.01, 0.002), -z, thirty_degrees, 0.01, 1.5),
+            (cone(0.01, 0.002), z, thirty_degrees, -0.01, 1.5),
+        ),
+        same(
+            "grazing (|dot(n, d)| = 1e-6), eta 0.5",
+            "as a direction in the surface plane: both boundary rays land at |cos| = MIN_COS",
+            (cone(0.01, 0.002), z, grazing, 0.0, 0.5),
+            (cone(0.01, 0.002), z, in_plane, 0.0, 0.5),
+        ),
+        same(
+            "spread wider than the surface allows (3.5 at normal incidence)",
+            "as spread 2 MAX_INCIDENCE_ANGLE (both boundary rays graze)",
+            (cone(0.01, 3.5), z, head_on, 0.0, 1.5),
+            (cone(0.01, 2.0 * MAX_INCIDENCE_ANGLE), z, head_on, 0.0, 1.5),
+        ),
+        same(
+            "normal spread 10",
+            "as MAX_NORMAL_SPREAD",
+            (cone(0.01, 0.002), z, thirty_degrees, 10.0, 1.5),
+            (cone(0.01, 0.002), z, thirty_degrees, MAX_NORMAL_SPREAD, 1.5),
+        ),
+        same(
+            "negative eta",
+            "as eta 0",
+            (cone(0.01, 0.002), z, thirty_degrees, 0.0, -2.0),
+            (cone(0.01, 0.002), z, thirty_degrees, 0.0, 0.0),
+        ),
+        same(
+            "zero direction",
+            "as normal incidence (d = -n)",
+            (cone(0.5, 0.01), z, Vec3::ZERO, 0.0, 1.5),
+            (cone(0.5, 0.01), z, head_on, 0.0, 1.5),
+        ),
+    ])
+}
+
+/// `rf_roughness_spread_angle`: the enclosure of the spread.
+pub fn roughness_spread_angle() -> Record<(f32,), f32> {
+    Record::new(
+        MODULE,
+        "roughness_spread_angle",
+        |(r,)| rc::roughness_spread_angle(r),
+        || {
+            let roughness = prop_oneof![
+                4 => 0.0f32..1.0,
+                1 => Just(0.0f32),
+                1 => Just(1.0f32),
+                1 => 0.99f32..1.0,
+                1 => scalar(),
+            ];
+            one_argument(roughness)
+        },
+    )
+    .enclosure(|&(r,)| vec![enclosure::roughness_spread_angle(r)])
+    .fuzz(|d| (d.scalar(),))
+    .range(0.0, 142.0, "roughness spread")
+    .degenerate(vec![
+        value("roughness 0", "0", (0.0,), vec![0.0]),
+        value(
+            "roughness 1",
+            "2 sqrt(0.5 / MIN_ROUGHNESS_DENOMINATOR), about 141.4",
+            (1.0,),
+            vec![2.0 * (0.5 / MIN_ROUGHNESS_DENOMINATOR).sqrt()],
+        ),
+        same("negative roughness", "as roughness 0", (-0.5,), (0.0,)),
+        same("roughness 2", "as roughness 1", (2.0,), (1.0,)),
+    ])
+}

@@ -1,0 +1,66 @@
+//! The records of the ray_diff module, one per function, in the module's order, one file per
+//! section of the module.
+//!
+//! Every tolerance is the width of an enclosure: the record re-evaluates its function in interval
+//! arithmetic on the same inputs, widening after each operation by the rounding error that Vulkan's
+//! precision rules allow the device (and that the mirror makes), so both results lie inside. The
+//! re-evaluations (one per shader function, in the module's order of operations) are in the
+//! `enclosure` submodule, the case strategies in `strategy`, the degenerate rows several records
+//! share in `rows`.
+
+mod camera;
+mod cones;
+mod derivatives;
+pub mod enclosure;
+mod gbuffer;
+mod mapping;
+mod reflection;
+mod reintersection;
+mod rows;
+mod strategy;
+mod transfer;
+
+use glam::{Mat4, Vec2, Vec3};
+use ray_footprint::ray_diff::RayDiff;
+use ray_footprint::shaders::Module;
+
+pub use camera::{
+    eye_ray_diff, eye_ray_diff_from_matrices, eye_ray_direction, eye_ray_direction_from_matrices,
+    normalized_derivative, pixel_directions,
+};
+pub use cones::{
+    anisotropic_cone_axes, anisotropic_cone_gradients, cone_barycentric_deltas, cone_from_ray_diff,
+    ray_diff_from_cone,
+};
+pub use derivatives::{
+    barycentric_derivatives, barycentric_w_derivatives, lod_box, lod_isotropic, sample_grad_gradients,
+    secondary_origin_derivatives, texel_derivatives, texture_derivatives,
+};
+pub use enclosure::{direction_well_conditioned, WELL_CONDITIONED};
+pub use gbuffer::{gbuffer_ray_diff, tangent_plane_offsets};
+pub use mapping::{planar_mapping_gradients, triplanar_gradients, triplanar_weights};
+pub use reflection::{normal_derivatives, reflect_ray_diff, refract_ray_diff};
+pub use reintersection::{
+    barycentric_deltas, barycentric_offsets, intersect_triangle_plane, uv_gradients_from_offsets,
+};
+pub(crate) use rows::{delta_rows, offset_rows, plane_intersection_rows, OFFSET};
+pub(crate) use strategy::offset_args;
+pub use transfer::transfer;
+
+/// The arguments of the pinhole camera functions: pixel, image size, fov_y, right, up, view.
+pub type Camera = (Vec2, Vec2, f32, Vec3, Vec3, Vec3);
+
+/// The arguments of the matrix camera functions: pixel, image size, view_inv, proj_inv.
+pub type Matrices = (Vec2, Vec2, Mat4, Mat4);
+
+/// The arguments of `barycentric_derivatives`: differential, direction, t, the triangle.
+pub type BarycentricArgs = (RayDiff, Vec3, f32, Vec3, Vec3, Vec3);
+
+/// The arguments of the re-intersection functions (here and in the f64 module).
+pub type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
+
+/// The arguments of `anisotropic_cone_gradients`: width, direction, the triangle, its UVs.
+pub type ConeGradientArgs = (f32, Vec3, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
+
+/// The module of these records.
+const MODULE: Module = Module::RayDiff;

@@ -1,0 +1,494 @@
+//! Timing kernels for single shader functions: each invocation calls the function a fixed number
+//! of times in a loop in which every argument depends on the last result, so that the compiler can
+//! neither hoist a call out of the loop nor drop any of its work.
+//!
+//! A function's signature comes from its module's GLSL source ([`signatures`]): the parameter and
+//! result types as shader-proptest's [`ShaderType`]s, structs with their fields. [`timing_source`]
+//! writes, in any of the three languages, a function `time_<callee>` with the callee's parameters
+//! and result and one more float, `zero`, that calls the callee a given number of times: after
+//! each call it sums every component of the result, multiplies the sum by `zero`, and adds that
+//! product `d` to every component of every argument (integers get `d` converted, booleans flip
+//! when `d > 0.5`). The kernel reads `zero` from the input words like every argument, and it is 0,
+//! so the arguments stay what they are; but no compiler can know it, so each call needs every
+//! component of the last one. (A test of the sum against a bound the result never reaches does
+//! not hold: a compiler that knows the result's range, a `sign` or a packed integer, drops the
+//! dependence and runs the function once.) The loop's own work per call is a multiply, an add per
+//! result component and an add per argument component, the same for any two callees of one
+//! signature (a function and a peer's original behind an adapter with the function's signature).
+//! shader-proptest's [`kernel_source`] wraps `time_<callee>` in a compute kernel that reads each
+//! invocation's arguments from a buffer and writes the last result back ([`inputs`] fills the
+//! buffer).
+
+use ray_footprint::shaders::Module;
+use shader_proptest::{kernel_source, Language, Shader, ShaderType, StructType};
+
+/// A shader function's name, parameter types and result type.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Signature {
+    /// The shader name (`rf_width_at`).
+    pub name: String,
+    /// The parameters' types, in order.
+    pub parameters: Vec<ShaderType>,
+    /// The result's type.
+    pub result: ShaderType,
+}
+
+/// Every public function of `module` (its Rust mirror's, in module order) with its shader
+/// signature, or why no kernel carries it: no GLSL function of that name, or a parameter or
+/// result of a type without words in the kernels (`double`, `dvec3`).
+pub fn signatures(module: Module) -> Vec<(String, Result<Signature, String>)> {
+    let glsl = module.glsl();
+    let structs = glsl_structs();
+    module
+        .functions()
+        .into_iter()
+        .map(|function| {
+            let name = format!("rf_{function}");
+            let signature = glsl_signature(glsl, &name).and_then(|(result, parameters)| {
+                Ok(Signature {
+                    result: shader_type(&result, &structs)?,
+                    parameters: parameters
+                        .iter()
+                        .map(|ty| shader_type(ty, &structs))
+                        .collect::<Result<_, _>>()?,
+                    name: name.clone(),
+                })
+            });
+            (name, signature)
+        })
+        .collect()
+}
+
+/// The result type and parameter types of the GLSL function `name` in `source`.
+fn glsl_signature(source: &str, name: &str) -> Result<(String, Vec<String>), String> {
+    let opening = format!(" {name}(");
+    let start = source
+        .lines()
+        .scan(0, |offset, line| {
+            let at = *offset;
+            *offset += line.len() + 1;
+            Some((at, line))
+        })
+        .find(|(_, line)| {
+            line.find(&opening)
+                .is_some_and(|at| !line[..at].contains(' ') && !line.starts_with("//"))
+        })
+        .map(|(at, _)| at)
+        .ok_or_else(|| format!("no GLSL function {name}"))?;
+    let declaration = &source[start..];
+    let open = declaration.find('(').unwrap_or(0);
+    let close = declaration.find(')').ok_or_else(|| format!("{name}: no ')'"))?;
+    let result = declaration[..open]
+        .split_whitespace()
+        .next()
+        .unwrap_or("")
+        .to_string();
+    let parameters = declaration[open + 1..close]
+        .split(',')
+        .map(|parameter| {
+            let words: Vec<&str> = parameter.split_whitespace().collect();
+            match words.as_slice() {
+                [ty, _name] => Ok(ty.to_string()),
+                _ => Err(format!(
+                    "{name}: a parameter '{}' other than 'TYPE NAME'",
+                    parameter.trim()
+                )),
+            }
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((result, parameters))
+}
+
+/// Every struct the GLSL modules declare: its name and its fields' types and names, in order.
+fn glsl_structs() -> Vec<(String, Vec<(String, String)>)> {
+    let mut structs = Vec::new();
+    for module in Module::ALL {
+        let mut lines = module.glsl().lines();
+        while let Some(line) = lines.next() {
+            let Some(name) = line
+                .strip_prefix("struct ")
+                .and_then(|rest| rest.strip_suffix(" {"))
+            else {
+                continue;
+            };
+            let fields = lines
+                .by_ref()
+                .take_while(|line| !line.starts_with('}'))
+                .filter_map(|line| {
+                    let field = line.trim().strip_suffix(';')?;
+                    let (ty, name) = field.split_once(' ')?;
+                    Some((ty.to_string(), name.to_string()))
+                })
+                .collect();
+            structs.push((name.to_string(), fields));
+        }
+    }
+    structs
+}
+
+/// The kernels' type of the GLSL type `name`; structs from `structs` (made `'static` once per
+/// signature: a bench's few hundred).
+fn shader_type(name: &str, structs: &[(String, Vec<(String, String)>)]) -> Result<ShaderType, String> {
+    Ok(match name {
+        "float" => ShaderType::F32,
+        "uint" => ShaderType::U32,
+        "int" => ShaderType::I32,
+        "bool" => ShaderType::Bool,
+        "vec2" => ShaderType::Vec2,
+        "vec3" => ShaderType::Vec3,
+        "vec4" => ShaderType::Vec4,
+        "mat2" => ShaderType::Mat2,
+        "mat3" => ShaderType::Mat3,
+        "mat4" => ShaderType::Mat4,
+        _ => {
+            let (struct_name, fields) = structs
+                .iter()
+                .find(|(struct_name, _)| struct_name == name)
+                .ok_or_else(|| format!("the type {name}, which the kernels carry no words of"))?;
+            let fields: Vec<(&'static str, ShaderType)> = fields
+                .iter()
+                .map(|(ty, field)| Ok((leak(field), shader_type(ty, structs)?)))
+                .collect::<Result<_, String>>()?;
+            ShaderType::Struct(Box::leak(Box::new(StructType {
+                name: leak(struct_name),
+                fields: Box::leak(fields.into_boxed_slice()),
+                rust_layout: None,
+            })))
+        }
+    })
+}
+
+fn leak(text: &str) -> &'static str {
+    Box::leak(text.to_string().into_boxed_str())
+}
+
+/// A component of a value: its path (`a0.cone.width`, `a1[2]`) and type, a scalar or a vector.
+fn leaves(path: &str, ty: ShaderType, out: &mut Vec<(String, ShaderType)>) {
+    match ty {
+        ShaderType::Struct(s) => {
+            for &(field, field_ty) in s.fields {
+                leaves(&format!("{path}.{field}"), field_ty, out);
+            }
+        }
+        ShaderType::Mat2 | ShaderType::Mat3 | ShaderType::Mat4 => {
+            let (count, vector) = match ty {
+                ShaderType::Mat2 => (2, ShaderType::Vec2),
+                ShaderType::Mat3 => (3, ShaderType::Vec3),
+                _ => (4, ShaderType::Vec4),
+            };
+            out.extend((0..count).map(|i| (format!("{path}[{i}]"), vector)));
+        }
+        scalar_or_vector => out.push((path.to_string(), scalar_or_vector)),
+    }
+}
+
+/// `ty`'s name in `language`.
+fn type_name(language: Language, ty: ShaderType) -> String {
+    let vector = |n: usize| match language {
+        Language::Wgsl => format!("vec{n}<f32>"),
+        Language::Glsl => format!("vec{n}"),
+        Language::Slang => format!("float{n}"),
+    };
+    let matrix = |n: usize| match language {
+        Language::Wgsl => format!("mat{n}x{n}<f32>"),
+        Language::Glsl => format!("mat{n}"),
+        Language::Slang => format!("float{n}x{n}"),
+    };
+    match (language, ty) {
+        (Language::Wgsl, ShaderType::F32) => "f32".into(),
+        (Language::Wgsl, ShaderType::U32) => "u32".into(),
+        (Language::Wgsl, ShaderType::I32) => "i32".into(),
+        (_, ShaderType::F32) => "float".into(),
+        (_, ShaderType::U32) => "uint".into(),
+        (_, ShaderType::I32) => "int".into(),
+        (_, ShaderType::Bool) => "bool".into(),
+        (_, ShaderType::Vec2) => vector(2),
+        (_, ShaderType::Vec3) => vector(3),
+        (_, ShaderType::Vec4) => vector(4),
+        (_, ShaderType::Mat2) => matrix(2),
+        (_, ShaderType::Mat3) => matrix(3),
+        (_, ShaderType::Mat4) => matrix(4),
+        (_, ShaderType::Struct(s)) => s.name.into(),
+    }
+}
+
+/// The float that a component (`path`, a scalar or a vector) adds to the result's sum.
+fn summand(language: Language, path: &str, ty: ShaderType) -> String {
+    let float = if language == Language::Wgsl {
+        "f32"
+    } else {
+        "float"
+    };
+    match ty {
+        ShaderType::F32 => path.to_string(),
+        ShaderType::Vec2 | ShaderType::Vec3 | ShaderType::Vec4 => {
+            format!("dot({path}, {}(1.0))", type_name(language, ty))
+        }
+        _ => format!("{float}({path})"),
+    }
+}
+
+/// The statement that adds the float `d` to a component of an argument.
+fn perturbation(language: Language, path: &str, ty: ShaderType) -> String {
+    match ty {
+        ShaderType::Bool => format!("{path} = {path} != (d > 0.5);"),
+        ShaderType::U32 | ShaderType::I32 => format!("{path} += {}(d);", type_name(language, ty)),
+        _ => format!("{path} += d;"),
+    }
+}
+
+/// The source of `time_<callee>`: `signature`'s parameters and `zero`, `signature`'s result,
+/// calling `callee` (which takes `signature`'s parameters and returns its result) `iterations`
+/// times, each call's arguments depending on the last result (see the module documentation).
+pub fn timing_source(language: Language, signature: &Signature, callee: &str, iterations: u32) -> String {
+    let arguments: Vec<String> = (0..signature.parameters.len()).map(|i| format!("v{i}")).collect();
+    let call = format!("{callee}({})", arguments.join(", "));
+    let mut result_leaves = Vec::new();
+    leaves("r", signature.result, &mut result_leaves);
+    let sum: Vec<String> = result_leaves
+        .iter()
+        .map(|(path, ty)| summand(language, path, *ty))
+        .collect();
+    let mut argument_leaves = Vec::new();
+    for (i, &ty) in signature.parameters.iter().enumerate() {
+        leaves(&format!("v{i}"), ty, &mut argument_leaves);
+    }
+    let perturb: String = argument_leaves
+        .iter()
+        .map(|(path, ty)| format!("        {}\n", perturbation(language, path, *ty)))
+        .collect();
+    let result = type_name(language, signature.result);
+    let sum = sum.join(" + ");
+    match language {
+        Language::Wgsl => {
+            let parameters: Vec<String> = signature
+                .parameters
+                .iter()
+                .enumerate()
+                .map(|(i, &ty)| format!("a{i}: {}", type_name(language, ty)))
+                .collect();
+            let copies: String = (0..signature.parameters.len())
+                .map(|i| format!("    var v{i} = a{i};\n"))
+                .collect();
+            format!(
+                "fn time_{callee}({}, zero: f32) -> {result} {{
+{copies}    var r = {call};
+    for (var k = 1u; k < {iterations}u; k++) {{
+        let d = ({sum}) * zero;
+{perturb}        r = {call};
+    }}
+    return r;
+}}
+",
+                parameters.join(", ")
+            )
+        }
+        Language::Glsl | Language::Slang => {
+            let parameters: Vec<String> = signature
+                .parameters
+                .iter()
+                .enumerate()
+                .map(|(i, &ty)| format!("{} a{i}", type_name(language, ty)))
+                .collect();
+            let copies: String = signature
+                .parameters
+                .iter()
+                .enumerate()
+                .map(|(i, &ty)| format!("    {} v{i} = a{i};\n", type_name(language, ty)))
+                .collect();
+            format!(
+                "{result} time_{callee}({}, float zero) {{
+{copies}    {result} r = {call};
+    for (uint k = 1u; k < {iterations}u; k++) {{
+        float d = ({sum}) * zero;
+{perturb}        r = {call};
+    }}
+    return r;
+}}
+",
+                parameters.join(", ")
+            )
+        }
+    }
+}
+
+/// What a timing kernel calls: `callee`, which has `signature`, defined by the module's shader or
+/// by `extra` (an adapter and what it calls) appended to it, `iterations` times per invocation.
+#[derive(Clone, Copy, Debug)]
+pub struct Callee<'a> {
+    /// The function's signature.
+    pub signature: &'a Signature,
+    /// The name called.
+    pub name: &'a str,
+    /// Source appended to the module's (empty for the module's own function).
+    pub extra: &'a str,
+    /// Calls per invocation.
+    pub iterations: u32,
+}
+
+/// The timing kernel of `callee` in `language`: `module`'s shader (its source, include
+/// directory, features and capabilities) with the callee's extra source and `time_<callee>`
+/// appended, and the kernel's source.
+pub fn timing_kernel(module: Module, language: Language, callee: Callee<'_>) -> (Shader, String) {
+    let Callee {
+        signature,
+        name: callee,
+        extra,
+        iterations,
+    } = callee;
+    let base = module.shader(language);
+    let source = format!(
+        "{}\n{extra}\n{}",
+        base.source(),
+        timing_source(language, signature, callee, iterations)
+    );
+    let mut timed = match language {
+        Language::Wgsl => Shader::wgsl(source).capabilities(module.naga_capabilities()),
+        Language::Glsl => Shader::glsl(source),
+        Language::Slang => Shader::slang(source),
+    };
+    for dir in base.include_dirs() {
+        timed = timed.include_dir(dir);
+    }
+    for &feature in base.features() {
+        timed = timed.requires(feature);
+    }
+    let parameters: Vec<ShaderType> = signature
+        .parameters
+        .iter()
+        .copied()
+        .chain([ShaderType::F32])
+        .collect();
+    let kernel = kernel_source(&timed, &format!("time_{callee}"), &parameters, signature.result);
+    (timed, kernel)
+}
+
+/// A small deterministic generator (xorshift32) of the input words.
+struct Words(u32);
+
+impl Words {
+    fn next(&mut self) -> u32 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 17;
+        self.0 ^= self.0 << 5;
+        self.0
+    }
+
+    /// A float in [0.1, 1).
+    fn unit(&mut self) -> f32 {
+        0.1 + 0.9 * (self.next() >> 8) as f32 / 16_777_216.0
+    }
+}
+
+/// The input words of `invocations` invocations of `time_<callee>` for a callee of `signature`:
+/// its arguments, then `zero` (0.0). Every float of an argument is in [0.1, 1), every
+/// `vec3` of unit length (normals, directions and positions alike: a triangle of three of them is
+/// not degenerate), every matrix the identity plus up to 0.1 in each element, every integer in
+/// 1 to 8, every boolean true in every other group of 32 invocations (so a warp of 32 never
+/// diverges on it).
+pub fn inputs(signature: &Signature, invocations: usize) -> Vec<u32> {
+    let mut words = Words(0x9e37_79b9);
+    let mut out = Vec::new();
+    for invocation in 0..invocations {
+        for &ty in &signature.parameters {
+            write_value(ty, invocation, &mut words, &mut out);
+        }
+        out.push(0.0f32.to_bits());
+    }
+    out
+}
+
+fn write_value(ty: ShaderType, invocation: usize, words: &mut Words, out: &mut Vec<u32>) {
+    match ty {
+        ShaderType::F32 | ShaderType::Vec2 | ShaderType::Vec4 => {
+            out.extend((0..ty.words()).map(|_| words.unit().to_bits()));
+        }
+        ShaderType::Vec3 => {
+            let v = glam::Vec3::new(words.unit(), words.unit(), words.unit()).normalize();
+            out.extend(v.to_array().map(f32::to_bits));
+        }
+        ShaderType::U32 | ShaderType::I32 => out.push(1 + words.next() % 8),
+        ShaderType::Bool => out.push(u32::from((invocation / 32) % 2 == 1)),
+        ShaderType::Mat2 | ShaderType::Mat3 | ShaderType::Mat4 => {
+            let n = match ty {
+                ShaderType::Mat2 => 2,
+                ShaderType::Mat3 => 3,
+                _ => 4,
+            };
+            for column in 0..n {
+                for row in 0..n {
+                    let identity = if row == column { 1.0 } else { 0.0 };
+                    out.push((identity + 0.1 * words.unit()).to_bits());
+                }
+            }
+        }
+        ShaderType::Struct(s) => {
+            for &(_, field) in s.fields {
+                write_value(field, invocation, words, out);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_function_of_a_module_has_its_signature() {
+        let signatures = signatures(Module::RayCone);
+        let width_at = signatures
+            .iter()
+            .find(|(name, _)| name == "rf_width_at")
+            .and_then(|(_, signature)| signature.as_ref().ok())
+            .expect("rf_width_at");
+        assert_eq!(width_at.result, ShaderType::F32);
+        assert_eq!(width_at.parameters.len(), 2);
+        let ShaderType::Struct(cone) = width_at.parameters[0] else {
+            panic!("the cone is a struct");
+        };
+        assert_eq!((cone.name, cone.fields.len()), ("RfRayCone", 2));
+        let refract = signatures
+            .iter()
+            .find(|(name, _)| name == "rf_refract_ray_cone")
+            .and_then(|(_, signature)| signature.as_ref().ok())
+            .expect("a signature over two lines");
+        assert_eq!(refract.parameters.len(), 5);
+    }
+
+    #[test]
+    fn a_type_without_words_is_named() {
+        let error = shader_type("dvec3", &glsl_structs()).unwrap_err();
+        assert!(error.contains("dvec3"), "{error}");
+        let f64_module = signatures(Module::RayDiffF64);
+        assert!(
+            f64_module.iter().all(|(_, signature)| signature.is_ok()),
+            "its public functions take floats"
+        );
+    }
+
+    #[test]
+    fn the_loop_perturbs_every_argument_component_by_the_result() {
+        let signature = signatures(Module::RayCone)
+            .into_iter()
+            .find(|(name, _)| name == "rf_propagate")
+            .and_then(|(_, signature)| signature.ok())
+            .expect("rf_propagate");
+        let glsl = timing_source(Language::Glsl, &signature, "rf_propagate", 8);
+        for line in [
+            "RfRayCone time_rf_propagate(RfRayCone a0, float a1, float a2, float zero) {",
+            "float d = (r.width + r.spread_angle) * zero;",
+            "v0.width += d;",
+            "v0.spread_angle += d;",
+            "v1 += d;",
+            "v2 += d;",
+            "for (uint k = 1u; k < 8u; k++) {",
+        ] {
+            assert!(glsl.contains(line), "{line} in\n{glsl}");
+        }
+        // Per invocation: the cone's two floats, t, the spread angle, zero.
+        let words = inputs(&signature, 3);
+        assert_eq!(words.len(), 3 * 5);
+        assert_eq!(words[4], 0.0f32.to_bits());
+    }
+}

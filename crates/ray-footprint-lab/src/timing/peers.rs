@@ -1,0 +1,409 @@
+//! The peers' original functions beside the library's: which function of which peer file stands
+//! against which library function, and the adapter that calls it with the library function's
+//! parameters and result ([`PEERS`]). The peers' code is never part of this repository: it is
+//! read at run time from a directory the user names, where each peer's file is found by its name
+//! ([`PeerSource::find`]), and the items an adapter needs are cut out of it ([`extract`]).
+//!
+//! The adapters are ours: each takes the library function's arguments, builds what the peer's
+//! function takes (a peer's struct, an array of vertices, a matrix in the peer's convention, a
+//! face normal the library function computes inside), calls it, and returns the library
+//! function's result type, so both run in the same timing loop
+//! ([`super::function::timing_source`]).
+
+use std::path::{Path, PathBuf};
+
+/// A peer's file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PeerSource {
+    /// Falcor's `Source/Falcor/Rendering/Materials/TexLODHelpers.slang` (NVIDIA): ray cones and
+    /// ray differentials.
+    FalcorTexLod,
+    /// nvpro's `wireframe.h.slang` (`nvpro_core2/nvshaders`), or the copy of its functions in the
+    /// vk_raytracing_tutorial_KHR's `raytrace_tutorial/20_wireframe/shaders/wireframe_helpers.h.slang`.
+    NvproWireframe,
+    /// The vk_raytracing_tutorial_KHR's ray-cone helpers,
+    /// `raytrace_tutorial/19_ray_differentials/shaders/rtraydifferentials.slang`.
+    TutorialRayCones,
+}
+
+impl PeerSource {
+    /// The file names the source goes by, in order of preference.
+    pub fn file_names(self) -> &'static [&'static str] {
+        match self {
+            PeerSource::FalcorTexLod => &["TexLODHelpers.slang"],
+            PeerSource::NvproWireframe => &["wireframe.h.slang", "wireframe_helpers.h.slang"],
+            PeerSource::TutorialRayCones => &["rtraydifferentials.slang"],
+        }
+    }
+
+    /// A short name for tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            PeerSource::FalcorTexLod => "Falcor TexLODHelpers",
+            PeerSource::NvproWireframe => "nvpro wireframe",
+            PeerSource::TutorialRayCones => "vk_raytracing_tutorial ray cones",
+        }
+    }
+
+    /// The first file under `dir` (searched depth first, in name order) with one of the source's
+    /// names, or `None`.
+    pub fn find(self, dir: &Path) -> Option<PathBuf> {
+        self.file_names().iter().find_map(|name| find_file(dir, name))
+    }
+}
+
+/// The first file called `name` under `dir`, depth first in name order; hidden folders skipped.
+fn find_file(dir: &Path, name: &str) -> Option<PathBuf> {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir).ok()?.flatten().map(|e| e.path()).collect();
+    entries.sort();
+    for path in &entries {
+        if path.is_file() && path.file_name().is_some_and(|n| n == name) {
+            return Some(path.clone());
+        }
+    }
+    entries
+        .iter()
+        .filter(|path| {
+            path.is_dir()
+                && !path
+                    .file_name()
+                    .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        })
+        .find_map(|path| find_file(path, name))
+}
+
+/// A peer's function set against a library function.
+#[derive(Clone, Copy, Debug)]
+pub struct Peer {
+    /// The library function (shader name).
+    pub function: &'static str,
+    /// The peer's file.
+    pub source: PeerSource,
+    /// The peer's items the adapter needs, each by how its declaration starts (white space
+    /// folded): every declaration that starts so is taken, overloads included.
+    pub items: &'static [&'static str],
+    /// The adapter: `peer_<function>`, with the library function's parameters and result.
+    pub adapter: &'static str,
+}
+
+/// What each peer's original is timed against. An adapter's name is `peer_` and the library
+/// function's.
+pub const PEERS: &[Peer] = &[
+    Peer {
+        function: "rf_propagate",
+        source: PeerSource::FalcorTexLod,
+        items: &["struct RayCone"],
+        adapter: "RfRayCone peer_rf_propagate(RfRayCone cone, float t, float surface_spread_angle) {
+    RayCone propagated = RayCone(cone.width, cone.spread_angle).propagateDistance(t).addToSpreadAngle(surface_spread_angle);
+    return RfRayCone(propagated.getWidth(), propagated.getSpreadAngle());
+}",
+    },
+    Peer {
+        function: "rf_curvature_spread_angle",
+        source: PeerSource::FalcorTexLod,
+        items: &["float computeSpreadAngleFromCurvatureIso("],
+        adapter: "float peer_rf_curvature_spread_angle(float curvature, float width, float3 normal, float3 direction) {
+    return computeSpreadAngleFromCurvatureIso(curvature, width, direction, normal);
+}",
+    },
+    Peer {
+        function: "rf_world_footprint",
+        source: PeerSource::TutorialRayCones,
+        items: &["struct RayCone", "float rayConeWorldFootprint("],
+        adapter: "float peer_rf_world_footprint(RfRayCone cone, float t, float3 normal, float3 direction) {
+    RayCone peer = { cone.width, cone.spread_angle };
+    return rayConeWorldFootprint(peer, t, normal, -direction);
+}",
+    },
+    Peer {
+        function: "rf_texel_density",
+        source: PeerSource::TutorialRayCones,
+        items: &["float triangleTexelDensity("],
+        adapter: "float peer_rf_texel_density(float3 p0, float3 p1, float3 p2, float2 uv0, float2 uv1, float2 uv2) {
+    return triangleTexelDensity(p0, p1, p2, uv0, uv1, uv2);
+}",
+    },
+    Peer {
+        function: "rf_triangle_base_lod",
+        source: PeerSource::FalcorTexLod,
+        items: &["float computeRayConeTriangleLODValue(float3"],
+        adapter: "float peer_rf_triangle_base_lod(float3 p0, float3 p1, float3 p2, float2 uv0, float2 uv1, float2 uv2) {
+    float3 vertices[3] = { p0, p1, p2 };
+    float2 txcoords[3] = { uv0, uv1, uv2 };
+    return computeRayConeTriangleLODValue(vertices, txcoords, float3x3(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0));
+}",
+    },
+    // Falcor's computeLOD leaves out the texture's size, which its texture sampler adds as
+    // 0.5 log2(width height): the adapter adds it as that sampler does.
+    Peer {
+        function: "rf_texture_lod",
+        source: PeerSource::FalcorTexLod,
+        items: &["struct RayCone"],
+        adapter: "float peer_rf_texture_lod(float base_lod, float width, float2 texture_size, float3 normal, float3 direction) {
+    return RayCone(width, 0.0).computeLOD(base_lod, direction, normal) + 0.5 * log2(texture_size.x * texture_size.y);
+}",
+    },
+    Peer {
+        function: "rf_refract_ray_cone",
+        source: PeerSource::FalcorTexLod,
+        items: &[
+            "struct RayCone",
+            "bool refractWithTIR(",
+            "void rotate2DPlusMinus(",
+            "float2 orthogonal(",
+            "void computeRayConeForRefraction(",
+            "bool refractRayCone(",
+        ],
+        adapter: "RfRefractedRayCone peer_rf_refract_ray_cone(RfRayCone cone, float3 normal, float3 direction,
+        float normal_spread_angle, float eta) {
+    RayCone refracted = RayCone(cone.width, cone.spread_angle);
+    float3 refracted_direction;
+    bool transmitted = refractRayCone(refracted, float3(0.0), direction, float3(0.0), normal, normal_spread_angle, eta,
+        refracted_direction);
+    return RfRefractedRayCone(RfRayCone(refracted.getWidth(), refracted.getSpreadAngle()), !transmitted);
+}",
+    },
+    Peer {
+        function: "rf_pixel_directions",
+        source: PeerSource::NvproWireframe,
+        items: &["void computeDifferentials("],
+        adapter: "RfNeighbourDirections peer_rf_pixel_directions(float2 pixel, float2 image_size, float4x4 view_inv,
+        float4x4 proj_inv) {
+    float3 right;
+    float3 below;
+    computeDifferentials(pixel, image_size, transpose(view_inv), transpose(proj_inv), right, below);
+    return RfNeighbourDirections(right, below);
+}",
+    },
+    Peer {
+        function: "rf_barycentric_derivatives",
+        source: PeerSource::FalcorTexLod,
+        items: &["struct RayDiff", "void computeBarycentricDifferentials("],
+        adapter: "RfDerivatives2 peer_rf_barycentric_derivatives(RfRayDiff diff, float3 direction, float t, float3 p0,
+        float3 p1, float3 p2) {
+    float3 edge01 = p1 - p0;
+    float3 edge02 = p2 - p0;
+    float3 face_normal = normalize(cross(edge01, edge02));
+    RayDiff at_hit = RayDiff(diff.d_origin_dx, diff.d_origin_dy, diff.d_direction_dx, diff.d_direction_dy)
+        .propagate(float3(0.0), direction, t, face_normal);
+    float2 dx;
+    float2 dy;
+    computeBarycentricDifferentials(at_hit, direction, edge01, edge02, face_normal, dx, dy);
+    return RfDerivatives2(dx, dy);
+}",
+    },
+    Peer {
+        function: "rf_texture_derivatives",
+        source: PeerSource::FalcorTexLod,
+        items: &["void interpolateDifferentials("],
+        adapter: "RfDerivatives2 peer_rf_texture_derivatives(RfDerivatives2 barycentric, float2 t0, float2 t1, float2 t2) {
+    float2 values[3] = { t0, t1, t2 };
+    float2 dx;
+    float2 dy;
+    interpolateDifferentials(barycentric.dx, barycentric.dy, values, dx, dy);
+    return RfDerivatives2(dx, dy);
+}",
+    },
+    Peer {
+        function: "rf_normal_derivatives",
+        source: PeerSource::FalcorTexLod,
+        items: &["struct RayDiff", "void interpolateDifferentials(", "void computeNormalDifferentials("],
+        adapter: "RfDerivatives3 peer_rf_normal_derivatives(float3 n0, float3 n1, float3 n2, float2 barycentrics,
+        RfDerivatives2 barycentric) {
+    float3 normals[3] = { n0, n1, n2 };
+    float3 interpolated = (1.0 - barycentrics.x - barycentrics.y) * n0 + barycentrics.x * n1 + barycentrics.y * n2;
+    float3 dx;
+    float3 dy;
+    computeNormalDifferentials(RayDiff(float3(0.0), float3(0.0), float3(0.0), float3(0.0)), interpolated,
+        barycentric.dx, barycentric.dy, normals, dx, dy);
+    return RfDerivatives3(dx, dy);
+}",
+    },
+    Peer {
+        function: "rf_barycentric_deltas",
+        source: PeerSource::NvproWireframe,
+        items: &["float3 intersectRayTriangle(", "float3 computeDerivative("],
+        adapter: "float3 peer_rf_barycentric_deltas(float4x4 world_to_object, float3 world_origin, float3 p0, float3 p1,
+        float3 p2, float3 direction_x, float3 direction_y, float3 hit_barycentrics) {
+    float4x4 rows = transpose(world_to_object);
+    float4x3 peer_matrix = float4x3(rows[0].xyz, rows[1].xyz, rows[2].xyz, rows[3].xyz);
+    float3 object_origin = mul(float4(world_origin, 1.0), peer_matrix);
+    float3 positions[3] = { p0, p1, p2 };
+    return computeDerivative(peer_matrix, world_origin, object_origin, positions, direction_x, direction_y,
+        hit_barycentrics);
+}",
+    },
+    Peer {
+        function: "rf_anisotropic_cone_gradients",
+        source: PeerSource::FalcorTexLod,
+        items: &["void computeAnisotropicEllipseAxes("],
+        adapter: "RfDerivatives2 peer_rf_anisotropic_cone_gradients(float width, float3 direction, float3 p0, float3 p1,
+        float3 p2, float2 uv0, float2 uv1, float2 uv2) {
+    float3 positions[3] = { p0, p1, p2 };
+    float2 txcoords[3] = { uv0, uv1, uv2 };
+    float3 face_normal = normalize(cross(p1 - p0, p2 - p0));
+    float2 dx;
+    float2 dy;
+    computeAnisotropicEllipseAxes(p0, face_normal, direction, 0.5 * width, positions, txcoords, uv0, dx, dy);
+    return RfDerivatives2(dx, dy);
+}",
+    },
+    Peer {
+        function: "rf_process_wireframe",
+        source: PeerSource::NvproWireframe,
+        items: &[
+            "struct WireframeSettings",
+            "float edgePosition(",
+            "float edgeThickness(",
+            "float stipple(",
+            "float getLineWidth(",
+            "float processWireframe(",
+        ],
+        adapter: "float peer_rf_process_wireframe(RfWireframeSettings settings, float3 barycentrics, float3 deltas) {
+    WireframeSettings peer = { settings.thickness, settings.thickness_var, settings.smoothing, settings.stipple,
+        settings.stipple_length, float(settings.stipple_repeats) };
+    return processWireframe(peer, barycentrics, deltas);
+}",
+    },
+];
+
+/// What an extraction needs beside the items: pi, which the peers take from a header of their
+/// own (`M_PI`).
+const PRELUDE: &str = "#ifndef M_PI\n#define M_PI 3.14159265358979323846\n#endif\n";
+
+/// The `#define` lines of `source` and every declaration in it that starts with one of `items`
+/// (white space folded), each to its matching closing brace (a struct with its `;`), in the order
+/// of `items` and, for overloads, of the source; comments removed. Fails naming the first item
+/// that nothing starts with, or one whose braces do not close.
+pub fn extract(source: &str, items: &[&str]) -> Result<String, String> {
+    let code = without_comments(source);
+    let mut out = String::from(PRELUDE);
+    for line in code
+        .lines()
+        .filter(|line| line.trim_start().starts_with("#define"))
+    {
+        out.push_str(line.trim());
+        out.push('\n');
+    }
+    for item in items {
+        let prefix = fold_spaces(item);
+        let starts: Vec<usize> = line_starts(&code)
+            .filter(|&at| {
+                fold_spaces(&code[at..code[at..].find('\n').map_or(code.len(), |end| at + end)])
+                    .starts_with(&prefix)
+            })
+            .collect();
+        if starts.is_empty() {
+            return Err(format!("no declaration starts with '{item}'"));
+        }
+        for start in starts {
+            out.push_str(
+                declaration(&code, start).ok_or_else(|| format!("'{item}': its braces do not close"))?,
+            );
+            out.push('\n');
+        }
+    }
+    Ok(out)
+}
+
+/// The byte offsets of each line's first character.
+fn line_starts(text: &str) -> impl Iterator<Item = usize> + '_ {
+    std::iter::once(0).chain(text.match_indices('\n').map(|(at, _)| at + 1))
+}
+
+/// `text` with every run of white space one space, trimmed.
+fn fold_spaces(text: &str) -> String {
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The declaration starting at `start`: to the brace that closes its first `{`, with a `;` that
+/// follows it.
+fn declaration(code: &str, start: usize) -> Option<&str> {
+    let open = start + code[start..].find('{')?;
+    let mut depth = 0;
+    for (offset, c) in code[open..].char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    let end = open + offset + 1;
+                    let semicolon = code[end..].trim_start().starts_with(';');
+                    let end = if semicolon {
+                        end + code[end..].find(';')? + 1
+                    } else {
+                        end
+                    };
+                    return Some(&code[start..end]);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// `source` without `//` and `/* */` comments (the peers' shaders have no strings that hold them).
+fn without_comments(source: &str) -> String {
+    let mut out = String::with_capacity(source.len());
+    let mut rest = source;
+    while let Some(at) = rest.find('/') {
+        out.push_str(&rest[..at]);
+        let tail = &rest[at..];
+        if tail.starts_with("//") {
+            rest = tail.find('\n').map_or("", |end| &tail[end..]);
+        } else if let Some(body) = tail.strip_prefix("/*") {
+            rest = body.find("*/").map_or("", |end| &body[end + 2..]);
+        } else {
+            out.push('/');
+            rest = &tail[1..];
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PEER_FILE: &str = "#include \"other.slang\"\n\
+        #define MODE 2 // the mode\n\
+        /** A cone. { not a brace } */\n\
+        struct Cone\n{\n    float width;\n    float width_at(float t) { return width + t; }\n};\n\
+        float twice(float x) { return 2.0 * x; } // twice\n\
+        float twice(float2 x) { return 2.0 * x.x; }\n\
+        [shader(\"raygeneration\")]\nvoid main() { }\n";
+
+    #[test]
+    fn extracts_the_items_and_the_defines() {
+        let extracted = extract(PEER_FILE, &["struct Cone", "float twice("]).unwrap();
+        assert!(extracted.contains("#define MODE 2\n"));
+        assert!(extracted.contains(
+            "struct Cone\n{\n    float width;\n    float width_at(float t) { return width + t; }\n};"
+        ));
+        assert!(extracted.contains("float twice(float x) { return 2.0 * x; }"));
+        assert!(extracted.contains("float twice(float2 x) { return 2.0 * x.x; }"));
+        assert!(
+            !extracted.contains("main") && !extracted.contains("include") && !extracted.contains("brace")
+        );
+    }
+
+    #[test]
+    fn a_missing_item_is_named() {
+        let error = extract(PEER_FILE, &["float thrice("]).unwrap_err();
+        assert_eq!(error, "no declaration starts with 'float thrice('");
+    }
+
+    #[test]
+    fn every_peer_names_an_adapter_for_its_function() {
+        for peer in PEERS {
+            let name = format!(" peer_{}(", peer.function);
+            assert!(
+                peer.adapter.contains(&name),
+                "{}: the adapter is not {name}",
+                peer.function
+            );
+        }
+    }
+}
