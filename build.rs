@@ -1,4 +1,4 @@
-//! Build script. Always: exports the GLSL and Slang include directories to dependents' build
+//! Build script. Always: exports the GLSL, Slang and HLSL include directories to dependents' build
 //! scripts. With the `validate` feature:
 //! - parses and validates every WGSL and GLSL module with naga, so that a broken module fails
 //!   `cargo build` with naga's message pointing at the file and line;
@@ -17,6 +17,11 @@ fn main() {
     println!(
         "cargo:slang_include={}",
         root.join("shaders").join("slang").display()
+    );
+    // Seen by dependents' build scripts as DEP_RAY_FOOTPRINT_HLSL_INCLUDE.
+    println!(
+        "cargo:hlsl_include={}",
+        root.join("shaders").join("hlsl").display()
     );
     #[cfg(feature = "validate")]
     {

@@ -235,14 +235,17 @@ pub fn shared_layouts() -> Vec<(crate::shaders::Module, crate::layout::StructLay
 // end of generated code
 
 /// Reads every shared struct's layout from the WGSL module (naga), from the GLSL module in a
-/// std430 and a scalar block (glslang) and from the Slang module in a std430 and a scalar
-/// structured buffer (slangc), compares each with the Rust mirror, and renders one table per
-/// struct (Rust / WGSL / std430 / scalar / Slang std430 / Slang scalar). Fails on the first
-/// difference, naming the struct and field. Needs `glslangValidator` and `slangc`.
+/// std430 and a scalar block (glslang), from the Slang module in a std430 and a scalar
+/// structured buffer (slangc) and from the HLSL module in a structured buffer (std430, glslang's
+/// HLSL front end and slangc), compares each with the Rust mirror, and renders one table per
+/// struct (Rust / WGSL / std430 / scalar / Slang std430 / Slang scalar / HLSL glslang / HLSL
+/// slangc). Fails on the first difference, naming the struct and field. Needs `glslangValidator`
+/// and `slangc`.
 #[cfg(feature = "validate")]
 pub fn verify_shared_layouts() -> Result<String, crate::layout::LayoutError> {
     use crate::layout::{compare, glsl_layout, render_columns, slang_layout, wgsl_layout, GlslPacking};
-    use crate::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
+    use crate::shaders::{GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
+    use shader_proptest::{Language, Shader};
     let glsl_dir = std::path::Path::new(GLSL_INCLUDE_DIR);
     let slang_dir = std::path::Path::new(SLANG_INCLUDE_DIR);
     let mut tables = Vec::new();
@@ -250,6 +253,11 @@ pub fn verify_shared_layouts() -> Result<String, crate::layout::LayoutError> {
         let include = format!("#include \"{}.glsl\"", module.stem());
         let import = format!("import {};", module.stem());
         let name = &rust.name;
+        let hlsl = |language| {
+            Shader::new(language, format!("#include \"{}.hlsl\"", module.stem()))
+                .include_dir(HLSL_INCLUDE_DIR)
+                .struct_layout(name)
+        };
         let columns = [
             ("WGSL", wgsl_layout(module.wgsl(), name)?),
             (
@@ -268,6 +276,8 @@ pub fn verify_shared_layouts() -> Result<String, crate::layout::LayoutError> {
                 "Slang scalar",
                 slang_layout(&import, name, GlslPacking::Scalar, &[slang_dir])?,
             ),
+            ("HLSL glslang", hlsl(Language::HlslGlslang)?),
+            ("HLSL slangc", hlsl(Language::HlslSlangc)?),
         ];
         for (_, shader) in &columns {
             compare(&rust, shader)?;

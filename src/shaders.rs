@@ -1,6 +1,7 @@
 //! The shader modules as source text, and the ways to include them in your shaders.
 //!
-//! Each concept is one WGSL module, one GLSL module and one Slang module with the same stem. The modules declare only
+//! Each concept is one WGSL module, one GLSL module, one Slang module and one HLSL module with the
+//! same stem. The modules declare only
 //! functions, structs and constants, all prefixed `rf_` / `Rf` / `RF_`, and none depends on another,
 //! so any set of them can be combined with each other and with your code.
 //!
@@ -13,6 +14,10 @@
 //! - Slang: `import ray_cone;` or `#include "ray_cone.slang"` with [`SLANG_INCLUDE_DIR`] on the
 //!   search path (`slangc -I...`); a dependent's build script finds the same directory in the
 //!   environment variable `DEP_RAY_FOOTPRINT_SLANG_INCLUDE`.
+//! - HLSL (2021, for DXC, glslang's HLSL front end or slangc): `#include "ray_cone.hlsl"` with
+//!   [`HLSL_INCLUDE_DIR`] on the include path (`dxc -I...`, `glslangValidator -D -I...`,
+//!   `slangc -I...`); a dependent's build script finds the same directory in the environment
+//!   variable `DEP_RAY_FOOTPRINT_HLSL_INCLUDE`.
 //!
 //! ```
 //! use ray_footprint::shaders::{wgsl_prelude, Module};
@@ -28,9 +33,12 @@ pub const GLSL_INCLUDE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders
 /// Directory holding the Slang modules, for `slangc -I` or a Slang session's search paths.
 pub const SLANG_INCLUDE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/slang");
 
+/// Directory holding the HLSL modules, for `dxc -I`, `glslangValidator -D -I` or `slangc -I`.
+pub const HLSL_INCLUDE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/hlsl");
+
 /// Declares the modules: variant, stem, and the constants holding their sources.
 macro_rules! modules {
-    ($($(#[$doc:meta])* $variant:ident, $stem:literal, $wgsl:ident, $glsl:ident, $slang:ident;)+) => {
+    ($($(#[$doc:meta])* $variant:ident, $stem:literal, $wgsl:ident, $glsl:ident, $slang:ident, $hlsl:ident;)+) => {
         $(
             #[doc = concat!("WGSL source of `shaders/wgsl/", $stem, ".wgsl`.")]
             pub const $wgsl: &str = include_str!(concat!("../shaders/wgsl/", $stem, ".wgsl"));
@@ -38,6 +46,8 @@ macro_rules! modules {
             pub const $glsl: &str = include_str!(concat!("../shaders/glsl/", $stem, ".glsl"));
             #[doc = concat!("Slang source of `shaders/slang/", $stem, ".slang`.")]
             pub const $slang: &str = include_str!(concat!("../shaders/slang/", $stem, ".slang"));
+            #[doc = concat!("HLSL source of `shaders/hlsl/", $stem, ".hlsl`.")]
+            pub const $hlsl: &str = include_str!(concat!("../shaders/hlsl/", $stem, ".hlsl"));
         )+
 
         /// A shader module of this crate.
@@ -50,7 +60,7 @@ macro_rules! modules {
             /// Every module.
             pub const ALL: &'static [Module] = &[$(Module::$variant),+];
 
-            /// The file stem shared by the WGSL, GLSL and Slang files and the Rust module.
+            /// The file stem shared by the WGSL, GLSL, Slang and HLSL files and the Rust module.
             pub fn stem(self) -> &'static str {
                 match self {
                     $(Module::$variant => $stem,)+
@@ -78,6 +88,13 @@ macro_rules! modules {
                 }
             }
 
+            /// The HLSL source.
+            pub fn hlsl(self) -> &'static str {
+                match self {
+                    $(Module::$variant => $hlsl,)+
+                }
+            }
+
             /// The source of the Rust mirror module `src/<stem>.rs`.
             fn mirror_source(self) -> &'static str {
                 match self {
@@ -90,13 +107,13 @@ macro_rules! modules {
 
 modules! {
     /// Ray cones: [`crate::ray_cone`].
-    RayCone, "ray_cone", RAY_CONE_WGSL, RAY_CONE_GLSL, RAY_CONE_SLANG;
+    RayCone, "ray_cone", RAY_CONE_WGSL, RAY_CONE_GLSL, RAY_CONE_SLANG, RAY_CONE_HLSL;
     /// Ray differentials: [`crate::ray_diff`].
-    RayDiff, "ray_diff", RAY_DIFF_WGSL, RAY_DIFF_GLSL, RAY_DIFF_SLANG;
+    RayDiff, "ray_diff", RAY_DIFF_WGSL, RAY_DIFF_GLSL, RAY_DIFF_SLANG, RAY_DIFF_HLSL;
     /// Ray differentials in double precision (needs shader f64): [`crate::ray_diff_f64`].
-    RayDiffF64, "ray_diff_f64", RAY_DIFF_F64_WGSL, RAY_DIFF_F64_GLSL, RAY_DIFF_F64_SLANG;
+    RayDiffF64, "ray_diff_f64", RAY_DIFF_F64_WGSL, RAY_DIFF_F64_GLSL, RAY_DIFF_F64_SLANG, RAY_DIFF_F64_HLSL;
     /// Anti-aliased barycentric wireframe: [`crate::wireframe`].
-    Wireframe, "wireframe", WIREFRAME_WGSL, WIREFRAME_GLSL, WIREFRAME_SLANG;
+    Wireframe, "wireframe", WIREFRAME_WGSL, WIREFRAME_GLSL, WIREFRAME_SLANG, WIREFRAME_HLSL;
 }
 
 impl Module {
@@ -132,8 +149,9 @@ impl Module {
 
     /// The module as a `shader_proptest::Shader` in `language` (feature `shader-proptest`): the
     /// WGSL module text with its naga capabilities, `#include "<stem>.glsl"` with
-    /// [`GLSL_INCLUDE_DIR`] on the include path, or `import <stem>;` with [`SLANG_INCLUDE_DIR`] on
-    /// the search path; the `_f64` modules require `shaderFloat64`. Check your own functions that
+    /// [`GLSL_INCLUDE_DIR`] on the include path, `import <stem>;` with [`SLANG_INCLUDE_DIR`] on
+    /// the search path, or for either HLSL compiler `#include "<stem>.hlsl"` with
+    /// [`HLSL_INCLUDE_DIR`] on the include path; the `_f64` modules require `shaderFloat64`. Check your own functions that
     /// use the module by appending them to its source.
     #[cfg(feature = "shader-proptest")]
     pub fn shader(self, language: shader_proptest::Language) -> shader_proptest::Shader {
@@ -145,6 +163,10 @@ impl Module {
             }
             Language::Slang => {
                 Shader::slang(format!("import {};", self.stem())).include_dir(SLANG_INCLUDE_DIR)
+            }
+            Language::HlslGlslang | Language::HlslSlangc => {
+                Shader::new(language, format!("#include \"{}.hlsl\"", self.stem()))
+                    .include_dir(HLSL_INCLUDE_DIR)
             }
         };
         if self.needs_f64() {

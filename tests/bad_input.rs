@@ -1,5 +1,5 @@
 //! Bad input at the edges of the API (`src/bad_input.md`): every public entry of the crate that takes
-//! data from outside the program (bytes, settings, include names, WGSL, GLSL and Slang sources and
+//! data from outside the program (bytes, settings, include names, WGSL, GLSL, Slang and HLSL sources and
 //! layouts, a naga_oil composer) gets each bad input of the table below. Each must give an error, never a
 //! panic, whose message names the struct or field and the value received. The table is rendered
 //! into `src/bad_input.md`; regenerate it with
@@ -20,6 +20,7 @@ use ray_footprint::layout::{self, FieldLayout, GlslPacking, LayoutError, StructL
 use ray_footprint::rust_layout;
 use ray_footprint::shaders::{resolve_glsl_include, Module};
 use ray_footprint::wireframe::{WireframeSettings, MAX_LINE_THICKNESS};
+use shader_proptest::{Language, Shader};
 use std::fmt::{Display, Write};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
@@ -257,6 +258,12 @@ const GLSL_READER: Reader = ("layout::glsl_layout (std430)", |source, name| {
 const SLANG_READER: Reader = ("layout::slang_layout (std430)", |source, name| {
     layout::slang_layout(source, name, GlslPacking::Std430, &[])
 });
+const HLSL_GLSLANG_READER: Reader = ("Shader::struct_layout (HLSL, glslang)", |source, name| {
+    Shader::new(Language::HlslGlslang, source).struct_layout(name)
+});
+const HLSL_SLANGC_READER: Reader = ("Shader::struct_layout (HLSL, slangc)", |source, name| {
+    Shader::new(Language::HlslSlangc, source).struct_layout(name)
+});
 
 /// A layout reader on a bad source or struct name.
 fn reader_row(reader: Reader, input: &str, name: &str, names: &[&str], source: &'static str) -> Row {
@@ -392,6 +399,14 @@ fn layout_rows() -> Vec<Row> {
             &["source:1:", "nope"],
             "import nope;",
         ),
+    ]
+    .into_iter()
+    .chain(
+        [HLSL_GLSLANG_READER, HLSL_SLANGC_READER]
+            .into_iter()
+            .flat_map(hlsl_reader_rows),
+    )
+    .chain([
         compare_row(
             "Rust `Probe { a, b }`, WGSL with an extra field `c`",
             &["Probe", "c", "Rust"],
@@ -427,6 +442,42 @@ fn layout_rows() -> Vec<Row> {
             &["Probe", "a", "b"],
             huge,
             wgsl("struct Probe { a: f32, b: array<f32, 3> }"),
+        ),
+    ])
+    .collect()
+}
+
+/// An HLSL layout reader on a syntax error, a missing struct, a name that is not one, and an
+/// include that is not there.
+fn hlsl_reader_rows(reader: Reader) -> [Row; 4] {
+    [
+        reader_row(
+            reader,
+            "`struct Probe { float a }`",
+            "Probe",
+            &["source:1"],
+            "struct Probe { float a }",
+        ),
+        reader_row(
+            reader,
+            "`struct Probe { float a; };` and a newline",
+            "Missing",
+            &["Missing"],
+            "struct Probe { float a; };\n",
+        ),
+        reader_row(
+            reader,
+            "`struct Probe { float a; };`",
+            "Probe p; float",
+            &["Probe p; float"],
+            "struct Probe { float a; };",
+        ),
+        reader_row(
+            reader,
+            "`#include \"nope.hlsl\"`, no include directory",
+            "Probe",
+            &["source:1", "nope.hlsl"],
+            "#include \"nope.hlsl\"",
         ),
     ]
 }

@@ -64,6 +64,15 @@ fn slang_build_script_compiles_a_compute_shader() {
     run_downstream("slang-build-script", "cases agree with the mirror");
 }
 
+/// A Vulkan user writing HLSL: a compute shader `#include`s the HLSL ray-differential module
+/// through the directory the crate exports to dependents' build scripts, compiled by glslang's HLSL
+/// front end, run on lavapipe with the validation layer on, its eye rays (from glam's matrices in
+/// HLSL float4x4s) checked against the mirror.
+#[test]
+fn hlsl_build_script_compiles_a_compute_shader() {
+    run_downstream("hlsl-build-script", "eye rays agree with the mirror");
+}
+
 /// A CPU path tracer: the Rust mirror alone, default features, no Vulkan.
 #[test]
 fn cpu_path_tracer_uses_the_mirror_alone() {

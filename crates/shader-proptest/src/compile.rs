@@ -1,7 +1,8 @@
 //! The shader compilers: naga (WGSL), glslang (`glslangValidator`, the compiler Vulkan's GLSL users
-//! use) and `slangc` (the Slang compiler), each to SPIR-V words. One function per compiler; the
-//! back ends ([`Language`]) choose one for their kernels and layout probes, and any other shader a
-//! user builds with this crate goes through them too.
+//! use, and its HLSL front end) and `slangc` (the Slang compiler, also for HLSL input), each to
+//! SPIR-V words. One function per compiler and input language; the back ends ([`Language`]) choose
+//! one for their kernels and layout probes, and any other shader a user builds with this crate goes
+//! through them too.
 
 pub use crate::back::Language;
 use std::fmt;
@@ -180,6 +181,27 @@ pub(crate) fn glslang(
     })
 }
 
+/// Compiles HLSL (a whole shader with the entry point `main`) as `stage` for `target` with
+/// glslang's HLSL front end (`glslangValidator -D`), with `include_dirs` on the include path.
+/// Needs `glslangValidator` on the `PATH`. A compile after which glslang printed
+/// `Missing functionality` fails (see [`run_compiler`]).
+pub fn compile_hlsl_with_glslang(
+    source: &str,
+    stage: Stage,
+    target: Target,
+    include_dirs: &[&Path],
+) -> Result<Vec<u32>, CompileError> {
+    let mut command = Command::new("glslangValidator");
+    command.args(["-D", "-V", "--target-env", target.glslang_env()]);
+    command.args(["-S", stage.extension(), "-e", "main"]);
+    for dir in include_dirs {
+        command.arg(format!("-I{}", dir.display()));
+    }
+    run_compiler(command, source, "hlsl", |command, input, output| {
+        command.arg("-o").arg(output).arg(input);
+    })
+}
+
 /// Compiles Slang (a whole shader with the entry point `main`) as `stage` for `target` with slangc,
 /// with `search_dirs` on the search path of `import` and `#include`. Every warning is an error.
 /// Needs `slangc` on the `PATH`.
@@ -203,6 +225,29 @@ pub fn compile_slang(
     target: Target,
     search_dirs: &[&Path],
 ) -> Result<Vec<u32>, CompileError> {
+    run_slangc(source, "slang", stage, target, search_dirs)
+}
+
+/// Compiles HLSL (a whole shader with the entry point `main`) as `stage` for `target` with slangc,
+/// which reads a `.hlsl` file as HLSL; otherwise as [`compile_slang`] (the same options, the same
+/// `OpSource` rewrite). Needs `slangc` on the `PATH`.
+pub fn compile_hlsl_with_slangc(
+    source: &str,
+    stage: Stage,
+    target: Target,
+    search_dirs: &[&Path],
+) -> Result<Vec<u32>, CompileError> {
+    run_slangc(source, "hlsl", stage, target, search_dirs)
+}
+
+/// slangc on `source` written to a file with `extension`, which names its language.
+fn run_slangc(
+    source: &str,
+    extension: &str,
+    stage: Stage,
+    target: Target,
+    search_dirs: &[&Path],
+) -> Result<Vec<u32>, CompileError> {
     let mut command = Command::new("slangc");
     command.args([
         "-target",
@@ -216,7 +261,7 @@ pub fn compile_slang(
     for dir in search_dirs {
         command.arg("-I").arg(dir);
     }
-    let mut words = run_compiler(command, source, "slang", |command, input, output| {
+    let mut words = run_compiler(command, source, extension, |command, input, output| {
         command.arg(input).arg("-o").arg(output);
     })?;
     source_language_unknown(&mut words);
@@ -240,9 +285,14 @@ fn source_language_unknown(words: &mut [u32]) {
     }
 }
 
+/// What glslang prints, exiting with success, where it translated part of a shader into nothing
+/// (in its HLSL front end, a matrix swizzle such as `m._m00_m10_m20`).
+const GLSLANG_MISSING: &str = "Missing functionality";
+
 /// Runs a command-line compiler on `source`, written to a file with `extension` in a fresh
 /// temporary directory; `arguments` adds the input and output paths to `command`. Returns the
-/// output's SPIR-V words, or the compiler's log naming the input file.
+/// output's SPIR-V words, or the compiler's log naming the input file; a run that printed
+/// [`GLSLANG_MISSING`] counts as failed.
 fn run_compiler(
     mut command: Command,
     source: &str,
@@ -270,7 +320,14 @@ fn run_compiler(
         });
     let bytes = std::fs::read(&output);
     let _ = std::fs::remove_dir_all(&dir);
-    tool_output(&program, &result?, bytes, "", &input)
+    let run = result?;
+    if String::from_utf8_lossy(&run.stdout).contains(GLSLANG_MISSING) {
+        return Err(CompileError::Failed {
+            log: String::from_utf8_lossy(&run.stdout).into_owned(),
+            source_path: input.display().to_string(),
+        });
+    }
+    tool_output(&program, &run, bytes, "", &input)
 }
 
 /// The SPIR-V words that the command-line tool `tool` wrote to its output file (`written`, as read

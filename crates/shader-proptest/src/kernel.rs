@@ -8,7 +8,7 @@
 //! Matrices cross as their columns, one after the other (glam's order). Where the language's
 //! constructors take a matrix column by column and `m[c]` is column c (WGSL, GLSL), a matrix is
 //! built from its words in order and stored as `m[c]`; where they take it row by row and `m[r]` is
-//! row r (Slang), it is built from its elements in row order and stored as `transpose(m)[c]`.
+//! row r (Slang, HLSL), it is built from its elements in row order and stored as `transpose(m)[c]`.
 
 use crate::back::{Backend, KernelCall, KernelEcho, MatrixOrder};
 use crate::layout::GlslPacking;
@@ -35,10 +35,13 @@ pub fn kernel_source(
         .collect();
     let mut stores = String::new();
     store(backend, result, "result", &mut 0, &mut stores);
+    let mut structs = Vec::new();
+    parameters.iter().for_each(|ty| ty.structs(&mut structs));
     let call = KernelCall {
         in_words: offset,
         out_words: result.words(),
         result_type: backend.type_name(result),
+        structs: &structs,
         call: &format!("{function}({})", arguments.join(", ")),
         stores: &stores,
     };
@@ -101,7 +104,7 @@ fn load(backend: &dyn Backend, ty: ShaderType, offset: &mut usize) -> String {
                 .iter()
                 .map(|&(_, field)| load(backend, field, offset))
                 .collect();
-            format!("{}({})", s.name, fields.join(", "))
+            backend.struct_value(s, &fields)
         }
     }
 }

@@ -1,6 +1,6 @@
-//! Property tests for shader functions: run a WGSL, GLSL or Slang function on a real Vulkan device
-//! over hundreds of thousands of generated inputs and compare every result with a Rust twin of the
-//! same function; and check that a Rust struct has exactly the byte layout of its shader twin.
+//! Property tests for shader functions: run a WGSL, GLSL, Slang or HLSL function on a real Vulkan
+//! device over hundreds of thousands of generated inputs and compare every result with a Rust twin
+//! of the same function; and check that a Rust struct has exactly the byte layout of its shader twin.
 //!
 //! The crate's README (`crates/shader-proptest/README.md`) walks through a first test, what a
 //! failure says, checks of functions that use a library's shader modules, and which tolerance
@@ -37,8 +37,9 @@ How a check runs:
 3. A generated compute kernel ([`kernel_source`]) reads each case's arguments as 32-bit words,
    calls the function once per invocation and writes the result's words back. The [`Shader`]'s
    source comes first: a WGSL module (compiled by naga), GLSL that `#include`s yours (compiled
-   by glslang, as Vulkan's GLSL users compile it), or Slang that `import`s yours (compiled by
-   slangc). The function's signature, as the compiler reads it, is held against the Rust
+   by glslang, as Vulkan's GLSL users compile it), Slang that `import`s yours (compiled by
+   slangc), or HLSL that `#include`s yours (compiled by glslang's HLSL front end or by slangc:
+   two languages, [`Language::HlslGlslang`] and [`Language::HlslSlangc`]). The function's signature, as the compiler reads it, is held against the Rust
    types; a difference is [`Error::Signature`], in Rust and in shader terms.
 4. Cases come from a proptest strategy, generated batch by batch from per-batch seeds on every
    processor while the device runs the previous batch (one dispatch per batch).
@@ -73,7 +74,8 @@ the compilers, the value descriptions, the tolerances and the layout reader.
 //! Features: `gpu` (default) is the Vulkan device (ash), the checks and proptest; `wgpu` adds WGSL
 //! checks through wgpu. Without `gpu` the crate is the compilers, the value descriptions and the
 //! layout reader only. The crate needs, at run time, a Vulkan loader, a device, the validation
-//! layer, and for GLSL `glslangValidator`, for Slang `slangc`.
+//! layer, and for GLSL `glslangValidator`, for Slang `slangc`, for HLSL the one of them that
+//! compiles it.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![deny(missing_docs)]
 

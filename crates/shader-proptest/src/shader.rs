@@ -38,8 +38,9 @@ impl Feature {
 }
 
 /// The functions under test: a language and the source text placed in front of each generated
-/// kernel (a WGSL module, GLSL such as `#include "colour.glsl"`, or Slang such as `import colour;`),
-/// with the GLSL include directories or Slang search paths, the naga capabilities WGSL may use, and
+/// kernel (a WGSL module, GLSL such as `#include "colour.glsl"`, Slang such as `import colour;`, or
+/// HLSL such as `#include "colour.hlsl"`), with the GLSL or HLSL include directories or Slang search
+/// paths, the naga capabilities WGSL may use, and
 /// the device features the code needs.
 ///
 /// ```
@@ -76,7 +77,9 @@ impl Shader {
         Shader::new(Language::Slang, source)
     }
 
-    /// Source in `language`: [`Shader::wgsl`], [`Shader::glsl`] or [`Shader::slang`] by a value.
+    /// Source in `language`: [`Shader::wgsl`], [`Shader::glsl`] or [`Shader::slang`] by a value,
+    /// and the only way to HLSL (`Language::HlslGlslang`, `Language::HlslSlangc`: no entry point,
+    /// functions and structs declared or `#include`d).
     pub fn new(language: Language, source: impl Into<String>) -> Shader {
         Shader {
             language,
@@ -104,8 +107,8 @@ impl Shader {
         self
     }
 
-    /// Adds a directory to the GLSL include path, or to the Slang search path (`import` and
-    /// `#include`).
+    /// Adds a directory to the GLSL or HLSL include path, or to the Slang search path (`import`
+    /// and `#include`).
     pub fn include_dir(mut self, dir: impl AsRef<Path>) -> Shader {
         self.include_dirs.push(dir.as_ref().to_path_buf());
         self
@@ -146,7 +149,7 @@ impl Shader {
         &self.source
     }
 
-    /// The GLSL include directories or Slang search paths.
+    /// The GLSL or HLSL include directories or Slang search paths.
     pub fn include_dirs(&self) -> Vec<&Path> {
         self.include_dirs.iter().map(PathBuf::as_path).collect()
     }

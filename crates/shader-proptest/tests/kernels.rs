@@ -25,7 +25,8 @@ mat3 scale3(mat3 m, float s) { return m * s; }
 int pick(int a, int b, bool first) { return first ? a : b; }
 ";
 
-const SLANG: &str = "
+/// Plain HLSL, which slangc also reads as Slang.
+const HLSL_AND_SLANG: &str = "
 float2 apply2(float2x2 m, float2 v) { return mul(m, v); }
 float3 apply3(float3x3 m, float3 v) { return mul(m, v); }
 float4 apply4(float4x4 m, float4 v) { return mul(m, v); }
@@ -43,8 +44,14 @@ fn floats(count: usize) -> impl Strategy<Value = Vec<f32>> {
     proptest::collection::vec(small(), count)
 }
 
-fn shaders() -> [Shader; 3] {
-    [Shader::wgsl(WGSL), Shader::glsl(GLSL), Shader::slang(SLANG)]
+fn shaders() -> [Shader; 5] {
+    [
+        Shader::wgsl(WGSL),
+        Shader::glsl(GLSL),
+        Shader::slang(HLSL_AND_SLANG),
+        Shader::new(Language::HlslGlslang, HLSL_AND_SLANG),
+        Shader::new(Language::HlslSlangc, HLSL_AND_SLANG),
+    ]
 }
 
 /// Checks the shader function `function` against `mirror` bit for bit in every language on 4,096

@@ -34,6 +34,10 @@ fn signature_refusal(gpu: &Gpu, check: &dyn Check, shader: &Shader) -> String {
     }
 }
 
+/// The falloff in HLSL, which both HLSL back ends compile.
+const HLSL_FALLOFF: &str =
+    "float falloff(float d, float r0, float r1) { return 1.0 - smoothstep(r0, r1, d); }";
+
 /// A user's `falloff(d, r0, r1)` checked against a Rust function that takes a vector first.
 #[test]
 fn a_vector_for_a_float_is_refused_in_every_language() {
@@ -60,6 +64,14 @@ fn a_vector_for_a_float_is_refused_in_every_language() {
             Shader::slang(
                 "float falloff(float d, float r0, float r1) { return 1.0 - smoothstep(r0, r1, d); }",
             ),
+            "shader: falloff(float, float, float) -> float",
+        ),
+        (
+            Shader::new(Language::HlslGlslang, HLSL_FALLOFF),
+            "shader: falloff(float, float, float) -> float",
+        ),
+        (
+            Shader::new(Language::HlslSlangc, HLSL_FALLOFF),
             "shader: falloff(float, float, float) -> float",
         ),
     ];

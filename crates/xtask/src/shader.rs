@@ -1,5 +1,5 @@
-//! The shared declarations in WGSL, GLSL and Slang: each item preceded by its doc comment's first
-//! paragraph, struct fields by theirs.
+//! The shared declarations in WGSL, GLSL, Slang and HLSL: each item preceded by its doc comment's
+//! first paragraph, struct fields by theirs.
 
 use crate::comment;
 use crate::rust_items::{Field, Item, Kind, RustItems, Type, Value};
@@ -9,10 +9,11 @@ pub enum Language {
     Wgsl,
     Glsl,
     Slang,
+    Hlsl,
 }
 
 impl Language {
-    pub const ALL: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Slang];
+    pub const ALL: [Language; 4] = [Language::Wgsl, Language::Glsl, Language::Slang, Language::Hlsl];
 
     /// The directory under `shaders/` and the file extension.
     pub fn extension(self) -> &'static str {
@@ -20,6 +21,7 @@ impl Language {
             Language::Wgsl => "wgsl",
             Language::Glsl => "glsl",
             Language::Slang => "slang",
+            Language::Hlsl => "hlsl",
         }
     }
 
@@ -27,15 +29,16 @@ impl Language {
     fn doc_marker(self) -> &'static str {
         match self {
             Language::Slang => "/// ",
-            Language::Wgsl | Language::Glsl => "// ",
+            Language::Wgsl | Language::Glsl | Language::Hlsl => "// ",
         }
     }
 
-    /// Declaration keywords before a constant's type (GLSL, Slang) or name (WGSL).
+    /// Declaration keywords before a constant's type (GLSL, Slang, HLSL) or name (WGSL).
     fn const_keywords(self) -> &'static str {
         match self {
             Language::Wgsl | Language::Glsl => "const",
             Language::Slang => "public static const",
+            Language::Hlsl => "static const",
         }
     }
 
@@ -45,14 +48,14 @@ impl Language {
             (Language::Wgsl, Type::F64) => "f64",
             (Language::Wgsl, Type::I32) => "i32",
             (Language::Wgsl, Type::U32) => "u32",
-            (Language::Glsl | Language::Slang, Type::F32) => "float",
-            (Language::Glsl | Language::Slang, Type::F64) => "double",
-            (Language::Glsl | Language::Slang, Type::I32) => "int",
-            (Language::Glsl | Language::Slang, Type::U32) => "uint",
+            (_, Type::F32) => "float",
+            (_, Type::F64) => "double",
+            (_, Type::I32) => "int",
+            (_, Type::U32) => "uint",
             (_, Type::Bool) => "bool",
             (Language::Wgsl, Type::Matrix4) => "mat4x4<f32>",
             (Language::Glsl, Type::Matrix4) => "mat4",
-            (Language::Slang, Type::Matrix4) => "float4x4",
+            (Language::Slang | Language::Hlsl, Type::Matrix4) => "float4x4",
             (_, Type::Vector(components)) => return Ok(self.vector_type(*components)),
             (_, Type::UVector(components)) => return Ok(self.unsigned_vector_type(*components)),
             (_, Type::Struct(name)) => return Ok(names.get(name)?.shader_name.clone()),
@@ -64,7 +67,7 @@ impl Language {
         match self {
             Language::Wgsl => format!("vec{components}<f32>"),
             Language::Glsl => format!("vec{components}"),
-            Language::Slang => format!("float{components}"),
+            Language::Slang | Language::Hlsl => format!("float{components}"),
         }
     }
 
@@ -72,7 +75,7 @@ impl Language {
         match self {
             Language::Wgsl => format!("vec{components}<u32>"),
             Language::Glsl => format!("uvec{components}"),
-            Language::Slang => format!("uint{components}"),
+            Language::Slang | Language::Hlsl => format!("uint{components}"),
         }
     }
 
@@ -110,7 +113,7 @@ impl Language {
         Ok(match self {
             Language::Wgsl => format!("f64({literal}f)"),
             Language::Glsl => format!("double({literal})"),
-            Language::Slang => format!("double({literal}f)"),
+            Language::Slang | Language::Hlsl => format!("double({literal}f)"),
         })
     }
 
@@ -135,7 +138,7 @@ impl Language {
                     .collect::<Result<_, _>>()
                     .map_err(at)?;
                 let struct_name = &names.get(ty)?.shader_name;
-                let value = format!("{struct_name}({})", values.join(", "));
+                let value = self.struct_value(struct_name, &values);
                 lines.push(self.constant(&item.shader_name, struct_name, &value));
             }
             Kind::Enum { variants } => {
@@ -160,11 +163,22 @@ impl Language {
         Ok(lines)
     }
 
+    /// A struct value from its field values in order: a constructor call, or in HLSL (which has
+    /// no struct constructors) an initializer list.
+    fn struct_value(self, struct_name: &str, values: &[String]) -> String {
+        match self {
+            Language::Hlsl => format!("{{ {} }}", values.join(", ")),
+            Language::Wgsl | Language::Glsl | Language::Slang => {
+                format!("{struct_name}({})", values.join(", "))
+            }
+        }
+    }
+
     fn constant(self, name: &str, ty: &str, value: &str) -> String {
         let keywords = self.const_keywords();
         match self {
             Language::Wgsl => format!("{keywords} {name}: {ty} = {value};"),
-            Language::Glsl | Language::Slang => format!("{keywords} {ty} {name} = {value};"),
+            Language::Glsl | Language::Slang | Language::Hlsl => format!("{keywords} {ty} {name} = {value};"),
         }
     }
 
@@ -177,12 +191,14 @@ impl Language {
             let ty = self.type_name(&field.ty, names)?;
             lines.push(match self {
                 Language::Wgsl => format!("    {}: {ty},", field.name),
-                Language::Glsl | Language::Slang => format!("    {public}{ty} {};", field.name),
+                Language::Glsl | Language::Slang | Language::Hlsl => {
+                    format!("    {public}{ty} {};", field.name)
+                }
             });
         }
         lines.push(match self {
             Language::Wgsl => "}".to_string(),
-            Language::Glsl | Language::Slang => "};".to_string(),
+            Language::Glsl | Language::Slang | Language::Hlsl => "};".to_string(),
         });
         Ok(lines)
     }

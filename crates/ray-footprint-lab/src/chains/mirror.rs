@@ -274,7 +274,7 @@ pub fn reflection_chain(
 
 /// The chain shader in `language`: the WGSL ray-cone and ray-differential modules followed by
 /// `reflection_chain.wgsl`, or `reflection_chain.glsl`, which includes the GLSL modules. `Err` for
-/// Slang: the chain shader is written in WGSL and GLSL only.
+/// Slang and HLSL: the chain shader is written in WGSL and GLSL only.
 pub fn chain_shader(language: Language) -> Result<Shader, String> {
     let modules = [Module::RayCone, Module::RayDiff];
     Ok(match language {
@@ -290,6 +290,8 @@ pub fn chain_shader(language: Language) -> Result<Shader, String> {
         Language::Glsl => Shader::glsl("#include \"reflection_chain.glsl\"")
             .include_dir(GLSL_INCLUDE_DIR)
             .include_dir(CHAIN_SHADER_DIR),
-        Language::Slang => return Err("the chain shader is written in WGSL and GLSL only".into()),
+        Language::Slang | Language::HlslGlslang | Language::HlslSlangc => {
+            return Err("the chain shader is written in WGSL and GLSL only".into())
+        }
     })
 }

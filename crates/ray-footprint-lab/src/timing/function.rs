@@ -188,12 +188,12 @@ fn type_name(language: Language, ty: ShaderType) -> String {
     let vector = |n: usize| match language {
         Language::Wgsl => format!("vec{n}<f32>"),
         Language::Glsl => format!("vec{n}"),
-        Language::Slang => format!("float{n}"),
+        _ => format!("float{n}"),
     };
     let matrix = |n: usize| match language {
         Language::Wgsl => format!("mat{n}x{n}<f32>"),
         Language::Glsl => format!("mat{n}"),
-        Language::Slang => format!("float{n}x{n}"),
+        _ => format!("float{n}x{n}"),
     };
     match (language, ty) {
         (Language::Wgsl, ShaderType::F32) => "f32".into(),
@@ -284,7 +284,7 @@ pub fn timing_source(language: Language, signature: &Signature, callee: &str, it
                 parameters.join(", ")
             )
         }
-        Language::Glsl | Language::Slang => {
+        _ => {
             let parameters: Vec<String> = signature
                 .parameters
                 .iter()
@@ -345,8 +345,7 @@ pub fn timing_kernel(module: Module, language: Language, callee: Callee<'_>) -> 
     );
     let mut timed = match language {
         Language::Wgsl => Shader::wgsl(source).capabilities(module.naga_capabilities()),
-        Language::Glsl => Shader::glsl(source),
-        Language::Slang => Shader::slang(source),
+        _ => Shader::new(language, source),
     };
     for dir in base.include_dirs() {
         timed = timed.include_dir(dir);

@@ -39,7 +39,9 @@ fn struct_words(ty: &'static StructType) -> BoxedStrategy<Vec<u32>> {
 
 /// Writes random values of `T` from Rust as raw bytes into a storage buffer and a push-constant
 /// block; the kernel reads every field by name and writes them back in declaration order. The words
-/// must come back bit for bit, in WGSL, GLSL std430 and scalar, and Slang std430 and scalar.
+/// must come back bit for bit, in WGSL, GLSL std430 and scalar, Slang std430 and scalar, and HLSL
+/// through glslang and slangc (structured buffers and push constants in their default std430:
+/// HLSL source cannot choose another).
 fn echoes<T: Pod + Value>(module: Module) {
     let ShaderType::Struct(ty) = T::TYPE else {
         panic!("{:?} is not a struct", T::TYPE)
@@ -51,6 +53,8 @@ fn echoes<T: Pod + Value>(module: Module) {
         (Language::Glsl, GlslPacking::Scalar, "GLSL scalar"),
         (Language::Slang, GlslPacking::Std430, "Slang std430"),
         (Language::Slang, GlslPacking::Scalar, "Slang scalar"),
+        (Language::HlslGlslang, GlslPacking::Std430, "HLSL glslang"),
+        (Language::HlslSlangc, GlslPacking::Std430, "HLSL slangc"),
     ];
     for (language, packing, label) in targets {
         let shader = module.shader(language);

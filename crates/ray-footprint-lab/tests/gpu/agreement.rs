@@ -1,4 +1,5 @@
-//! Every shader function agrees with its Rust mirror, in WGSL, GLSL and Slang: each record's
+//! Every shader function agrees with its Rust mirror, in WGSL, GLSL, Slang and HLSL (compiled by
+//! glslang and by slangc): each record's
 //! agreement check ([`ray_footprint_cases::Record::check`]).
 //!
 //! Each test prints one line per function: cases checked, largest error, that error as a fraction
@@ -75,6 +76,16 @@ fn ray_cone_slang() {
 }
 
 #[test]
+fn ray_cone_hlsl_glslang() {
+    agree(Module::RayCone, Language::HlslGlslang);
+}
+
+#[test]
+fn ray_cone_hlsl_slangc() {
+    agree(Module::RayCone, Language::HlslSlangc);
+}
+
+#[test]
 fn wireframe_wgsl() {
     agree(Module::Wireframe, Language::Wgsl);
 }
@@ -87,6 +98,16 @@ fn wireframe_glsl() {
 #[test]
 fn wireframe_slang() {
     agree(Module::Wireframe, Language::Slang);
+}
+
+#[test]
+fn wireframe_hlsl_glslang() {
+    agree(Module::Wireframe, Language::HlslGlslang);
+}
+
+#[test]
+fn wireframe_hlsl_slangc() {
+    agree(Module::Wireframe, Language::HlslSlangc);
 }
 
 #[test]
@@ -105,6 +126,16 @@ fn ray_diff_slang() {
 }
 
 #[test]
+fn ray_diff_hlsl_glslang() {
+    agree(Module::RayDiff, Language::HlslGlslang);
+}
+
+#[test]
+fn ray_diff_hlsl_slangc() {
+    agree(Module::RayDiff, Language::HlslSlangc);
+}
+
+#[test]
 fn ray_diff_f64_wgsl() {
     agree(Module::RayDiffF64, Language::Wgsl);
 }
@@ -117,4 +148,14 @@ fn ray_diff_f64_glsl() {
 #[test]
 fn ray_diff_f64_slang() {
     agree(Module::RayDiffF64, Language::Slang);
+}
+
+#[test]
+fn ray_diff_f64_hlsl_glslang() {
+    agree(Module::RayDiffF64, Language::HlslGlslang);
+}
+
+#[test]
+fn ray_diff_f64_hlsl_slangc() {
+    agree(Module::RayDiffF64, Language::HlslSlangc);
 }

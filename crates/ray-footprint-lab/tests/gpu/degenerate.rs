@@ -1,6 +1,6 @@
 //! The degenerate-input table (the root crate's `src/degenerate.md`,
 //! [`ray_footprint_cases::degenerate`]) on the GPU: every record's degenerate rows through the
-//! WGSL, GLSL and Slang kernels (the mirror's rows are the cases crate's own test).
+//! WGSL, GLSL, Slang and HLSL (glslang, slangc) kernels (the mirror's rows are the cases crate's own test).
 
 use super::gpu;
 use ray_footprint_cases::records;
@@ -34,4 +34,14 @@ fn glsl_follows_the_table() {
 #[test]
 fn slang_follows_the_table() {
     gpu_follows_the_table(Language::Slang);
+}
+
+#[test]
+fn hlsl_glslang_follows_the_table() {
+    gpu_follows_the_table(Language::HlslGlslang);
+}
+
+#[test]
+fn hlsl_slangc_follows_the_table() {
+    gpu_follows_the_table(Language::HlslSlangc);
 }

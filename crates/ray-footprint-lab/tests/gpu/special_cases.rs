@@ -1,6 +1,6 @@
 //! Special values for every function (each record's special-value check,
 //! [`ray_footprint_cases::special`]): special floats, zero and axis-aligned vectors, vectors tied to
-//! each other, in WGSL, GLSL and Slang. Finite inputs must give finite outputs in every language,
+//! each other, in WGSL, GLSL, Slang and HLSL (glslang, slangc). Finite inputs must give finite outputs in every language,
 //! and the shader must agree with the mirror within the function's tolerance, which, where the
 //! function is ill-conditioned, widens to the documented clamp.
 
@@ -35,6 +35,16 @@ fn ray_cone_slang() {
 }
 
 #[test]
+fn ray_cone_hlsl_glslang() {
+    special_values_agree(Module::RayCone, Language::HlslGlslang);
+}
+
+#[test]
+fn ray_cone_hlsl_slangc() {
+    special_values_agree(Module::RayCone, Language::HlslSlangc);
+}
+
+#[test]
 fn ray_diff_wgsl() {
     special_values_agree(Module::RayDiff, Language::Wgsl);
 }
@@ -47,6 +57,16 @@ fn ray_diff_glsl() {
 #[test]
 fn ray_diff_slang() {
     special_values_agree(Module::RayDiff, Language::Slang);
+}
+
+#[test]
+fn ray_diff_hlsl_glslang() {
+    special_values_agree(Module::RayDiff, Language::HlslGlslang);
+}
+
+#[test]
+fn ray_diff_hlsl_slangc() {
+    special_values_agree(Module::RayDiff, Language::HlslSlangc);
 }
 
 #[test]
@@ -65,6 +85,16 @@ fn ray_diff_f64_slang() {
 }
 
 #[test]
+fn ray_diff_f64_hlsl_glslang() {
+    special_values_agree(Module::RayDiffF64, Language::HlslGlslang);
+}
+
+#[test]
+fn ray_diff_f64_hlsl_slangc() {
+    special_values_agree(Module::RayDiffF64, Language::HlslSlangc);
+}
+
+#[test]
 fn wireframe_wgsl() {
     special_values_agree(Module::Wireframe, Language::Wgsl);
 }
@@ -77,4 +107,14 @@ fn wireframe_glsl() {
 #[test]
 fn wireframe_slang() {
     special_values_agree(Module::Wireframe, Language::Slang);
+}
+
+#[test]
+fn wireframe_hlsl_glslang() {
+    special_values_agree(Module::Wireframe, Language::HlslGlslang);
+}
+
+#[test]
+fn wireframe_hlsl_slangc() {
+    special_values_agree(Module::Wireframe, Language::HlslSlangc);
 }

@@ -14,6 +14,7 @@
 //! its arm in [`Language::backend`], and the language's shader files.
 
 mod glsl;
+mod hlsl;
 mod slang;
 mod wgsl;
 
@@ -26,7 +27,7 @@ use crate::layout::{GlslPacking, LayoutError, StructLayout};
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::Signature;
-use crate::value::ShaderType;
+use crate::value::{ShaderType, StructType};
 use std::fmt;
 
 /// A shader language (with its compiler): the public name of a back end.
@@ -38,13 +39,23 @@ pub enum Language {
     Glsl,
     /// Slang, compiled by slangc.
     Slang,
+    /// HLSL 2021, compiled by glslang's HLSL front end (`glslangValidator -D`).
+    HlslGlslang,
+    /// HLSL 2021, compiled by slangc.
+    HlslSlangc,
 }
 
 impl Language {
     /// Every language.
-    pub const ALL: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Slang];
+    pub const ALL: [Language; 5] = [
+        Language::Wgsl,
+        Language::Glsl,
+        Language::Slang,
+        Language::HlslGlslang,
+        Language::HlslSlangc,
+    ];
 
-    /// `"WGSL"`, `"GLSL"` or `"Slang"`.
+    /// `"WGSL"`, `"GLSL"`, `"Slang"`, `"HLSL (glslang)"` or `"HLSL (slangc)"`.
     pub fn name(self) -> &'static str {
         self.backend().name()
     }
@@ -55,6 +66,8 @@ impl Language {
             Language::Wgsl => &wgsl::Wgsl,
             Language::Glsl => &glsl::Glsl,
             Language::Slang => &slang::Slang,
+            Language::HlslGlslang => &hlsl::Hlsl(hlsl::HlslCompiler::Glslang),
+            Language::HlslSlangc => &hlsl::Hlsl(hlsl::HlslCompiler::Slangc),
         }
     }
 }
@@ -97,6 +110,12 @@ pub(crate) trait Backend: Send + Sync {
     /// How matrix constructors take their elements.
     fn matrix_order(&self) -> MatrixOrder;
 
+    /// An expression of the struct `ty` from the expressions of its fields in declaration order:
+    /// a constructor call `Name(...)` unless the language has none.
+    fn struct_value(&self, ty: &StructType, fields: &[String]) -> String {
+        format!("{}({})", ty.name, fields.join(", "))
+    }
+
     /// A whole compute kernel: `source` (the [`Shader`]'s), the input and output word arrays
     /// (bindings 0 and 1), a `kernel_f32(word)` that reads input word `word` as a float, and an
     /// entry point `main` that runs `call` once per case.
@@ -135,6 +154,8 @@ pub(crate) struct KernelCall<'a> {
     pub out_words: usize,
     /// The result's type name.
     pub result_type: &'a str,
+    /// Every struct type among the arguments (and the structs they hold), each once.
+    pub structs: &'a [&'static StructType],
     /// The call, reading its arguments from input words `i`, `i + 1`, ...
     pub call: &'a str,
     /// Statements writing `result` to output words `o`, `o + 1`, ...

@@ -107,27 +107,12 @@ float kernel_f32(uint word) {{
         slang_layout(shader.source(), name, GlslPacking::Std430, &shader.include_dirs())
     }
 
-    /// From slangc's own words: slangc writes no function that no entry point calls, so a probe
-    /// assigns the function to an `int`, and slangc's error spells its type (`got '(float,
-    /// float, float) -> float'`), or each overload's (`candidate: func falloff(float3) ->
-    /// float`), or says that the name is an `undefined identifier`. Parameter names are not in
-    /// them.
+    /// From slangc's own words ([`slangc_declared_signatures`]).
     #[cfg(feature = "gpu")]
     fn declared_signatures(&self, shader: &Shader, function: &str) -> Option<Vec<Signature>> {
-        if !is_identifier(function) {
-            return None;
-        }
-        let probe = format!(
-            "{}\n[shader(\"compute\")]\n[numthreads(1, 1, 1)]\nvoid main() {{ int signature_probe = {function}; }}\n",
-            shader.source()
-        );
-        let Err(CompileError::Failed { log, .. }) =
-            compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, &shader.include_dirs())
-        else {
-            return None;
-        };
-        let signatures: Vec<Signature> = log.lines().filter_map(spelled_signature).collect();
-        (!signatures.is_empty() || log.contains("undefined identifier")).then_some(signatures)
+        slangc_declared_signatures(shader, function, |probe| {
+            compile_slang(probe, Stage::Compute, Target::Vulkan1_1, &shader.include_dirs())
+        })
     }
 
     /// Slang converts scalars to vectors and integers to floats implicitly.
@@ -135,6 +120,32 @@ float kernel_f32(uint word) {{
     fn called_signature(&self, kernel: &[u32], function: &str) -> Option<Signature> {
         reflect::signatures(kernel, function, true).into_iter().next()
     }
+}
+
+/// The signatures of the functions named `function` that `shader` declares, from slangc's own
+/// words: slangc writes no function that no entry point calls, so a probe, compiled by `compile`,
+/// assigns the function to an `int`, and slangc's error spells its type (`got '(float, float,
+/// float) -> float'`), or each overload's (`candidate: func falloff(float3) -> float`), or says
+/// that the name is an `undefined identifier`. Parameter names are not in them. Slang and HLSL
+/// read by slangc share it.
+#[cfg(feature = "gpu")]
+pub(super) fn slangc_declared_signatures(
+    shader: &Shader,
+    function: &str,
+    compile: impl FnOnce(&str) -> Result<Vec<u32>, CompileError>,
+) -> Option<Vec<Signature>> {
+    if !is_identifier(function) {
+        return None;
+    }
+    let probe = format!(
+        "{}\n[shader(\"compute\")]\n[numthreads(1, 1, 1)]\nvoid main() {{ int signature_probe = {function}; }}\n",
+        shader.source()
+    );
+    let Err(CompileError::Failed { log, .. }) = compile(&probe) else {
+        return None;
+    };
+    let signatures: Vec<Signature> = log.lines().filter_map(spelled_signature).collect();
+    (!signatures.is_empty() || log.contains("undefined identifier")).then_some(signatures)
 }
 
 /// The signature in a line of slangc's log that spells a function type: `... got '(float3,

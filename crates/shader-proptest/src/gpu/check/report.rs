@@ -182,7 +182,7 @@ impl fmt::Display for Report {
         self.shown.0.store(true, Ordering::Relaxed);
         write!(
             f,
-            "{:<38} {:<5} {:>9} cases  max error {:>9.3e}  ({:>6.4} of tolerance)  vacuous {:>6.2}%  {}",
+            "{:<38} {:<14} {:>9} cases  max error {:>9.3e}  ({:>6.4} of tolerance)  vacuous {:>6.2}%  {}",
             self.function,
             self.language.name(),
             self.cases,
