@@ -184,7 +184,7 @@ pub(crate) fn glslang(
 /// Compiles HLSL (a whole shader with the entry point `main`) as `stage` for `target` with
 /// glslang's HLSL front end (`glslangValidator -D`), with `include_dirs` on the include path.
 /// Needs `glslangValidator` on the `PATH`. A compile after which glslang printed
-/// `Missing functionality` fails (see [`run_compiler`]).
+/// `Missing functionality` fails (glslang exits with 0 after it).
 pub fn compile_hlsl_with_glslang(
     source: &str,
     stage: Stage,
