@@ -25,6 +25,7 @@
 #
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh costs OUT_DIR
+#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh seeds OUT_DIR SEED...
 #
 #    Both unpack the Vulkan loader and its GL/X libraries into / where the system has no loader,
 #    and the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under
@@ -47,6 +48,7 @@
 #        against the time added                                          -> quality.log,
 #                                                                           cost_quality.log, cost_quality.png
 #      costs-summary.txt (also printed last)
+#    `seeds` runs the GPU test binary once per seed     -> gpu-tests-seed-SEED.log, seeds-summary.txt
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -222,6 +224,29 @@ costs() {
     costs_summary "$out" | tee "$out/costs-summary.txt"
 }
 
+# The GPU test binary once per seed (SHADER_PROPTEST_SEED), one test at a time: a randomized suite
+# must pass under every seed. One log per seed, and a line per seed in seeds-summary.txt.
+seeds() {
+    local out=${1:?usage: nvidia-run.sh seeds OUT_DIR SEED...}
+    shift
+    [ $# -gt 0 ] || { echo "usage: nvidia-run.sh seeds OUT_DIR SEED..." >&2; exit 2; }
+    mkdir -p "$out"
+    out=$(cd "$out" && pwd)
+    prepare
+    local seed
+    for seed in "$@"; do
+        SHADER_PROPTEST_SEED=$seed step "gpu tests seed $seed" "$out/gpu-tests-seed-$seed.log" \
+            "$PACK/bin/gpu-tests" --test-threads 1 --skip rt::wgsl_ray_query_agrees_with_the_mirror
+    done
+    {
+        printf '%s\n' "${STEPS[@]}"
+        for seed in "$@"; do
+            echo "seed $seed: $(grep -m1 '^test result' "$out/gpu-tests-seed-$seed.log")"
+            grep -A3 '^failures:$' "$out/gpu-tests-seed-$seed.log" | head -n 8
+        done
+    } | tee "$out/seeds-summary.txt"
+}
+
 # The lines that say how each step went.
 summary() {
     local out=$1
@@ -267,8 +292,9 @@ case "${1:-}" in
     pack) pack ;;
     run) shift && run "$@" ;;
     costs) shift && costs "$@" ;;
+    seeds) shift && seeds "$@" ;;
     *)
-        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR" >&2
+        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED..." >&2
         exit 2
         ;;
 esac

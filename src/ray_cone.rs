@@ -51,6 +51,19 @@ pub struct PackedRayCone(pub u32);
 
 /// Packs a cone into two f16 (`packHalf2x16` / `pack2x16float`), each value first clamped to
 /// `[-F16_MAX, F16_MAX]` so that no finite value becomes infinite. Rounds to nearest, ties to even.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{pack_ray_cone, RayCone};
+///
+/// // In binary16, 0.5 is 0x3800 (biased exponent 14) and 2^-10 is 0x1400 (biased exponent 5).
+/// let packed = pack_ray_cone(RayCone { width: 0.5, spread_angle: 1.0 / 1024.0 });
+/// assert_eq!(packed.0, 0x1400_3800);
+/// // A width beyond the f16 range saturates at 65504 (0x7bff), not at infinity (0x7c00).
+/// let wide = pack_ray_cone(RayCone { width: 1.0e6, spread_angle: 0.0 });
+/// assert_eq!(wide.0, 0x0000_7bff);
+/// ```
 pub fn pack_ray_cone(cone: RayCone) -> PackedRayCone {
     let width = f16::bits(cone.width.clamp(-F16_MAX, F16_MAX));
     let spread = f16::bits(cone.spread_angle.clamp(-F16_MAX, F16_MAX));
@@ -58,6 +71,23 @@ pub fn pack_ray_cone(cone: RayCone) -> PackedRayCone {
 }
 
 /// Unpacks a cone packed by [`pack_ray_cone`] (`unpackHalf2x16` / `unpack2x16float`); exact.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{pack_ray_cone, unpack_ray_cone, PackedRayCone, RayCone};
+///
+/// // 0x3c00 is 1.0 and 0xb800 is -0.5 in binary16.
+/// assert_eq!(
+///     unpack_ray_cone(PackedRayCone(0xb800_3c00)),
+///     RayCone { width: 1.0, spread_angle: -0.5 }
+/// );
+/// // A round trip rounds each value to 11 significant bits: off by at most 2^-11 of it.
+/// let cone = RayCone { width: 0.0123, spread_angle: 9.8e-4 };
+/// let back = unpack_ray_cone(pack_ray_cone(cone));
+/// assert!((back.width - cone.width).abs() <= cone.width / 2048.0);
+/// assert!((back.spread_angle - cone.spread_angle).abs() <= cone.spread_angle / 2048.0);
+/// ```
 pub fn unpack_ray_cone(packed: PackedRayCone) -> RayCone {
     RayCone {
         width: f16::value(packed.0 as u16),
@@ -74,24 +104,74 @@ fn pixel_tan_ratio(fov_y: f32, image_height: f32) -> f32 {
 /// `alpha = atan(2 * tan(fov_y / 2) / H)`.
 ///
 /// `fov_y` is clamped to `[0, MAX_FOV_Y]`, `image_height` to `>= 1`.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::pixel_spread_angle;
+///
+/// // 60-degree field of view, 1080 rows: at distance 1 the image is 2 tan(30°) = 2 / sqrt(3) tall,
+/// // so a pixel is 2 / (sqrt(3) 1080) tall there and subtends the atan of that.
+/// let alpha = pixel_spread_angle(60f32.to_radians(), 1080.0);
+/// let expected = (2.0 / (3f64.sqrt() * 1080.0)).atan();
+/// assert!((f64::from(alpha) - expected).abs() < 1e-6 * expected);
+/// ```
 pub fn pixel_spread_angle(fov_y: f32, image_height: f32) -> f32 {
     (pixel_tan_ratio(fov_y, image_height)).atan()
 }
 
 /// Spread angle of one pixel, small-angle form `2 * tan(fov_y / 2) / H` (the ray-cone tutorial's
 /// approximation of RTG Eq. 30); clamps as [`pixel_spread_angle`].
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::pixel_spread_angle_small;
+///
+/// // The pixel's height at distance 1 itself, 2 / (sqrt(3) 1080) for 60 degrees and 1080 rows.
+/// let alpha = pixel_spread_angle_small(60f32.to_radians(), 1080.0);
+/// let expected = 2.0 / (3f64.sqrt() * 1080.0);
+/// assert!((f64::from(alpha) - expected).abs() < 1e-6 * expected);
+/// ```
 pub fn pixel_spread_angle_small(fov_y: f32, image_height: f32) -> f32 {
     pixel_tan_ratio(fov_y, image_height)
 }
 
 /// Spread angle of one pixel from an inverse projection matrix, exact form (RTG Eq. 30) with
 /// `tan(fov_y / 2) = |proj_inv[1][1]|` (column 1, row 1; holds for y-flipped Vulkan projections too).
+///
+/// # Examples
+///
+/// ```
+/// use glam::camera::rh::proj::vulkan::perspective;
+/// use ray_footprint::ray_cone::pixel_spread_angle_from_proj_inv;
+///
+/// // glam's Vulkan projection (y down) for 60 degrees, 16:9.
+/// let proj = perspective(60f32.to_radians(), 16.0 / 9.0, 0.1, 1000.0);
+/// let alpha = pixel_spread_angle_from_proj_inv(proj.inverse(), 1080.0);
+/// // As from the field of view: atan(2 tan(30°) / 1080), with tan(30°) = 1 / sqrt(3).
+/// let expected = (2.0 / (3f64.sqrt() * 1080.0)).atan();
+/// assert!((f64::from(alpha) - expected).abs() < 1e-6 * expected);
+/// ```
 pub fn pixel_spread_angle_from_proj_inv(proj_inv: Mat4, image_height: f32) -> f32 {
     (2.0 * proj_inv.y_axis.y.abs() / image_height.max(1.0)).atan()
 }
 
 /// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30),
 /// the same for every pixel (see [`pinhole_ray_cone_for_ray`] for off-axis pixels).
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{pinhole_ray_cone, pixel_spread_angle, width_at};
+///
+/// let cone = pinhole_ray_cone(pixel_spread_angle(60f32.to_radians(), 1080.0));
+/// // On a wall 10 m away facing the camera, a pixel at the image centre is 10 * 2 tan(30°) / 1080
+/// // tall; the cone's width matches it to within (pixel angle)^2 / 3 = 4e-7 of it.
+/// let pixel_height = 10.0 * 2.0 / (3f64.sqrt() * 1080.0);
+/// let width = f64::from(width_at(cone, 10.0));
+/// assert!((width - pixel_height).abs() < 1e-6 * pixel_height);
+/// ```
 pub fn pinhole_ray_cone(pixel_spread_angle: f32) -> RayCone {
     RayCone {
         width: 0.0,
@@ -110,6 +190,23 @@ pub fn pinhole_ray_cone(pixel_spread_angle: f32) -> RayCone {
 /// [`pinhole_ray_cone`] is `1 / cos(theta)` too wide. The cosine is clamped to `[0, 1]`: a ray at
 /// 90 degrees to the view axis or behind the camera (outside any pinhole's view) gets spread 0, the
 /// limit of a pixel at 90 degrees, and `|spread|` never exceeds `|pixel_spread_angle|`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::{pinhole_ray_cone_for_ray, pixel_spread_angle};
+///
+/// let alpha = pixel_spread_angle(60f32.to_radians(), 1080.0);
+/// // A pixel 30 degrees off the axis lies 1 / cos(30°) from the eye on the image plane at distance 1,
+/// // sqrt(1 + tan^2(30°)) = sqrt(4 / 3), so it subtends the central pixel's angle over that distance.
+/// let direction = Vec3::new(0.5, 0.0, -(0.75f32.sqrt()));
+/// let cone = pinhole_ray_cone_for_ray(alpha, direction, Vec3::NEG_Z);
+/// let expected = alpha / (4.0f32 / 3.0).sqrt();
+/// assert!((cone.spread_angle - expected).abs() < 1e-6 * expected);
+/// // No pixel of the camera sees a ray going backwards.
+/// assert_eq!(pinhole_ray_cone_for_ray(alpha, Vec3::Z, Vec3::NEG_Z).spread_angle, 0.0);
+/// ```
 pub fn pinhole_ray_cone_for_ray(pixel_spread_angle: f32, direction: Vec3, view_axis: Vec3) -> RayCone {
     RayCone {
         width: 0.0,
@@ -119,6 +216,17 @@ pub fn pinhole_ray_cone_for_ray(pixel_spread_angle: f32, direction: Vec3, view_a
 
 /// Primary cone of an orthographic camera whose view is `view_height` world units tall:
 /// width = one pixel, `view_height / H`, spread 0. `image_height` is clamped to `>= 1`.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::orthographic_ray_cone;
+///
+/// // A view 2 m tall on 1080 rows: 1080 pixel widths tile the 2 m, and the rays stay parallel.
+/// let cone = orthographic_ray_cone(2.0, 1080.0);
+/// assert!((cone.width * 1080.0 - 2.0).abs() <= 2.0 * f32::EPSILON);
+/// assert_eq!(cone.spread_angle, 0.0);
+/// ```
 pub fn orthographic_ray_cone(view_height: f32, image_height: f32) -> RayCone {
     RayCone {
         width: view_height / image_height.max(1.0),
@@ -130,6 +238,20 @@ pub fn orthographic_ray_cone(view_height: f32, image_height: f32) -> RayCone {
 /// `focus_distance`: width `aperture` at the lens, spread `pixel_spread_angle - aperture / focus_distance`
 /// (negative while the cone converges towards the focal plane). `focus_distance` is clamped to
 /// `>= MIN_MAGNITUDE`.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{pixel_spread_angle, thin_lens_ray_cone, width_at};
+///
+/// // A 5 cm aperture focused at 4 m (60 degrees, 1080 rows): on the focal plane the pixel is
+/// // in focus, so the cone has shrunk from the lens to the pinhole footprint, 4 m times the pixel
+/// // angle. The tolerance is the rounding of 0.05 + (alpha - 0.0125) * 4, about 4e-9.
+/// let alpha = pixel_spread_angle(60f32.to_radians(), 1080.0);
+/// let cone = thin_lens_ray_cone(alpha, 0.05, 4.0);
+/// assert!(cone.spread_angle < 0.0);
+/// assert!((width_at(cone, 4.0) - 4.0 * alpha).abs() < 1e-8);
+/// ```
 pub fn thin_lens_ray_cone(pixel_spread_angle: f32, aperture: f32, focus_distance: f32) -> RayCone {
     RayCone {
         width: aperture,
@@ -138,6 +260,18 @@ pub fn thin_lens_ray_cone(pixel_spread_angle: f32, aperture: f32, focus_distance
 }
 
 /// Cone width after travelling `t` along the ray: `width + spread_angle * t` (RTG Eq. 35, first line).
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{width_at, RayCone};
+///
+/// // A cone 1 cm wide spreading by 1 mrad has its apex width / spread = 10 m behind the origin;
+/// // by similar triangles it is (10 + 25) / 10 times as wide 25 m further on.
+/// let cone = RayCone { width: 0.01, spread_angle: 0.001 };
+/// let expected = 0.01 * (10.0 + 25.0) / 10.0;
+/// assert!((width_at(cone, 25.0) - expected).abs() < 1e-6 * expected);
+/// ```
 pub fn width_at(cone: RayCone, t: f32) -> f32 {
     cone.width + cone.spread_angle * t
 }
@@ -148,6 +282,18 @@ pub fn width_at(cone: RayCone, t: f32) -> f32 {
 /// This is the reflected (or transmitted) cone. Its width is the cone's cross-section at the hit,
 /// not the slanted footprint on the surface, so a planar mirror (`surface_spread_angle = 0`) behaves
 /// exactly like a mirror-image camera.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{pinhole_ray_cone, pixel_spread_angle, propagate, width_at};
+///
+/// // A flat mirror 3 m from the camera: the reflected cone is the cone of the camera's mirror image
+/// // 3 m behind the mirror, so 2 m after the mirror it is as wide as a pinhole cone at 5 m.
+/// let alpha = pixel_spread_angle(60f32.to_radians(), 1080.0);
+/// let reflected = propagate(pinhole_ray_cone(alpha), 3.0, 0.0);
+/// assert!((width_at(reflected, 2.0) - 5.0 * alpha).abs() < 1e-6 * 5.0 * alpha);
+/// ```
 pub fn propagate(cone: RayCone, t: f32, surface_spread_angle: f32) -> RayCone {
     RayCone {
         width: width_at(cone, t),
@@ -162,17 +308,54 @@ fn normal_derivative_length(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
 
 /// Angle spanned by the normal across one pixel, from G-buffer normal derivatives (RTG Eq. 31-32):
 /// `phi = 2 * atan(0.5 * sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy)))`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::normal_spread_angle;
+///
+/// // Across one pixel the normal (0, 0, 1) changes by (0.02, 0, 0): the normals half a pixel either
+/// // side are (-+0.01, 0, 1), whose angle is atan2(|cross|, dot) = atan2(0.02, 0.9999).
+/// let phi = normal_spread_angle(Vec3::new(0.02, 0.0, 0.0), Vec3::ZERO);
+/// let expected = 0.02f64.atan2(0.9999);
+/// assert!((f64::from(phi) - expected).abs() < 1e-6 * expected);
+/// ```
 pub fn normal_spread_angle(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
     2.0 * (0.5 * normal_derivative_length(dn_dx, dn_dy)).atan()
 }
 
 /// Small-angle form of [`normal_spread_angle`]: `sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy))` (RTG Eq. 32).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::normal_spread_angle_small;
+///
+/// // Normal changes of 0.003 and 0.004 per pixel at right angles: 0.005 by Pythagoras.
+/// let phi = normal_spread_angle_small(Vec3::new(0.003, 0.0, 0.0), Vec3::new(0.0, 0.004, 0.0));
+/// assert!((phi - 0.005).abs() < 1e-9);
+/// ```
 pub fn normal_spread_angle_small(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
     normal_derivative_length(dn_dx, dn_dy)
 }
 
 /// Whether the surface is convex (1) or concave (-1) as seen by the ray (RTG Eq. 33):
 /// `s = sign(dot(dp_dx, dn_dx) + dot(dp_dy, dn_dy))` with `sign(0) = -1`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::curvature_sign;
+///
+/// // On a unit sphere the outward normal is the position, n = p: seen from outside, the normal
+/// // changes with the position (convex); from inside, with normals n = -p, against it (concave).
+/// let (dp_dx, dp_dy) = (Vec3::new(0.01, 0.0, 0.0), Vec3::new(0.0, -0.01, 0.0));
+/// assert_eq!(curvature_sign(dp_dx, dp_dy, dp_dx, dp_dy), 1.0);
+/// assert_eq!(curvature_sign(dp_dx, dp_dy, -dp_dx, -dp_dy), -1.0);
+/// ```
 pub fn curvature_sign(dp_dx: Vec3, dp_dy: Vec3, dn_dx: Vec3, dn_dy: Vec3) -> f32 {
     if dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy) > 0.0 {
         1.0
@@ -184,6 +367,22 @@ pub fn curvature_sign(dp_dx: Vec3, dp_dy: Vec3, dn_dx: Vec3, dn_dy: Vec3) -> f32
 /// Surface spread angle (RTG Eq. 32): `beta = 2 * k1 * s * phi + k2`, with `phi` from
 /// [`normal_spread_angle`] and `s` from [`curvature_sign`] (or 1 for saddle-heavy scenes).
 /// RTG uses `k1 = 1`, `k2 = 0` by default.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{DQuat, DVec3};
+/// use ray_footprint::ray_cone::surface_spread_angle;
+///
+/// // RTG's defaults (k1 = 1, k2 = 0), a convex surface whose normal turns by 0.01 across the footprint.
+/// let beta = surface_spread_angle(0.01, 1.0, 1.0, 0.0);
+/// // Law of reflection: turning the normal by 0.01 turns the reflected ray by twice that.
+/// let d = DVec3::new(0.6, 0.0, -0.8);
+/// let reflect = |n: DVec3| d - 2.0 * d.dot(n) * n;
+/// let (r0, r1) = (reflect(DVec3::Z), reflect(DQuat::from_rotation_y(0.01) * DVec3::Z));
+/// let turn = r0.cross(r1).length().atan2(r0.dot(r1));
+/// assert!((f64::from(beta) - turn).abs() < 1e-9); // 0.02 in f32 is 4.5e-10 off
+/// ```
 pub fn surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f32, k2: f32) -> f32 {
     2.0 * k1 * curvature_sign * normal_spread_angle + k2
 }
@@ -191,6 +390,18 @@ pub fn surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f
 /// Curvature along one triangle edge from its vertex normals (JCGT 2021, Sec. 3):
 /// `k = dot(n_j - n_i, p_j - p_i) / |p_j - p_i|^2`; 1/R on a sphere of radius R with outward normals.
 /// The squared length is clamped to `>= MIN_MAGNITUDE` (a zero-length edge gives 0).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::edge_curvature;
+///
+/// // Two vertices of a sphere of radius 2 with their outward normals p / 2: curvature 1 / 2.
+/// let (p_i, p_j) = (Vec3::new(2.0, 0.0, 0.0), Vec3::new(1.2, 1.6, 0.0));
+/// let k = edge_curvature(p_i, p_j, p_i / 2.0, p_j / 2.0);
+/// assert!((k - 0.5).abs() < 1e-6);
+/// ```
 pub fn edge_curvature(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
     let edge = p_j - p_i;
     (n_j - n_i).dot(edge) / edge.dot(edge).max(MIN_MAGNITUDE)
@@ -198,6 +409,20 @@ pub fn edge_curvature(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
 
 /// Curvature estimate of a triangle: the mean of its three [`edge_curvature`] values (JCGT 2021).
 /// Zero for a flat triangle (equal vertex normals).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::triangle_curvature;
+///
+/// // A triangle of the unit sphere, each normal its vertex: curvature 1. The same triangle with one
+/// // normal for all three vertices is flat: 0.
+/// let (p0, p1, p2) = (Vec3::X, Vec3::Y, Vec3::Z);
+/// assert!((triangle_curvature(p0, p1, p2, p0, p1, p2) - 1.0).abs() < 1e-6);
+/// let flat = Vec3::ONE.normalize();
+/// assert_eq!(triangle_curvature(p0, p1, p2, flat, flat, flat), 0.0);
+/// ```
 pub fn triangle_curvature(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3, n2: Vec3) -> f32 {
     (edge_curvature(p0, p1, n0, n1) + edge_curvature(p1, p2, n1, n2) + edge_curvature(p2, p0, n2, n0)) / 3.0
 }
@@ -236,12 +461,42 @@ fn facing_cos(normal: Vec3, direction: Vec3) -> f32 {
 ///   negative (the cone has turned inside out), and a spread of the width's sign widens it. A convex
 ///   mirror gives `beta` the width's sign and a concave one the opposite sign, on both sides of a
 ///   focus. The reflected cone is `propagate(cone, t, beta)`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::curvature_spread_angle;
+///
+/// // A cone 1 cm wide meets a mirror ball of radius 1 (curvature 1) head on.
+/// let beta = curvature_spread_angle(1.0, 0.01, Vec3::Z, Vec3::NEG_Z);
+/// // Its edge rays, 5 mm off centre, meet normals tilted by asin(0.005) and leave turned by twice
+/// // that, each to its own side: 4 asin(0.005) apart. asin x = x + x^3 / 6 puts the first-order
+/// // beta 4e-6 (relative) below that.
+/// let exact = 4.0 * 0.005f64.asin();
+/// assert!((f64::from(beta) - exact).abs() < 1e-5 * exact);
+/// ```
 pub fn curvature_spread_angle(curvature: f32, width: f32, normal: Vec3, direction: Vec3) -> f32 {
     2.0 * curvature * width / facing_cos(normal, direction)
 }
 
 /// World-space footprint on the surface, slant-corrected (ray-cone tutorial, after RTG Eq. 34):
 /// `|width + spread_angle * t| / max(|dot(normal, direction)|, MIN_COS)`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::{orthographic_ray_cone, world_footprint};
+///
+/// // A parallel cone 1 cm wide meets the floor (normal +Y) 60 degrees from the normal: the strip it
+/// // cuts out is 1 cm / cos(60°) = 2 cm long.
+/// let cone = orthographic_ray_cone(10.8, 1080.0);
+/// let angle = 60f32.to_radians();
+/// let direction = Vec3::new(angle.sin(), -angle.cos(), 0.0);
+/// let footprint = world_footprint(cone, 4.0, Vec3::Y, direction);
+/// assert!((footprint - 0.02).abs() < 1e-6 * 0.02);
+/// ```
 pub fn world_footprint(cone: RayCone, t: f32, normal: Vec3, direction: Vec3) -> f32 {
     width_at(cone, t).abs() / normal.dot(direction).abs().max(MIN_COS)
 }
@@ -250,6 +505,20 @@ pub fn world_footprint(cone: RayCone, t: f32, normal: Vec3, direction: Vec3) -> 
 ///
 /// The cross product `c` is measured as `m * |c / m|` with `m` its largest component (at least
 /// `MIN_MAGNITUDE`), so that squaring cannot overflow for coordinates up to about 1e18.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::triangle_world_area2;
+///
+/// let (p0, p1, p2) = (Vec3::new(1.0, 1.0, 1.0), Vec3::new(2.0, 3.0, 3.0), Vec3::new(3.0, 2.0, -1.0));
+/// // Heron's formula from the side lengths (3, 3 and 3 sqrt(2)): area 4.5.
+/// let (a, b, c) = (p0.distance(p1), p1.distance(p2), p2.distance(p0));
+/// let s = (a + b + c) / 2.0;
+/// let heron = (s * (s - a) * (s - b) * (s - c)).sqrt();
+/// assert!((triangle_world_area2(p0, p1, p2) - 2.0 * heron).abs() < 1e-5);
+/// ```
 pub fn triangle_world_area2(p0: Vec3, p1: Vec3, p2: Vec3) -> f32 {
     let cross = (p1 - p0).cross(p2 - p0);
     let scale = cross
@@ -262,12 +531,36 @@ pub fn triangle_world_area2(p0: Vec3, p1: Vec3, p2: Vec3) -> f32 {
 
 /// Twice the UV-space area of a triangle: `|cross(uv1 - uv0, uv2 - uv0)|` (RTG Eq. 4, `t_a` without
 /// the texture size).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec2;
+/// use ray_footprint::ray_cone::triangle_uv_area2;
+///
+/// // Half of the square [0.25, 0.75]^2 of the texture: area 0.125, either winding.
+/// let (uv0, uv1, uv2) = (Vec2::new(0.25, 0.25), Vec2::new(0.75, 0.25), Vec2::new(0.25, 0.75));
+/// assert_eq!(triangle_uv_area2(uv0, uv1, uv2), 2.0 * 0.125);
+/// assert_eq!(triangle_uv_area2(uv0, uv2, uv1), 2.0 * 0.125);
+/// ```
 pub fn triangle_uv_area2(uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
     (uv1 - uv0).perp_dot(uv2 - uv0).abs()
 }
 
 /// Texel density of a triangle, UV units per world unit: `sqrt(uv_area2) / sqrt(world_area2)`
 /// (ray-cone tutorial), with `world_area2` clamped to `>= MIN_MAGNITUDE`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use ray_footprint::ray_cone::texel_density;
+///
+/// // Half of a 2 m x 2 m floor tile whose texture spans it once: 1 UV unit per 2 m.
+/// let (p0, p1, p2) = (Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -2.0));
+/// let density = texel_density(p0, p1, p2, Vec2::ZERO, Vec2::X, Vec2::Y);
+/// assert!((density - 0.5).abs() < 1e-7);
+/// ```
 pub fn texel_density(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
     triangle_uv_area2(uv0, uv1, uv2).sqrt() / triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE).sqrt()
 }
@@ -275,6 +568,19 @@ pub fn texel_density(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Ve
 /// Base level of detail of a triangle in UV units (RTG Eq. 4):
 /// `Delta = 0.5 * (log2(uv_area2) - log2(world_area2))`, both areas clamped to `>= MIN_MAGNITUDE`.
 /// Add `0.5 * log2(W * H)` for a W x H texture (see [`texture_lod`]).
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use ray_footprint::ray_cone::triangle_base_lod;
+///
+/// // The 2 m tile with its texture spanning it once: 0.5 UV units per metre, log2(0.5) = -1. A
+/// // 1024 x 1024 texture adds 0.5 log2(1024 * 1024) = 10: 512 texels per metre, log2(512) = 9.
+/// let (p0, p1, p2) = (Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -2.0));
+/// let base = triangle_base_lod(p0, p1, p2, Vec2::ZERO, Vec2::X, Vec2::Y);
+/// assert!((base - -1.0).abs() < 1e-6);
+/// ```
 pub fn triangle_base_lod(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
     let uv_area2 = triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
     let world_area2 = triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
@@ -287,6 +593,25 @@ pub fn triangle_base_lod(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2
 ///
 /// `width` is the cone width at the hit ([`width_at`]). For a square texture this equals
 /// `log2(world_footprint * texel_density * W)`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use ray_footprint::ray_cone::{texture_lod, triangle_base_lod};
+///
+/// // The 2 m floor tile with a 1024 x 1024 texture spanning it (512 texels per metre), hit head on by
+/// // a cone 1/64 m wide: the footprint covers 512 / 64 = 8 texels, mip level log2(8) = 3.
+/// let (p0, p1, p2) = (Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -2.0));
+/// let base = triangle_base_lod(p0, p1, p2, Vec2::ZERO, Vec2::X, Vec2::Y);
+/// let size = Vec2::splat(1024.0);
+/// let head_on = texture_lod(base, 1.0 / 64.0, size, Vec3::Y, Vec3::NEG_Y);
+/// assert!((head_on - 3.0).abs() < 1e-5);
+/// // 60 degrees from the normal the footprint is 1 / cos(60°) = 2 times as long: one level up.
+/// let angle = 60f32.to_radians();
+/// let slanted = texture_lod(base, 1.0 / 64.0, size, Vec3::Y, Vec3::new(angle.sin(), -angle.cos(), 0.0));
+/// assert!((slanted - 4.0).abs() < 1e-5);
+/// ```
 pub fn texture_lod(base_lod: f32, width: f32, texture_size: Vec2, normal: Vec3, direction: Vec3) -> f32 {
     let size = texture_size.max(Vec2::ONE);
     base_lod + width.abs().max(MIN_MAGNITUDE).log2() + 0.5 * (size.x.log2() + size.y.log2())
@@ -296,12 +621,38 @@ pub fn texture_lod(base_lod: f32, width: f32, texture_size: Vec2, normal: Vec3, 
 /// Isotropic `textureGrad` gradient length in UV units (ray-cone tutorial):
 /// `g = |uv_footprint| * max(tex_grad_scale, 0)`; sample with `ddx = (g, 0)`, `ddy = (0, g)`.
 /// `tex_grad_scale` 0 samples mip 0, 1 the matching level, above 1 blurs.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::texture_gradient;
+///
+/// // A footprint 1/128 UV units wide (1/64 m on a tile of 0.5 UV units per metre) is 8 texels of a
+/// // 1024-texel texture: the sampler picks mip level log2(8) = 3.
+/// let g = texture_gradient(1.0 / 128.0, 1.0);
+/// assert_eq!((g * 1024.0).log2(), 3.0);
+/// // tex_grad_scale 2 blurs by one level; 0 samples mip 0.
+/// assert_eq!((texture_gradient(1.0 / 128.0, 2.0) * 1024.0).log2(), 4.0);
+/// assert_eq!(texture_gradient(1.0 / 128.0, 0.0), 0.0);
+/// ```
 pub fn texture_gradient(uv_footprint: f32, tex_grad_scale: f32) -> f32 {
     uv_footprint.abs() * tex_grad_scale.max(0.0)
 }
 
 /// Level of detail for a latitude-longitude environment map `map_height` texels tall (RTG ch. 21,
 /// as in Falcor): `log2(max(|spread_angle| * H / pi, MIN_MAGNITUDE))`, `map_height` clamped to `>= 1`.
+///
+/// # Examples
+///
+/// ```
+/// use std::f32::consts::PI;
+/// use ray_footprint::ray_cone::environment_lod;
+///
+/// // A latitude-longitude map 2048 texels tall spans pi radians of latitude, pi / 2048 per texel:
+/// // a cone 8 texels wide, 8 pi / 2048, reads level log2(8) = 3.
+/// let lod = environment_lod(8.0 * PI / 2048.0, 2048.0);
+/// assert!((lod - 3.0).abs() < 1e-6);
+/// ```
 pub fn environment_lod(spread_angle: f32, map_height: f32) -> f32 {
     (spread_angle.abs() * map_height.max(1.0) / std::f32::consts::PI)
         .max(MIN_MAGNITUDE)
@@ -460,6 +811,26 @@ fn refracted_angle_between(sine_gap: f32, upper: Vec2, lower: Vec2) -> f32 {
 /// meet the surface, at most `MAX_INCIDENCE_ANGLE` from the normal (a near-grazing cone whose edge
 /// would miss the surface grazes it instead); `|beta|` is clamped to `MAX_NORMAL_SPREAD`; the
 /// landing and leaving cosines to `>= MIN_COS`. A zero direction counts as normal incidence.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::{refract_ray_cone, RayCone};
+///
+/// // A cone converging to a point (width 0) meets flat glass head on, from air (eta = 1 / 1.5):
+/// // its edge rays, 0.01 rad from the normal, bend by Snell's law to asin(eta sin 0.01) each.
+/// let cone = RayCone { width: 0.0, spread_angle: 0.02 };
+/// let eta = 1.0 / 1.5;
+/// let refracted = refract_ray_cone(cone, Vec3::Y, Vec3::NEG_Y, 0.0, eta);
+/// let exact = 2.0 * (f64::from(eta) * 0.01f64.sin()).asin();
+/// assert!(!refracted.total_internal_reflection);
+/// assert!((f64::from(refracted.cone.spread_angle) - exact).abs() < 1e-6 * exact);
+/// // From glass into air at 60 degrees, beyond the critical angle asin(1 / 1.5) = 41.8 degrees.
+/// let angle = 60f32.to_radians();
+/// let inside = Vec3::new(angle.sin(), -angle.cos(), 0.0);
+/// assert!(refract_ray_cone(cone, Vec3::Y, inside, 0.0, 1.5).total_internal_reflection);
+/// ```
 pub fn refract_ray_cone(
     cone: RayCone,
     normal: Vec3,
@@ -518,6 +889,19 @@ pub fn refract_ray_cone(
 /// The input is perceptual roughness (the material parameter), not GGX alpha. Falcor adds the
 /// result to the normal's spread before a reflection's factor 2: for a reflection add
 /// `2 * roughness_spread_angle(r)` to the surface spread angle passed to [`propagate`].
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::roughness_spread_angle;
+///
+/// // With alpha = r^2, 2 sqrt(0.5 alpha^2 / (1 - alpha^2)) is sqrt(2) r^2 / sqrt(1 - r^4).
+/// let r = 0.5f64;
+/// let expected = 2f64.sqrt() * r * r / (1.0 - r.powi(4)).sqrt();
+/// assert!((f64::from(roughness_spread_angle(0.5)) - expected).abs() < 1e-6 * expected);
+/// // A perfect mirror adds nothing.
+/// assert_eq!(roughness_spread_angle(0.0), 0.0);
+/// ```
 pub fn roughness_spread_angle(roughness: f32) -> f32 {
     let r = roughness.clamp(0.0, 1.0);
     let alpha = r * r;

@@ -65,6 +65,19 @@ fn plane_barycentrics_f64(origin: DVec3, direction: DVec3, p0: DVec3, p1: DVec3,
 }
 
 /// [`crate::ray_diff::intersect_triangle_plane`] computed in f64: f32 in, f32 out.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_diff_f64::intersect_triangle_plane_f64;
+///
+/// // A triangle 10 km away with legs of 4 m along y and z (u = y / 4, v = z / 4), and
+/// // the ray from the origin towards its point (10000, 1, 2): (w, u, v) = (0.25, 0.25, 0.5).
+/// let (p0, p1, p2) = (Vec3::new(1.0e4, 0.0, 0.0), Vec3::new(1.0e4, 4.0, 0.0), Vec3::new(1.0e4, 0.0, 4.0));
+/// let b = intersect_triangle_plane_f64(Vec3::ZERO, Vec3::new(1.0e4, 1.0, 2.0), p0, p1, p2);
+/// assert!((b - Vec3::new(0.25, 0.25, 0.5)).length() < 1e-7);
+/// ```
 pub fn intersect_triangle_plane_f64(origin: Vec3, direction: Vec3, p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
     plane_barycentrics_f64(
         origin.as_dvec3(),
@@ -88,6 +101,32 @@ fn transform_point_f64(matrix: Mat4, point: DVec3) -> DVec3 {
 /// [`crate::ray_diff::barycentric_offsets`] computed in f64 (wireframe tutorial,
 /// `computeDerivativeHighp`): the moved origins `O + direction`, their object-space images and the
 /// plane intersections are f64; the differences `b_x - b`, `b_y - b` are rounded to f32 once.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Mat4, Vec3};
+/// use ray_footprint::ray_diff::barycentric_offsets;
+/// use ray_footprint::ray_diff_f64::barycentric_offsets_f64;
+///
+/// // 10 km from the world origin: a floor triangle with legs of 4 m along x and -z
+/// // (u = (x - x0) / 4, v = -(z - z0) / 4), seen from 2 m above its point (1, 0, -1) relative to p0.
+/// let p0 = Vec3::new(1.0e4, 0.0, -1.0e4);
+/// let (p1, p2) = (p0 + Vec3::new(4.0, 0.0, 0.0), p0 + Vec3::new(0.0, 0.0, -4.0));
+/// let origin = p0 + Vec3::new(1.0, 2.0, -1.0);
+/// let hit = Vec3::new(0.5, 0.25, 0.25);
+/// // The neighbour rays lean 1 mrad towards +x and +z and land 2 mm away: u grows by 0.002 / 4 and
+/// // v drops by as much. Only the final rounding to f32 remains (6e-11 at 0.0005).
+/// let right = Vec3::new(1e-3, -1.0, 0.0).normalize();
+/// let below = Vec3::new(0.0, -1.0, 1e-3).normalize();
+/// let offsets = barycentric_offsets_f64(Mat4::IDENTITY, origin, p0, p1, p2, right, below, hit);
+/// let exact_dx = Vec3::new(-0.0005, 0.0005, 0.0);
+/// assert!((offsets.dx - exact_dx).length() < 1e-9);
+/// assert!((offsets.dy - Vec3::new(0.0005, 0.0, -0.0005)).length() < 1e-9);
+/// // In f32, 1e4 + 0.001 keeps the lean only to the f32 spacing at 1e4, 0.00098: 2 % off.
+/// let coarse = barycentric_offsets(Mat4::IDENTITY, origin, p0, p1, p2, right, below, hit);
+/// assert!((coarse.dx - exact_dx).length() > 0.01 * exact_dx.length());
+/// ```
 #[allow(clippy::too_many_arguments)]
 pub fn barycentric_offsets_f64(
     world_to_object: Mat4,
@@ -113,6 +152,24 @@ pub fn barycentric_offsets_f64(
 
 /// [`crate::ray_diff::barycentric_deltas`] from [`barycentric_offsets_f64`]: `|b_x - b| + |b_y - b|`
 /// (the final sum in f32).
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Mat4, Vec3};
+/// use ray_footprint::ray_diff_f64::barycentric_deltas_f64;
+///
+/// // The scene of `barycentric_offsets_f64`, 10 km out: one step lands 2 mm away along x, the other
+/// // along +z, so |du| = |dv| = 0.0005 and w changes by both.
+/// let p0 = Vec3::new(1.0e4, 0.0, -1.0e4);
+/// let (p1, p2) = (p0 + Vec3::new(4.0, 0.0, 0.0), p0 + Vec3::new(0.0, 0.0, -4.0));
+/// let origin = p0 + Vec3::new(1.0, 2.0, -1.0);
+/// let right = Vec3::new(1e-3, -1.0, 0.0).normalize();
+/// let below = Vec3::new(0.0, -1.0, 1e-3).normalize();
+/// let hit = Vec3::new(0.5, 0.25, 0.25);
+/// let deltas = barycentric_deltas_f64(Mat4::IDENTITY, origin, p0, p1, p2, right, below, hit);
+/// assert!((deltas - Vec3::new(0.001, 0.0005, 0.0005)).length() < 1e-9);
+/// ```
 #[allow(clippy::too_many_arguments)]
 pub fn barycentric_deltas_f64(
     world_to_object: Mat4,

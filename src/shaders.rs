@@ -120,6 +120,22 @@ impl Module {
     /// The module's functions, in the module's order: the public functions of the Rust mirror
     /// (each shader module declares them, prefixed `rf_`, in the same order, along with helper
     /// functions the Rust mirror keeps private).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use ray_footprint::shaders::Module;
+    ///
+    /// // The WGSL module declares each function, prefixed rf_, in the same order.
+    /// let functions = Module::Wireframe.functions();
+    /// assert_eq!(functions[0], "unpack_wireframe_settings");
+    /// let wgsl = Module::Wireframe.wgsl();
+    /// let positions: Vec<usize> = functions
+    ///     .iter()
+    ///     .map(|name| wgsl.find(&format!("fn rf_{name}(")).expect("declared in WGSL"))
+    ///     .collect();
+    /// assert!(positions.windows(2).all(|pair| pair[0] < pair[1]));
+    /// ```
     pub fn functions(self) -> Vec<&'static str> {
         self.mirror_source()
             .lines()
@@ -129,6 +145,17 @@ impl Module {
     }
 
     /// Whether the module uses 64-bit floats (naga `FLOAT64`, Vulkan `shaderFloat64`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use ray_footprint::shaders::Module;
+    ///
+    /// // Only the double-precision module declares f64 values in its WGSL.
+    /// for module in Module::ALL {
+    ///     assert_eq!(module.needs_f64(), module.wgsl().contains("f64"), "{module:?}");
+    /// }
+    /// ```
     pub fn needs_f64(self) -> bool {
         self.stem().ends_with("_f64")
     }
@@ -180,6 +207,16 @@ impl Module {
 /// The WGSL sources of `modules`, each once, in the order of [`Module::ALL`], ready to be
 /// pasted in front of a shader. The modules do not depend on one another, so this is every
 /// module the listed ones need.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::shaders::{wgsl_prelude, Module};
+///
+/// // Asked in any order and with repeats, each module comes once, in the order of Module::ALL.
+/// let prelude = wgsl_prelude(&[Module::Wireframe, Module::RayCone, Module::Wireframe]);
+/// assert_eq!(prelude, format!("{}\n{}\n", Module::RayCone.wgsl(), Module::Wireframe.wgsl()));
+/// ```
 pub fn wgsl_prelude(modules: &[Module]) -> String {
     Module::ALL
         .iter()

@@ -177,6 +177,18 @@ pub const WIREFRAME_STIPPLE: WireframeSettings = WireframeSettings {
 
 /// Turns the host-shareable mirror back into settings: every integer flag becomes `flag != 0`
 /// (the wireframe tutorial's `unpackWireframeSettings`).
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::wireframe::{unpack_wireframe_settings, WIREFRAME_STIPPLE};
+///
+/// // Packing and unpacking gives the settings back; any non-zero integer is true, as in GLSL's bool(int).
+/// let mut io = WIREFRAME_STIPPLE.pack();
+/// assert_eq!(unpack_wireframe_settings(io), WIREFRAME_STIPPLE);
+/// io.screen_space = -7;
+/// assert!(unpack_wireframe_settings(io).screen_space);
+/// ```
 pub fn unpack_wireframe_settings(io: WireframeSettingsIo) -> WireframeSettings {
     WireframeSettings {
         thickness_var: io.thickness_var,
@@ -191,6 +203,18 @@ pub fn unpack_wireframe_settings(io: WireframeSettingsIo) -> WireframeSettings {
 
 /// Position along the nearest edge (wireframe tutorial, `edgePosition`):
 /// `e = max(b.x, b.y, b.z)`, 1 at a vertex and 0.5 at an edge middle (1/3 at the centroid).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::wireframe::edge_position;
+///
+/// // 1/3 at the centroid, 1/2 in the middle of an edge, 1 at a vertex.
+/// assert_eq!(edge_position(Vec3::splat(1.0 / 3.0)), 1.0 / 3.0);
+/// assert_eq!(edge_position(Vec3::new(0.5, 0.0, 0.5)), 0.5);
+/// assert_eq!(edge_position(Vec3::new(0.0, 1.0, 0.0)), 1.0);
+/// ```
 pub fn edge_position(barycentrics: Vec3) -> f32 {
     barycentrics.x.max(barycentrics.y).max(barycentrics.z)
 }
@@ -204,6 +228,20 @@ pub fn edge_position(barycentrics: Vec3) -> f32 {
 /// negative (and a device's `sin` may be off by 2^-11), which would extrapolate beyond `var` (at a
 /// vertex, `var = (1e6, 0.1)` would give a negative thickness); each `thickness_var` component to
 /// `[0, MAX_LINE_THICKNESS]`. The result lies between the two clamped factors.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec2;
+/// use ray_footprint::wireframe::edge_thickness;
+///
+/// // Twice as thick in the middle of an edge (e = 1/2) as at its vertices (e = 1); at e = 5/6,
+/// // sin(5 pi / 6) = 1/2 puts it half way, 1.5.
+/// let var = Vec2::new(2.0, 1.0);
+/// assert!((edge_thickness(var, 0.5) - 2.0).abs() < 1e-6);
+/// assert!((edge_thickness(var, 5.0 / 6.0) - 1.5).abs() < 1e-6);
+/// assert_eq!(edge_thickness(var, 1.0), 1.0);
+/// ```
 pub fn edge_thickness(thickness_var: Vec2, edge_position: f32) -> f32 {
     let factors = thickness_var.clamp(Vec2::ZERO, Vec2::splat(MAX_LINE_THICKNESS));
     let towards_vertex = (1.0 - (edge_position.clamp(0.0, 1.0) * std::f32::consts::PI).sin()).clamp(0.0, 1.0);
@@ -217,6 +255,19 @@ pub fn edge_thickness(thickness_var: Vec2, edge_position: f32) -> f32 {
 /// `fract(x)` is `x - floor(x)`, as in GLSL and WGSL (not Rust's `f32::fract`). Defined beyond the
 /// tutorial: `stipple_repeats <= 0` draws no dashes (returns 1); `stipple_length` is clamped to
 /// `[0, 1]` (1 = a solid line, 0 = nothing drawn) and `e` to `[0, 1]`.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::wireframe::stipple;
+///
+/// // Five dash periods per edge, half of each drawn: the dashes are centred on the multiples of 1/5,
+/// // each 1/10 long. Drawn at e = 0.6, a gap at e = 0.7 (half way to the next dash).
+/// assert_eq!(stipple(5, 0.5, 0.6), 1.0);
+/// assert_eq!(stipple(5, 0.5, 0.7), 0.0);
+/// assert_eq!(stipple(5, 0.5, 1.0), 1.0); // a vertex is covered
+/// assert_eq!(stipple(0, 0.5, 0.7), 1.0); // no repeats: a solid line
+/// ```
 pub fn stipple(stipple_repeats: i32, stipple_length: f32, edge_position: f32) -> f32 {
     let repeats = stipple_repeats.max(1) as f32;
     let drawn = stipple_length.clamp(0.0, 1.0);
@@ -242,6 +293,21 @@ pub fn stipple(stipple_repeats: i32, stipple_length: f32, edge_position: f32) ->
 /// components at once and select per component: no branch, one vector instruction per step. The
 /// selects never pass on the quotient of a discarded case (an overflowed `start` and `width` give
 /// `-inf / inf`).
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::wireframe::edge_ramp;
+///
+/// // smoothstep(0.1, 0.3, x): 0 below 0.1; 3 t^2 - 2 t^3 above, with t = (x - 0.1) / 0.2: 1/2 at
+/// // t = 1/2, 3/16 - 2/64 = 0.15625 at t = 1/4.
+/// let ramp = edge_ramp(Vec3::new(0.05, 0.2, 0.15), Vec3::splat(0.1), Vec3::splat(0.2));
+/// assert!((ramp - Vec3::new(0.0, 0.5, 0.15625)).length() < 1e-6);
+/// // A ramp of width 0 is a hard step.
+/// let step = edge_ramp(Vec3::new(0.09, 0.1, 0.11), Vec3::splat(0.1), Vec3::ZERO);
+/// assert_eq!(step, Vec3::new(0.0, 1.0, 1.0));
+/// ```
 pub fn edge_ramp(x: Vec3, start: Vec3, width: Vec3) -> Vec3 {
     let t = ((x - start) / width.max(Vec3::splat(MIN_LINE_RAMP))).min(Vec3::ONE);
     let ramp = t * t * (3.0 - 2.0 * t);
@@ -257,6 +323,21 @@ pub fn edge_ramp(x: Vec3, start: Vec3, width: Vec3) -> Vec3 {
 /// the ramp width is the product `d_i * sm` itself, not a difference of edges, so it neither cancels
 /// nor overflows into `inf - inf`). `thickness` (`th`) and `smoothing` (`sm`) are clamped to
 /// `[0, MAX_LINE_THICKNESS]`. A zero delta or zero smoothing gives a hard step.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::wireframe::line_width;
+///
+/// // Barycentric deltas of 0.01 per pixel, a line 1 pixel from the edge then a 1-pixel ramp:
+/// let deltas = Vec3::splat(0.01);
+/// // covered on the edge (u = 0), half covered 1.5 pixels away (the middle of the ramp), not at all
+/// // 3 pixels from every edge.
+/// assert_eq!(line_width(deltas, 1.0, 1.0, Vec3::new(0.6, 0.0, 0.4)), 1.0);
+/// assert!((line_width(deltas, 1.0, 1.0, Vec3::new(0.5, 0.015, 0.485)) - 0.5).abs() < 1e-5);
+/// assert_eq!(line_width(deltas, 1.0, 1.0, Vec3::new(0.4, 0.3, 0.3)), 0.0);
+/// ```
 pub fn line_width(deltas: Vec3, thickness: f32, smoothing: f32, barycentrics: Vec3) -> f32 {
     let magnitude = deltas.abs();
     let start = magnitude * thickness.clamp(0.0, MAX_LINE_THICKNESS);
@@ -271,6 +352,20 @@ pub fn line_width(deltas: Vec3, thickness: f32, smoothing: f32, barycentrics: Ve
 ///
 /// `d` is `deltas` when `screen_space` is on and `(1, 1, 1)` otherwise (thickness in barycentric
 /// units). A negative `thickness` is clamped to 0 (no line) before either product.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::wireframe::{process_wireframe, WIREFRAME_DEFAULT};
+///
+/// // The default line is 1 pixel wide (0.5 pixel either side of the edge) with a 1-pixel ramp: with
+/// // deltas of 0.01 per pixel a hit 1 pixel from an edge is half way up the ramp, half covered.
+/// let deltas = Vec3::splat(0.01);
+/// assert_eq!(process_wireframe(WIREFRAME_DEFAULT, Vec3::new(0.0, 0.5, 0.5), deltas), 1.0);
+/// let coverage = process_wireframe(WIREFRAME_DEFAULT, Vec3::new(0.01, 0.5, 0.49), deltas);
+/// assert!((coverage - 0.5).abs() < 1e-5);
+/// ```
 pub fn process_wireframe(settings: WireframeSettings, barycentrics: Vec3, deltas: Vec3) -> f32 {
     let e = edge_position(barycentrics);
     let thickness = settings.thickness.max(0.0);
@@ -297,6 +392,18 @@ impl WireframeSettings {
 
     /// Settings in the tutorial's column order, unchecked (the shader functions clamp as documented;
     /// use [`WireframeSettings::try_new`] for values that come from a user).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec2;
+    /// use ray_footprint::wireframe::{WireframeSettings, WIREFRAME_DEFAULT};
+    ///
+    /// // The tutorial's default row: thickness 1, var (1, 1), smoothing 1, no stipple (length 0.5,
+    /// // 5 repeats), screen space.
+    /// let settings = WireframeSettings::new(1.0, Vec2::ONE, 1.0, false, 0.5, 5, true);
+    /// assert_eq!(settings, WIREFRAME_DEFAULT);
+    /// ```
     pub const fn new(
         thickness: f32,
         thickness_var: Vec2,
@@ -318,6 +425,18 @@ impl WireframeSettings {
     }
 
     /// As [`WireframeSettings::new`], rejecting what [`WireframeSettings::validate`] rejects.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec2;
+    /// use ray_footprint::wireframe::WireframeSettings;
+    ///
+    /// // A UI slider that went below zero: the error names the field.
+    /// let error = WireframeSettings::try_new(-0.5, Vec2::ONE, 1.0, false, 0.5, 5, true).unwrap_err();
+    /// assert_eq!(error.field(), "thickness");
+    /// assert!(WireframeSettings::try_new(0.5, Vec2::ONE, 1.0, true, 0.5, 20, true).is_ok());
+    /// ```
     pub fn try_new(
         thickness: f32,
         thickness_var: Vec2,
@@ -344,6 +463,20 @@ impl WireframeSettings {
     /// `[0, MAX_LINE_THICKNESS]`; `stipple_length` in `[0, 1]`; `stipple_repeats >= 0`.
     ///
     /// The shader functions accept anything finite and clamp; this is for catching mistakes early.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use ray_footprint::wireframe::{WireframeSettings, WireframeSettingsError};
+    ///
+    /// // Every preset is valid; a NaN smoothing is not.
+    /// assert!(WireframeSettings::PRESETS.iter().all(|(_, preset)| preset.validate().is_ok()));
+    /// let broken = WireframeSettings { smoothing: f32::NAN, ..Default::default() };
+    /// assert!(matches!(
+    ///     broken.validate(),
+    ///     Err(WireframeSettingsError::NotFinite { field: "smoothing", .. })
+    /// ));
+    /// ```
     pub fn validate(&self) -> Result<(), WireframeSettingsError> {
         let sizes = [
             ("thickness_var.x", self.thickness_var.x),
@@ -364,6 +497,20 @@ impl WireframeSettings {
     }
 
     /// The host-shareable mirror; every `bool` becomes exactly 0 or 1.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use ray_footprint::wireframe::WIREFRAME_FLAKE;
+    ///
+    /// // The flake preset's stipple flag (true) becomes the i32 1 at byte 16, and its screen_space
+    /// // flag (false) the i32 0 at byte 28, as the 32-byte layout says.
+    /// let io = WIREFRAME_FLAKE.pack();
+    /// let bytes = bytemuck::bytes_of(&io);
+    /// assert_eq!(bytes.len(), 32);
+    /// assert_eq!(bytes[16..20], 1i32.to_ne_bytes());
+    /// assert_eq!(bytes[28..32], 0i32.to_ne_bytes());
+    /// ```
     pub fn pack(self) -> WireframeSettingsIo {
         WireframeSettingsIo {
             thickness_var: self.thickness_var,
@@ -386,6 +533,17 @@ impl Default for WireframeSettings {
 
 impl WireframeSettingsIo {
     /// The settings, as [`unpack_wireframe_settings`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use ray_footprint::wireframe::WireframeSettings;
+    ///
+    /// // Every preset survives the trip to the GPU's integer form and back.
+    /// for (name, preset) in WireframeSettings::PRESETS {
+    ///     assert_eq!(preset.pack().unpack(), preset, "{name}");
+    /// }
+    /// ```
     pub fn unpack(self) -> WireframeSettings {
         unpack_wireframe_settings(self)
     }
@@ -461,6 +619,18 @@ impl WireframeSettingsError {
     }
 
     /// The name of the offending field.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use glam::Vec2;
+    /// use ray_footprint::wireframe::WireframeSettings;
+    ///
+    /// // A dash length above 1 is caught, naming the field for the UI to highlight.
+    /// let error = WireframeSettings::try_new(1.0, Vec2::ONE, 1.0, true, 1.5, 5, true).unwrap_err();
+    /// assert_eq!(error.field(), "stipple_length");
+    /// assert_eq!(error.to_string(), "wireframe setting `stipple_length` must lie in [0, 1], got 1.5");
+    /// ```
     pub fn field(&self) -> &'static str {
         match self {
             WireframeSettingsError::NotFinite { field, .. }

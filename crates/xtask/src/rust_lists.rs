@@ -94,8 +94,8 @@ pub fn values(structs: &[ModuleStruct]) -> Block {
 /// `src/abi.rs`: `shared_layouts`, the Rust layout of every struct that crosses the boundary.
 pub fn layouts(structs: &[ModuleStruct]) -> Block {
     let shared: Vec<&ModuleStruct> = structs.iter().filter(|s| s.is_pod()).collect();
+    // The doc comment, with its example, stays above the block, written by hand.
     let mut lines = vec![
-        "/// Every shared struct: the module whose shader files declare it, and its Rust layout.".to_string(),
         "#[cfg(feature = \"validate\")]".to_string(),
         "#[rustfmt::skip]".to_string(),
         "pub fn shared_layouts() -> Vec<(crate::shaders::Module, crate::layout::StructLayout)> {".to_string(),

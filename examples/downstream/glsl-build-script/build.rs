@@ -9,6 +9,8 @@ fn main() {
         .expect("ray-footprint exports its GLSL include directory");
     let output = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("closest_hit.spv");
     println!("cargo:rerun-if-changed=shaders/closest_hit.rchit");
+    // For main to compare with the crate's own GLSL_INCLUDE_DIR.
+    println!("cargo:rustc-env=RAY_FOOTPRINT_GLSL_INCLUDE={include}");
     let result = Command::new("glslangValidator")
         .args(["--target-env", "vulkan1.2"])
         .arg(format!("-I{include}"))

@@ -11,6 +11,8 @@ fn main() {
         .expect("ray-footprint exports its HLSL include directory");
     let output = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("eye_rays.spv");
     println!("cargo:rerun-if-changed=shaders/eye_rays.hlsl");
+    // For main to compare with the crate's own HLSL_INCLUDE_DIR.
+    println!("cargo:rustc-env=RAY_FOOTPRINT_HLSL_INCLUDE={include}");
     let result = Command::new("glslangValidator")
         .args([
             "-D",

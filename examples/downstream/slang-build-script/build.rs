@@ -14,6 +14,8 @@ fn main() {
         .expect("ray-footprint exports its Slang module directory");
     let output = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("footprint.spv");
     println!("cargo:rerun-if-changed=shaders/footprint.slang");
+    // For main to compare with the crate's own SLANG_INCLUDE_DIR.
+    println!("cargo:rustc-env=RAY_FOOTPRINT_SLANG_INCLUDE={include}");
     // -O0: the slangc of the PyPI wheel that scripts/setup.sh installs has no SPIR-V optimizer.
     // -fvk-use-scalar-layout: scalar buffer layout, as nvpro's samples use; the crate's structs
     // have the same layout under it as under Slang's default std430.

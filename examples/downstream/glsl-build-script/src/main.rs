@@ -1,11 +1,40 @@
 //! Checks the closest-hit shader the build script compiled: SPIR-V that `spirv-val` accepts for
-//! Vulkan 1.2. Also shows the include resolver a shaderc include callback can use.
+//! Vulkan 1.2, and the include directory it was compiled with. Also shows the include resolver a
+//! shaderc include callback can use.
 
+use ray_footprint::shaders::{Module, GLSL_INCLUDE_DIR};
+use std::path::Path;
 use std::process::{Command, ExitCode};
 
 const CLOSEST_HIT: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/closest_hit.spv"));
 
+/// The include directory the build script was given (`DEP_RAY_FOOTPRINT_GLSL_INCLUDE`): the
+/// crate's `GLSL_INCLUDE_DIR`, holding every module as the crate embeds it.
+fn include_directory() -> Result<&'static str, String> {
+    let exported = env!("RAY_FOOTPRINT_GLSL_INCLUDE");
+    if exported != GLSL_INCLUDE_DIR {
+        return Err(format!(
+            "the build script got {exported}, the crate names {GLSL_INCLUDE_DIR}"
+        ));
+    }
+    for module in Module::ALL {
+        let path = Path::new(exported).join(format!("{}.glsl", module.stem()));
+        let text = std::fs::read_to_string(&path).map_err(|error| format!("{}: {error}", path.display()))?;
+        if text != module.glsl() {
+            return Err(format!("{} differs from the embedded module", path.display()));
+        }
+    }
+    Ok(exported)
+}
+
 fn main() -> ExitCode {
+    match include_directory() {
+        Ok(directory) => println!("GLSL modules in {directory}, as embedded"),
+        Err(error) => {
+            eprintln!("error: {error}");
+            return ExitCode::FAILURE;
+        }
+    }
     let magic = CLOSEST_HIT
         .get(..4)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));

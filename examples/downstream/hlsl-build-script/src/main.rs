@@ -6,6 +6,7 @@
 
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_diff;
+use ray_footprint::shaders::HLSL_INCLUDE_DIR;
 use shader_proptest::{ComputeKernel, Gpu};
 use std::process::ExitCode;
 
@@ -47,6 +48,14 @@ fn main() -> ExitCode {
 }
 
 fn run() -> Result<String, String> {
+    // The include directory the build script was given (`DEP_RAY_FOOTPRINT_HLSL_INCLUDE`) is the
+    // one the crate names.
+    let exported = env!("RAY_FOOTPRINT_HLSL_INCLUDE");
+    if exported != HLSL_INCLUDE_DIR {
+        return Err(format!(
+            "the build script got {exported}, the crate names {HLSL_INCLUDE_DIR}"
+        ));
+    }
     let spirv: Vec<u32> = EYE_RAYS_SPIRV
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
@@ -81,7 +90,7 @@ fn run() -> Result<String, String> {
         largest = largest.max(difference);
     }
     Ok(format!(
-        "device: {}\nHLSL shader from the build script (glslang): {pixels} eye rays agree with the mirror \
+        "HLSL modules in {exported}\ndevice: {}\nHLSL shader from the build script (glslang): {pixels} eye rays agree with the mirror \
          (within {largest:.2e} of {TOLERANCE:e} per component)",
         gpu.name()
     ))

@@ -5,6 +5,7 @@
 
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone::{self, RayCone};
+use ray_footprint::shaders::SLANG_INCLUDE_DIR;
 use shader_proptest::{ComputeKernel, Gpu};
 use std::process::ExitCode;
 
@@ -75,6 +76,14 @@ fn main() -> ExitCode {
 }
 
 fn run() -> Result<String, String> {
+    // The module directory the build script was given (`DEP_RAY_FOOTPRINT_SLANG_INCLUDE`) is the
+    // crate's own.
+    let exported = env!("RAY_FOOTPRINT_SLANG_INCLUDE");
+    if exported != SLANG_INCLUDE_DIR {
+        return Err(format!(
+            "the build script got {exported}, the crate names {SLANG_INCLUDE_DIR}"
+        ));
+    }
     let spirv: Vec<u32> = FOOTPRINT_SPIRV
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
@@ -105,7 +114,7 @@ fn run() -> Result<String, String> {
         lod_error = lod_error.max(error);
     }
     Ok(format!(
-        "device: {}\nSlang shader from the build script: {} cases agree with the mirror \
+        "Slang modules in {exported}\ndevice: {}\nSlang shader from the build script: {} cases agree with the mirror \
          (footprint within {footprint_ulps:.2} of {FOOTPRINT_ULPS} ULP, LOD within {lod_error:.3e} of {LOD_TOLERANCE:e})",
         gpu.name(),
         hits.len()
