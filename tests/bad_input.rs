@@ -432,8 +432,8 @@ fn layout_rows() -> Vec<Row> {
             std140,
         ),
         compare_row(
-            "Rust `Padded { flag: u8, value: f32 }` (3 bytes of implicit padding), same layout as shader",
-            &["Padded", "3 byte"],
+            "Rust `Padded { flag: u8, value: f32 }` (a one-byte field, as a `bool` is), same layout as shader",
+            &["Padded", "flag", "1 byte"],
             padded.clone(),
             Ok(padded),
         ),

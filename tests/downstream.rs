@@ -85,8 +85,8 @@ fn copy_tree(from: &Path, to: &Path) {
 }
 
 /// The downstream workspace copied to `work/workspace`, each crate's ray-footprint dependency
-/// (`path = "../../.."`) on the unpacked `package` and its shader-proptest dependency on the
-/// repository's.
+/// (`path = "../../.."`) on the unpacked `package` and its shader-proptest dependency, and the
+/// package's, on the repository's.
 fn workspace_against_package(package: &Path, work: &Path) -> PathBuf {
     let workspace = work.join("workspace");
     let _ = fs::remove_dir_all(&workspace);
@@ -108,6 +108,15 @@ fn workspace_against_package(package: &Path, work: &Path) -> PathBuf {
             );
         fs::write(&manifest, text).expect("rewriting a manifest");
     }
+    // The package asks crates.io for shader-proptest (its optional dependency, which a crate
+    // that enables ray-footprint's feature `shader-proptest` needs): the repository's.
+    let root_manifest = workspace.join("Cargo.toml");
+    let mut text = fs::read_to_string(&root_manifest).expect("reading the workspace manifest");
+    text.push_str(&format!(
+        "\n[patch.crates-io]\nshader-proptest = {{ path = {:?} }}\n",
+        shader_proptest.display().to_string()
+    ));
+    fs::write(&root_manifest, text).expect("rewriting the workspace manifest");
     workspace
 }
 
@@ -258,10 +267,11 @@ fn cpu_path_tracer_uses_the_mirror_alone() {
 }
 
 /// A user of the harness: their own WGSL, GLSL and Slang functions checked against their own Rust
-/// functions with shader-proptest, as an outside crate's tests, on lavapipe.
+/// functions with shader-proptest, alone and beside ray-footprint's ray-cone module
+/// (`Shader::with_source`), as an outside crate's tests, on lavapipe.
 #[test]
 fn shader_proptest_checks_a_users_functions() {
     let (_, workspace) = built();
-    let command = cargo_together(workspace, &["test", "--test", "colour"]);
+    let command = cargo_together(workspace, &["test", "--test", "agreement"]);
     stdout_of(command, &["test result: ok. 3 passed"]);
 }

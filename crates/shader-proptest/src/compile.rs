@@ -159,8 +159,20 @@ pub fn compile_glsl(
     target: Target,
     include_dirs: &[&Path],
 ) -> Result<Vec<u32>, CompileError> {
+    glslang(source, stage, target, include_dirs, &[])
+}
+
+/// [`compile_glsl`] with more of glslang's options, such as `--keep-uncalled` (functions no entry
+/// point calls stay in the SPIR-V, as a signature probe needs them).
+pub(crate) fn glslang(
+    source: &str,
+    stage: Stage,
+    target: Target,
+    include_dirs: &[&Path],
+    options: &[&str],
+) -> Result<Vec<u32>, CompileError> {
     let mut command = Command::new("glslangValidator");
-    command.args(["--target-env", target.glslang_env()]);
+    command.args(["--target-env", target.glslang_env()]).args(options);
     for dir in include_dirs {
         command.arg(format!("-I{}", dir.display()));
     }
@@ -172,7 +184,7 @@ pub fn compile_glsl(
 /// Compiles HLSL (a whole shader with the entry point `main`) as `stage` for `target` with
 /// glslang's HLSL front end (`glslangValidator -D`), with `include_dirs` on the include path.
 /// Needs `glslangValidator` on the `PATH`. A compile after which glslang printed
-/// `Missing functionality` fails (see [`run_compiler`]).
+/// `Missing functionality` fails (glslang exits with 0 after it).
 pub fn compile_hlsl_with_glslang(
     source: &str,
     stage: Stage,

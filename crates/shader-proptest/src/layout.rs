@@ -53,6 +53,46 @@ pub struct StructLayout {
     pub fields: Vec<FieldLayout>,
 }
 
+/// A table of the fields' offsets and sizes, then the struct's size and alignment:
+///
+/// ```text
+/// RfRayCone        offset  size
+///   width               0     4
+///   spread_angle        4     4
+///   (size)                    8  align 4
+/// ```
+impl fmt::Display for StructLayout {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let width = self
+            .fields
+            .iter()
+            .map(|field| field.name.len())
+            .chain([self.name.len().saturating_sub(2), 6])
+            .max()
+            .unwrap_or(0);
+        writeln!(
+            f,
+            "{:<w$}  {:>6} {:>5}",
+            self.name,
+            "offset",
+            "size",
+            w = width + 2
+        )?;
+        for field in &self.fields {
+            writeln!(
+                f,
+                "  {:<width$}  {:>6} {:>5}",
+                field.name, field.offset, field.size
+            )?;
+        }
+        write!(f, "  {:<width$}  {:>6} {:>5}", "(size)", "", self.size)?;
+        if self.align > 0 {
+            write!(f, "  align {}", self.align)?;
+        }
+        Ok(())
+    }
+}
+
 /// GLSL block packing rules; Slang's buffers take the same three (`Std140DataLayout`,
 /// `Std430DataLayout`, `ScalarDataLayout`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -101,6 +141,22 @@ pub enum LayoutError {
         /// `"Rust"` or `"shader"`: the side that lacks the field.
         missing_in: &'static str,
     },
+    /// A Rust field takes one byte, as a `bool` does: no shader type does, and a shader `bool`
+    /// has no layout a Rust `bool` can match.
+    OneByteField {
+        /// The struct's name.
+        structure: String,
+        /// The field's name.
+        field: String,
+    },
+    /// A WGSL struct holds a `bool`, which WGSL forbids in host-shareable memory (storage and
+    /// uniform buffers, push constants).
+    BoolInBuffer {
+        /// The struct's name.
+        structure: String,
+        /// The field, as a path from the struct (`inner.flag` for a nested struct's field).
+        field: String,
+    },
     /// The Rust fields listed do not cover the struct: it has implicit padding or unlisted fields.
     ImplicitPadding {
         /// The struct's name.
@@ -124,10 +180,22 @@ impl fmt::Display for LayoutError {
             } => {
                 write!(f, "{structure}.{field}: field missing on the {missing_in} side")
             }
+            LayoutError::OneByteField { structure, field } => write!(
+                f,
+                "{structure}.{field} takes 1 byte in Rust, as a `bool` does: no shader type takes 1 byte, \
+                 and a shader `bool` is 4 bytes where it may be in a buffer at all (WGSL forbids it). \
+                 Make `{field}` a `u32` that holds 0 or 1, or keep the `bool` in a Rust struct of your \
+                 own and share an IO struct with a `u32` in its place, converting between the two"
+            ),
+            LayoutError::BoolInBuffer { structure, field } => write!(
+                f,
+                "{structure}.{field} is a `bool`, which WGSL forbids in storage and uniform buffers and \
+                 push constants: make it a `u32` that holds 0 or 1"
+            ),
             LayoutError::ImplicitPadding { structure, uncovered } => write!(
                 f,
                 "{structure}: {uncovered} byte(s) of the Rust struct are not covered by the listed fields \
-                 (implicit padding or unlisted fields)"
+                 (implicit padding or unlisted fields); declare padding as a field, such as `pad: u32`"
             ),
             LayoutError::Mismatch(table) => write!(
                 f,
@@ -251,6 +319,12 @@ pub fn compare(rust: &StructLayout, shader: &StructLayout) -> Result<LayoutTable
     {
         return Err(missing(&field.name, "shader"));
     }
+    if let Some(field) = rust.fields.iter().find(|field| field.size == 1) {
+        return Err(LayoutError::OneByteField {
+            structure: shader.name.clone(),
+            field: field.name.clone(),
+        });
+    }
     // Summed in 64 bits: the fields of a hand-made layout may add up past u32::MAX.
     let covered: u64 = rust.fields.iter().map(|field| u64::from(field.size)).sum();
     if covered < u64::from(rust.size) {
@@ -299,184 +373,6 @@ pub(crate) fn probe_error(error: CompileError, from_log: impl FnOnce(&str) -> La
     match error {
         CompileError::NotRun(message) => LayoutError::Source(message),
         CompileError::Failed { log, source_path } => from_log(&log.replace(&source_path, "source")),
-    }
-}
-
-/// Reads struct layouts out of SPIR-V (for the GLSL and Slang probes): names, member offsets,
-/// array strides and type sizes.
-pub(crate) mod spirv_layout {
-    use super::{FieldLayout, StructLayout};
-    use crate::spirv::literal_string;
-    use std::collections::HashMap;
-
-    const OP_NAME: u32 = 5;
-    const OP_MEMBER_NAME: u32 = 6;
-    const OP_TYPE_INT: u32 = 21;
-    const OP_TYPE_FLOAT: u32 = 22;
-    const OP_TYPE_VECTOR: u32 = 23;
-    const OP_TYPE_MATRIX: u32 = 24;
-    const OP_TYPE_ARRAY: u32 = 28;
-    const OP_TYPE_RUNTIME_ARRAY: u32 = 29;
-    const OP_TYPE_STRUCT: u32 = 30;
-    const OP_TYPE_POINTER: u32 = 32;
-    const OP_CONSTANT: u32 = 43;
-    const OP_VARIABLE: u32 = 59;
-    const OP_DECORATE: u32 = 71;
-    const OP_MEMBER_DECORATE: u32 = 72;
-    const DECORATION_ARRAY_STRIDE: u32 = 6;
-    const DECORATION_MATRIX_STRIDE: u32 = 7;
-    const DECORATION_OFFSET: u32 = 35;
-
-    #[derive(Default)]
-    struct Module {
-        names: HashMap<u32, String>,
-        member_names: HashMap<(u32, u32), String>,
-        offsets: HashMap<(u32, u32), u32>,
-        matrix_strides: HashMap<(u32, u32), u32>,
-        array_strides: HashMap<u32, u32>,
-        types: HashMap<u32, Vec<u32>>,
-        constants: HashMap<u32, u32>,
-        /// Pointer type to pointee type.
-        pointees: HashMap<u32, u32>,
-        /// Variable to its pointer type.
-        variables: HashMap<u32, u32>,
-    }
-
-    fn parse(words: &[u32]) -> Module {
-        let mut module = Module::default();
-        let mut at = 5; // after the header
-        while at < words.len() {
-            let (count, opcode) = ((words[at] >> 16) as usize, words[at] & 0xffff);
-            let operands = &words[at + 1..(at + count.max(1)).min(words.len())];
-            match (opcode, operands) {
-                (OP_NAME, [id, rest @ ..]) => {
-                    module.names.insert(*id, literal_string(rest));
-                }
-                (OP_MEMBER_NAME, [id, member, rest @ ..]) => {
-                    module.member_names.insert((*id, *member), literal_string(rest));
-                }
-                (OP_MEMBER_DECORATE, [id, member, DECORATION_OFFSET, offset, ..]) => {
-                    module.offsets.insert((*id, *member), *offset);
-                }
-                (OP_MEMBER_DECORATE, [id, member, DECORATION_MATRIX_STRIDE, stride, ..]) => {
-                    module.matrix_strides.insert((*id, *member), *stride);
-                }
-                (OP_DECORATE, [id, DECORATION_ARRAY_STRIDE, stride, ..]) => {
-                    module.array_strides.insert(*id, *stride);
-                }
-                (OP_CONSTANT, [_, id, value, ..]) => {
-                    module.constants.insert(*id, *value);
-                }
-                (OP_TYPE_POINTER, [id, _, pointee]) => {
-                    module.pointees.insert(*id, *pointee);
-                }
-                (OP_VARIABLE, [pointer, id, ..]) => {
-                    module.variables.insert(*id, *pointer);
-                }
-                (
-                    OP_TYPE_INT
-                    | OP_TYPE_FLOAT
-                    | OP_TYPE_VECTOR
-                    | OP_TYPE_MATRIX
-                    | OP_TYPE_ARRAY
-                    | OP_TYPE_RUNTIME_ARRAY
-                    | OP_TYPE_STRUCT,
-                    [id, ..],
-                ) => {
-                    module.types.insert(*id, [&[opcode], operands].concat());
-                }
-                _ => {}
-            }
-            at += count.max(1);
-        }
-        module
-    }
-
-    impl Module {
-        /// Byte size of a type; a member's matrix stride comes from its struct.
-        fn size(&self, ty: u32, matrix_stride: Option<u32>) -> u32 {
-            match self.types.get(&ty).map(Vec::as_slice) {
-                Some([OP_TYPE_INT | OP_TYPE_FLOAT, _, width, ..]) => width / 8,
-                Some([OP_TYPE_VECTOR, _, component, count]) => self.size(*component, None) * count,
-                Some([OP_TYPE_MATRIX, _, column, count]) => {
-                    matrix_stride.unwrap_or_else(|| self.size(*column, None)) * count
-                }
-                Some([OP_TYPE_ARRAY, _, _, length]) => {
-                    self.array_strides.get(&ty).copied().unwrap_or(0)
-                        * self.constants.get(length).copied().unwrap_or(0)
-                }
-                Some([OP_TYPE_STRUCT, _, members @ ..]) => (0..members.len() as u32)
-                    .map(|m| {
-                        self.offsets.get(&(ty, m)).copied().unwrap_or(0) + self.member_size(ty, m, members)
-                    })
-                    .max()
-                    .unwrap_or(0),
-                _ => 0,
-            }
-        }
-
-        fn member_size(&self, structure: u32, member: u32, members: &[u32]) -> u32 {
-            self.size(
-                members[member as usize],
-                self.matrix_strides.get(&(structure, member)).copied(),
-            )
-        }
-    }
-
-    /// The layout of the struct `name` used as a runtime-array element.
-    pub fn struct_layout(words: &[u32], name: &str) -> Option<StructLayout> {
-        let module = parse(words);
-        let id = module.types.iter().find_map(|(id, ty)| match ty.as_slice() {
-            [OP_TYPE_STRUCT, ..] if module.names.get(id).map(String::as_str) == Some(name) => Some(*id),
-            _ => None,
-        })?;
-        module.element_layout(id)
-    }
-
-    /// The layout of the element struct of the storage buffer held by the variable `variable`: a
-    /// block whose first member is a runtime array of that struct. The layout is named as the
-    /// SPIR-V names the struct.
-    pub fn buffer_element_layout(words: &[u32], variable: &str) -> Option<StructLayout> {
-        let module = parse(words);
-        let pointer = module.variables.iter().find_map(|(id, pointer)| {
-            (module.names.get(id).map(String::as_str) == Some(variable)).then_some(pointer)
-        })?;
-        let block = module.pointees.get(pointer)?;
-        let [OP_TYPE_STRUCT, _, array, ..] = module.types.get(block)?.as_slice() else {
-            return None;
-        };
-        let [OP_TYPE_RUNTIME_ARRAY, _, element] = module.types.get(array)?.as_slice() else {
-            return None;
-        };
-        module.element_layout(*element)
-    }
-
-    impl Module {
-        /// The layout of the struct type `id`, sized by the stride of a runtime array of it.
-        fn element_layout(&self, id: u32) -> Option<StructLayout> {
-            let [OP_TYPE_STRUCT, _, members @ ..] = self.types.get(&id)?.as_slice() else {
-                return None;
-            };
-            let stride = self.types.iter().find_map(|(array, ty)| match ty.as_slice() {
-                [OP_TYPE_RUNTIME_ARRAY, _, element] if *element == id => {
-                    self.array_strides.get(array).copied()
-                }
-                _ => None,
-            })?;
-            let fields = (0..members.len() as u32)
-                .map(|m| FieldLayout {
-                    name: self.member_names.get(&(id, m)).cloned().unwrap_or_default(),
-                    offset: self.offsets.get(&(id, m)).copied().unwrap_or(0),
-                    size: self.member_size(id, m, members),
-                })
-                .collect();
-            Some(StructLayout {
-                name: self.names.get(&id).cloned().unwrap_or_default(),
-                size: stride,
-                align: 0,
-                fields,
-            })
-        }
     }
 }
 

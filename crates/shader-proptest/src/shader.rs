@@ -4,8 +4,6 @@
 use crate::back::{Backend, Language};
 use crate::compile::{base_capabilities, CompileError};
 use crate::layout::{LayoutError, StructLayout};
-#[cfg(feature = "gpu")]
-use crate::value::{ShaderType, StructType};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, OnceLock, PoisonError};
@@ -92,6 +90,23 @@ impl Shader {
         }
     }
 
+    /// The same shader with `code` after its source (on a line of its own): a function of your
+    /// own beside the functions a module's shader declares or brings in, such as a
+    /// `ray_footprint` module's (`Module::RayCone.shader(language)`), for a check of it.
+    ///
+    /// ```
+    /// use shader_proptest::Shader;
+    ///
+    /// let module = Shader::wgsl("fn double(x: f32) -> f32 { return 2.0 * x; }");
+    /// let shader = module.with_source("fn quadruple(x: f32) -> f32 { return double(double(x)); }");
+    /// assert!(shader.source().ends_with("\nfn quadruple(x: f32) -> f32 { return double(double(x)); }"));
+    /// ```
+    pub fn with_source(mut self, code: &str) -> Shader {
+        self.source.push('\n');
+        self.source.push_str(code);
+        self
+    }
+
     /// Adds a directory to the GLSL or HLSL include path, or to the Slang search path (`import`
     /// and `#include`).
     pub fn include_dir(mut self, dir: impl AsRef<Path>) -> Shader {
@@ -171,27 +186,5 @@ impl Shader {
     /// WGSL layout, or the element of a `std430` buffer compiled by glslang or slangc.
     pub fn struct_layout(&self, name: &str) -> Result<StructLayout, LayoutError> {
         self.backend().struct_layout(self, name)
-    }
-
-    /// Compares the Rust layout of every `pod` struct among `parameters` and `result` (and the
-    /// structs they hold) with this source's ([`Shader::struct_layout`]), before a check runs.
-    #[cfg(feature = "gpu")]
-    pub(crate) fn check_layouts(
-        &self,
-        parameters: &[ShaderType],
-        result: ShaderType,
-    ) -> Result<(), LayoutError> {
-        let mut structs: Vec<&'static StructType> = Vec::new();
-        parameters
-            .iter()
-            .chain([&result])
-            .for_each(|ty| ty.structs(&mut structs));
-        for ty in structs {
-            let Some(rust_layout) = ty.rust_layout else {
-                continue;
-            };
-            crate::layout::compare(&rust_layout(), &self.struct_layout(ty.name)?)?;
-        }
-        Ok(())
     }
 }

@@ -22,7 +22,25 @@ pub type ComponentBound<A> = dyn Fn(&A, usize, f32) -> f32 + Send + Sync;
 /// The bounds of every component of a case: `bounds(arguments, expected components)`.
 pub type CaseBounds<A> = dyn Fn(&A, &[f32]) -> Vec<f32> + Send + Sync;
 
-/// The largest `|shader - mirror|` a check accepts, per output component.
+/// The largest `|shader - mirror|` a check accepts, per output component. The crate's README has
+/// a guide to which tolerance suits which function.
+///
+/// ```
+/// use shader_proptest::tolerance::ULP;
+/// use shader_proptest::Tolerance;
+///
+/// // A dot product of three terms, 1.5 here: three roundings, and one ULP of the mirror's own.
+/// let dot: Tolerance<(glam::Vec3,)> = Tolerance::ulps(4);
+/// let mut bounds = Vec::new();
+/// dot.bounds(&(glam::Vec3::ONE,), &[1.5], &mut bounds);
+/// assert_eq!(bounds, [4.0 * ULP * 1.5 + f32::MIN_POSITIVE]);
+///
+/// // A bound that depends on the case: half a ULP of the input, for a copy of it.
+/// let copy = Tolerance::per_component(|&(x,): &(f32,), _, _| 0.5 * ULP * x.abs());
+/// bounds.clear();
+/// copy.bounds(&(2.0,), &[2.0], &mut bounds);
+/// assert_eq!(bounds, [ULP]);
+/// ```
 pub enum Tolerance<A> {
     /// Bit-for-bit equal.
     Exact,
@@ -41,6 +59,11 @@ pub enum Tolerance<A> {
 }
 
 impl<A> Tolerance<A> {
+    /// [`Tolerance::Ulps`] of `n` units in the last place: `Tolerance::ulps(4)`.
+    pub fn ulps(n: u32) -> Tolerance<A> {
+        Tolerance::Ulps(n as f32)
+    }
+
     /// [`Tolerance::PerComponent`] from a closure.
     pub fn per_component(bound: impl Fn(&A, usize, f32) -> f32 + Send + Sync + 'static) -> Tolerance<A> {
         Tolerance::PerComponent(Arc::new(bound))

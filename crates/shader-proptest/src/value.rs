@@ -65,6 +65,23 @@ impl ShaderType {
         }
     }
 
+    /// The Rust type a value of this type is: `f32`, `Vec3`, a struct's Rust name.
+    pub fn rust_name(self) -> &'static str {
+        match self {
+            ShaderType::F32 => "f32",
+            ShaderType::U32 => "u32",
+            ShaderType::I32 => "i32",
+            ShaderType::Bool => "bool",
+            ShaderType::Vec2 => "Vec2",
+            ShaderType::Vec3 => "Vec3",
+            ShaderType::Vec4 => "Vec4",
+            ShaderType::Mat2 => "Mat2",
+            ShaderType::Mat3 => "Mat3",
+            ShaderType::Mat4 => "Mat4",
+            ShaderType::Struct(s) => s.rust_name,
+        }
+    }
+
     /// Every struct type reachable from this one (itself first), each once.
     pub fn structs(self, out: &mut Vec<&'static StructType>) {
         if let ShaderType::Struct(s) = self {
@@ -81,6 +98,8 @@ impl ShaderType {
 pub struct StructType {
     /// The struct's name in the shader.
     pub name: &'static str,
+    /// The struct's name in Rust.
+    pub rust_name: &'static str,
     /// Field names and types, in declaration order.
     pub fields: &'static [(&'static str, ShaderType)],
     /// For a `#[repr(C)]` bytemuck `Pod` struct: its Rust layout, which a check compares with the
@@ -265,6 +284,7 @@ macro_rules! shader_struct {
             const TYPE: $crate::ShaderType = {
                 const STRUCT: $crate::StructType = $crate::StructType {
                     name: $name,
+                    rust_name: stringify!($ty),
                     fields: &[$((stringify!($field), <$field_ty as $crate::Value>::TYPE)),+],
                     rust_layout: $layout,
                 };

@@ -108,7 +108,7 @@ fn layout_errors_name_the_struct_and_field() {
 
 #[repr(C)]
 struct Padded {
-    flag: u8,
+    flag: u16,
     value: f32,
 }
 
@@ -124,8 +124,60 @@ fn implicit_padding_is_reported() {
         layout::compare(&rust, &shader),
         Err(LayoutError::ImplicitPadding {
             structure: "Padded".into(),
-            uncovered: 3
+            uncovered: 2
         })
+    );
+}
+
+#[repr(C)]
+struct Settings {
+    width: f32,
+    stipple: bool,
+}
+
+/// A Rust `bool` in a shared struct is named with its fix, before any byte counting; a WGSL
+/// `bool` in a struct (or a struct it holds) is refused naming the field, as WGSL forbids it in
+/// buffers.
+#[test]
+fn bools_are_named_with_their_fix() {
+    let rust = rust_layout!(Settings { width, stipple });
+    let shader = layout::glsl_layout(
+        "struct Settings { float width; uint stipple; };",
+        "Settings",
+        GlslPacking::Std430,
+        &[],
+    )
+    .expect("compiles");
+    let error = layout::compare(&rust, &shader).expect_err("a bool");
+    assert_eq!(
+        error,
+        LayoutError::OneByteField {
+            structure: "Settings".into(),
+            field: "stipple".into()
+        }
+    );
+    let message = error.to_string();
+    assert!(
+        message.contains("Make `stipple` a `u32`") && message.contains("IO struct"),
+        "{message}"
+    );
+    let nested = "struct Flags { visible: bool } struct Settings { width: f32, flags: array<Flags, 2> }";
+    assert_eq!(
+        layout::wgsl_layout(nested, "Settings"),
+        Err(LayoutError::BoolInBuffer {
+            structure: "Settings".into(),
+            field: "flags.visible".into()
+        })
+    );
+}
+
+/// A layout prints as a table of offsets and sizes.
+#[test]
+fn a_layout_prints_as_a_table() {
+    let layout = layout::wgsl_layout("struct Probe { a: f32, b: vec3<f32> }", "Probe").expect("parses");
+    assert_eq!(
+        layout.to_string(),
+        "Probe     offset  size\n  a            0     4\n  b           16    12\n  (size)            32  align 16"
     );
 }
 

@@ -151,6 +151,7 @@ fn shader_type(name: &str, structs: &[(String, Vec<(String, String)>)]) -> Resul
                 .collect::<Result<_, String>>()?;
             ShaderType::Struct(Box::leak(Box::new(StructType {
                 name: leak(struct_name),
+                rust_name: leak(struct_name),
                 fields: Box::leak(fields.into_boxed_slice()),
                 rust_layout: None,
             })))

@@ -3,12 +3,15 @@
 //! as users do, and layouts are read from the SPIR-V glslang writes for a probe block.
 
 use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
+#[cfg(feature = "gpu")]
+use crate::compile::glslang;
 use crate::compile::{compile_glsl, CompileError, Stage, Target};
 use crate::kernel::WORKGROUP_SIZE;
-use crate::layout::{
-    is_identifier, line_after, probe_error, spirv_layout, GlslPacking, LayoutError, StructLayout,
-};
+use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
+use crate::reflect;
 use crate::shader::Shader;
+#[cfg(feature = "gpu")]
+use crate::signature::Signature;
 use crate::value::ShaderType;
 use std::path::Path;
 
@@ -106,6 +109,33 @@ layout({packing}, push_constant) uniform EchoPush {{ {name} echo_push; }};
     fn struct_layout(&self, shader: &Shader, name: &str) -> Result<StructLayout, LayoutError> {
         glsl_layout(shader.source(), name, GlslPacking::Std430, &shader.include_dirs())
     }
+
+    /// From the SPIR-V of the source with an empty `main`, compiled keeping the functions nothing
+    /// calls (glslang's `--keep-uncalled`).
+    #[cfg(feature = "gpu")]
+    fn declared_signatures(&self, shader: &Shader, function: &str) -> Option<Vec<Signature>> {
+        let probe = format!(
+            "#version 460\n#extension GL_GOOGLE_include_directive : require\n{}\n\
+             layout(local_size_x = 1) in;\nvoid main() {{}}\n",
+            shader.source()
+        );
+        let options = ["--keep-uncalled"];
+        glslang(
+            &probe,
+            Stage::Compute,
+            Target::Vulkan1_1,
+            &shader.include_dirs(),
+            &options,
+        )
+        .ok()
+        .map(|spirv| reflect::signatures(&spirv, function, false))
+    }
+
+    /// GLSL converts `int` and `uint` arguments to `float` implicitly.
+    #[cfg(feature = "gpu")]
+    fn called_signature(&self, kernel: &[u32], function: &str) -> Option<Signature> {
+        reflect::signatures(kernel, function, true).into_iter().next()
+    }
 }
 
 /// A GLSL `main`: invocation `gl_GlobalInvocationID.x` returns unless it is below `cases`, then
@@ -148,7 +178,7 @@ pub fn glsl_layout(
     let probe_line = line_after(source);
     let spirv = compile_glsl(&probe, Stage::Compute, Target::Vulkan1_2, include_dirs)
         .map_err(|error| probe_error(error, |log| compile_error(log, name, probe_line)))?;
-    spirv_layout::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
+    reflect::struct_layout(&spirv, name).ok_or_else(|| LayoutError::StructNotFound(name.to_string()))
 }
 
 /// The error for a failed probe compile: errors at the probe block alone mean `name` is not a type

@@ -11,13 +11,16 @@
 //! HLSL has no way to choose another in the source, so an echo kernel ignores its packing, as WGSL's
 //! does.
 
+#[cfg(feature = "gpu")]
+use super::slang::slangc_declared_signatures;
 use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
 use crate::compile::{compile_hlsl_with_glslang, compile_hlsl_with_slangc, CompileError, Stage, Target};
 use crate::kernel::WORKGROUP_SIZE;
-use crate::layout::{
-    is_identifier, line_after, probe_error, spirv_layout, GlslPacking, LayoutError, StructLayout,
-};
+use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
+use crate::reflect;
 use crate::shader::Shader;
+#[cfg(feature = "gpu")]
+use crate::signature::Signature;
 use crate::value::{ShaderType, StructType};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -145,10 +148,27 @@ void main() {{ layout_probe[0] = layout_probe[1]; }}
         let spirv = self
             .compile(&probe, Target::Vulkan1_1, &shader.include_dirs())
             .map_err(|error| probe_error(error, |log| compile_error(log, name, probe_line)))?;
-        let mut layout = spirv_layout::buffer_element_layout(&spirv, "layout_probe")
+        let mut layout = reflect::buffer_element_layout(&spirv, "layout_probe")
             .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
         layout.name = name.to_string();
         Ok(layout)
+    }
+
+    /// From slangc's words on the source read as HLSL, for either compiler: glslang's HLSL front
+    /// end drops the functions nothing calls even with `--keep-uncalled`, and its errors do not
+    /// spell a function's type. Where slangc cannot read a source that glslang compiles, a kernel
+    /// that does not compile is reported as a compile error.
+    #[cfg(feature = "gpu")]
+    fn declared_signatures(&self, shader: &Shader, function: &str) -> Option<Vec<Signature>> {
+        slangc_declared_signatures(shader, function, |probe| {
+            compile_hlsl_with_slangc(probe, Stage::Compute, Target::Vulkan1_1, &shader.include_dirs())
+        })
+    }
+
+    /// HLSL converts integers to floats and scalars to vectors implicitly.
+    #[cfg(feature = "gpu")]
+    fn called_signature(&self, kernel: &[u32], function: &str) -> Option<Signature> {
+        reflect::signatures(kernel, function, true).into_iter().next()
     }
 }
 

@@ -25,6 +25,8 @@ pub use wgsl::wgsl_layout;
 use crate::compile::CompileError;
 use crate::layout::{GlslPacking, LayoutError, StructLayout};
 use crate::shader::Shader;
+#[cfg(feature = "gpu")]
+use crate::signature::Signature;
 use crate::value::{ShaderType, StructType};
 use std::fmt;
 
@@ -130,6 +132,18 @@ pub(crate) trait Backend: Send + Sync {
 
     /// The layout of the struct `name` that `shader` declares, as a storage buffer holds it.
     fn struct_layout(&self, shader: &Shader, name: &str) -> Result<StructLayout, LayoutError>;
+
+    /// The signatures of the functions named `function` that `shader` declares, as the
+    /// language's compiler reads them without a kernel (to explain a kernel that does not
+    /// compile): empty where it declares none, `None` where the source does not compile either.
+    #[cfg(feature = "gpu")]
+    fn declared_signatures(&self, shader: &Shader, function: &str) -> Option<Vec<Signature>>;
+
+    /// The signature of the function named `function` that the compiled `kernel` calls, where
+    /// the language converts arguments implicitly, so that a kernel compiles with other types
+    /// than the Rust ones; `None` where every call the compiler accepts has the kernel's types.
+    #[cfg(feature = "gpu")]
+    fn called_signature(&self, kernel: &[u32], function: &str) -> Option<Signature>;
 }
 
 /// What one invocation of a call kernel does, spelled by the back end ([`crate::kernel_source`]).

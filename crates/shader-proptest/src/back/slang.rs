@@ -8,10 +8,11 @@
 use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
 use crate::compile::{compile_slang, CompileError, Stage, Target};
 use crate::kernel::WORKGROUP_SIZE;
-use crate::layout::{
-    is_identifier, line_after, probe_error, spirv_layout, GlslPacking, LayoutError, StructLayout,
-};
+use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
+use crate::reflect;
 use crate::shader::Shader;
+#[cfg(feature = "gpu")]
+use crate::signature::{DeclaredType, Signature};
 use crate::value::ShaderType;
 use std::path::Path;
 
@@ -105,6 +106,105 @@ float kernel_f32(uint word) {{
     fn struct_layout(&self, shader: &Shader, name: &str) -> Result<StructLayout, LayoutError> {
         slang_layout(shader.source(), name, GlslPacking::Std430, &shader.include_dirs())
     }
+
+    /// From slangc's own words ([`slangc_declared_signatures`]).
+    #[cfg(feature = "gpu")]
+    fn declared_signatures(&self, shader: &Shader, function: &str) -> Option<Vec<Signature>> {
+        slangc_declared_signatures(shader, function, |probe| {
+            compile_slang(probe, Stage::Compute, Target::Vulkan1_1, &shader.include_dirs())
+        })
+    }
+
+    /// Slang converts scalars to vectors and integers to floats implicitly.
+    #[cfg(feature = "gpu")]
+    fn called_signature(&self, kernel: &[u32], function: &str) -> Option<Signature> {
+        reflect::signatures(kernel, function, true).into_iter().next()
+    }
+}
+
+/// The signatures of the functions named `function` that `shader` declares, from slangc's own
+/// words: slangc writes no function that no entry point calls, so a probe, compiled by `compile`,
+/// assigns the function to an `int`, and slangc's error spells its type (`got '(float, float,
+/// float) -> float'`), or each overload's (`candidate: func falloff(float3) -> float`), or says
+/// that the name is an `undefined identifier`. Parameter names are not in them. Slang and HLSL
+/// read by slangc share it.
+#[cfg(feature = "gpu")]
+pub(super) fn slangc_declared_signatures(
+    shader: &Shader,
+    function: &str,
+    compile: impl FnOnce(&str) -> Result<Vec<u32>, CompileError>,
+) -> Option<Vec<Signature>> {
+    if !is_identifier(function) {
+        return None;
+    }
+    let probe = format!(
+        "{}\n[shader(\"compute\")]\n[numthreads(1, 1, 1)]\nvoid main() {{ int signature_probe = {function}; }}\n",
+        shader.source()
+    );
+    let Err(CompileError::Failed { log, .. }) = compile(&probe) else {
+        return None;
+    };
+    let signatures: Vec<Signature> = log.lines().filter_map(spelled_signature).collect();
+    (!signatures.is_empty() || log.contains("undefined identifier")).then_some(signatures)
+}
+
+/// The signature in a line of slangc's log that spells a function type: `... got '(float3,
+/// float) -> float'`, or `candidate: func name(float3, float) -> float`.
+#[cfg(feature = "gpu")]
+fn spelled_signature(line: &str) -> Option<Signature> {
+    let spelled = match line.split_once("got '") {
+        Some((_, got)) => got.strip_suffix('\'')?,
+        None => line.split_once("candidate: func ")?.1,
+    };
+    let (name_and_parameters, result) = spelled.rsplit_once(" -> ")?;
+    let parameters = name_and_parameters.split_once('(')?.1.strip_suffix(')')?;
+    Some(Signature {
+        parameters: top_level_items(parameters)
+            .map(|ty| (String::new(), declared_type(ty)))
+            .collect(),
+        result: declared_type(result.trim()),
+    })
+}
+
+/// The comma-separated items of `list`, keeping the commas inside `<...>` (`vector<float,3>`).
+#[cfg(feature = "gpu")]
+fn top_level_items(list: &str) -> impl Iterator<Item = &str> {
+    let mut depth = 0;
+    list.split(move |c| {
+        match c {
+            '<' => depth += 1,
+            '>' => depth -= 1,
+            _ => {}
+        }
+        c == ',' && depth == 0
+    })
+    .map(str::trim)
+    .filter(|item| !item.is_empty())
+}
+
+/// A type as slangc spells it in a diagnostic: `float`, `float3` or `vector<float,3>`,
+/// `float3x3` or `matrix<float,3,3>`, a struct by its (possibly module-qualified) name.
+#[cfg(feature = "gpu")]
+fn declared_type(spelled: &str) -> DeclaredType {
+    let known = match spelled.replace(' ', "").as_str() {
+        "float" => Some(ShaderType::F32),
+        "uint" => Some(ShaderType::U32),
+        "int" => Some(ShaderType::I32),
+        "bool" => Some(ShaderType::Bool),
+        "float2" | "vector<float,2>" => Some(ShaderType::Vec2),
+        "float3" | "vector<float,3>" => Some(ShaderType::Vec3),
+        "float4" | "vector<float,4>" => Some(ShaderType::Vec4),
+        "float2x2" | "matrix<float,2,2>" => Some(ShaderType::Mat2),
+        "float3x3" | "matrix<float,3,3>" => Some(ShaderType::Mat3),
+        "float4x4" | "matrix<float,4,4>" => Some(ShaderType::Mat4),
+        _ => None,
+    };
+    let name = spelled.rsplit('.').next().unwrap_or(spelled);
+    match known {
+        Some(ty) => DeclaredType::Value(ty),
+        None if is_identifier(name) => DeclaredType::Struct(name.to_string()),
+        None => DeclaredType::Other(spelled.to_string()),
+    }
 }
 
 /// A Slang compute `main`: invocation `id.x` returns unless it is below `cases`, an expression
@@ -156,7 +256,7 @@ pub fn slang_layout(
     let probe_line = line_after(source);
     let spirv = compile_slang(&probe, Stage::Compute, Target::Vulkan1_1, search_dirs)
         .map_err(|error| probe_error(error, |log| compile_error(log, name, probe_line)))?;
-    let mut layout = spirv_layout::buffer_element_layout(&spirv, "layout_probe")
+    let mut layout = reflect::buffer_element_layout(&spirv, "layout_probe")
         .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
     layout.name = name.to_string();
     Ok(layout)

@@ -6,6 +6,8 @@ use crate::compile::{compile_wgsl, CompileError, Target};
 use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{FieldLayout, GlslPacking, LayoutError, StructLayout};
 use crate::shader::Shader;
+#[cfg(feature = "gpu")]
+use crate::signature::{DeclaredType, Signature};
 use crate::value::ShaderType;
 
 /// The WGSL back end.
@@ -121,10 +123,100 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {{
     fn struct_layout(&self, shader: &Shader, name: &str) -> Result<StructLayout, LayoutError> {
         wgsl_layout(shader.source(), name)
     }
+
+    /// The functions of naga's module of the source.
+    #[cfg(feature = "gpu")]
+    fn declared_signatures(&self, shader: &Shader, function: &str) -> Option<Vec<Signature>> {
+        let module = naga::front::wgsl::parse_str(shader.source()).ok()?;
+        let declared = |ty: naga::Handle<naga::Type>| declared_type(&module, ty);
+        module
+            .functions
+            .iter()
+            .filter(|(_, f)| f.name.as_deref() == Some(function))
+            .map(|(_, f)| Signature {
+                parameters: f
+                    .arguments
+                    .iter()
+                    .map(|argument| (argument.name.clone().unwrap_or_default(), declared(argument.ty)))
+                    .collect(),
+                result: f.result.as_ref().map_or_else(
+                    || DeclaredType::Other(String::from("nothing")),
+                    |result| declared(result.ty),
+                ),
+            })
+            .collect::<Vec<_>>()
+            .into()
+    }
+
+    /// WGSL converts no argument: a kernel naga accepts passes exactly the kernel's types.
+    #[cfg(feature = "gpu")]
+    fn called_signature(&self, _kernel: &[u32], _function: &str) -> Option<Signature> {
+        None
+    }
+}
+
+/// The path of the first `bool` among `members`, through nested structs and arrays:
+/// `inner.flag`.
+fn bool_member(module: &naga::Module, members: &[naga::StructMember]) -> Option<String> {
+    members.iter().find_map(|member| {
+        let name = member.name.clone().unwrap_or_default();
+        let mut ty = &module.types[member.ty].inner;
+        while let naga::TypeInner::Array { base, .. } = ty {
+            ty = &module.types[*base].inner;
+        }
+        match ty {
+            naga::TypeInner::Scalar(scalar) if scalar.kind == naga::ScalarKind::Bool => Some(name),
+            naga::TypeInner::Struct { members, .. } => {
+                bool_member(module, members).map(|inner| format!("{name}.{inner}"))
+            }
+            _ => None,
+        }
+    })
+}
+
+/// The WGSL type `ty` of `module` as a signature shows it.
+#[cfg(feature = "gpu")]
+fn declared_type(module: &naga::Module, ty: naga::Handle<naga::Type>) -> DeclaredType {
+    use naga::common::wgsl::TypeContext;
+    use naga::{ScalarKind, TypeInner, VectorSize};
+    let f32 = naga::Scalar::F32;
+    let known = match &module.types[ty].inner {
+        TypeInner::Scalar(scalar) => match (scalar.kind, scalar.width) {
+            (ScalarKind::Float, 4) => Some(ShaderType::F32),
+            (ScalarKind::Uint, 4) => Some(ShaderType::U32),
+            (ScalarKind::Sint, 4) => Some(ShaderType::I32),
+            (ScalarKind::Bool, _) => Some(ShaderType::Bool),
+            _ => None,
+        },
+        TypeInner::Vector { size, scalar } if *scalar == f32 => match size {
+            VectorSize::Bi => Some(ShaderType::Vec2),
+            VectorSize::Tri => Some(ShaderType::Vec3),
+            VectorSize::Quad => Some(ShaderType::Vec4),
+        },
+        TypeInner::Matrix {
+            columns,
+            rows,
+            scalar,
+        } if *scalar == f32 && columns == rows => match columns {
+            VectorSize::Bi => Some(ShaderType::Mat2),
+            VectorSize::Tri => Some(ShaderType::Mat3),
+            VectorSize::Quad => Some(ShaderType::Mat4),
+        },
+        TypeInner::Struct { .. } => {
+            return DeclaredType::Struct(module.types[ty].name.clone().unwrap_or_default());
+        }
+        _ => None,
+    };
+    known.map_or_else(
+        || DeclaredType::Other(module.to_ctx().type_to_string(ty)),
+        DeclaredType::Value,
+    )
 }
 
 /// The layout naga gives the WGSL struct `name` declared in `source` (the WGSL rules for
-/// host-shareable memory, which storage buffers and push constants use).
+/// host-shareable memory, which storage buffers and push constants use). A struct that holds a
+/// `bool`, directly or in a struct or array it holds, is refused naming the field
+/// ([`LayoutError::BoolInBuffer`]): WGSL forbids `bool` in host-shareable memory.
 pub fn wgsl_layout(source: &str, name: &str) -> Result<StructLayout, LayoutError> {
     let module = naga::front::wgsl::parse_str(source)
         .map_err(|error| LayoutError::Source(error.emit_to_string(source)))?;
@@ -142,6 +234,12 @@ pub fn wgsl_layout(source: &str, name: &str) -> Result<StructLayout, LayoutError
             _ => None,
         })
         .ok_or_else(|| LayoutError::StructNotFound(name.to_string()))?;
+    if let Some(field) = bool_member(&module, members) {
+        return Err(LayoutError::BoolInBuffer {
+            structure: name.to_string(),
+            field,
+        });
+    }
     let fields = members
         .iter()
         .map(|member| FieldLayout {

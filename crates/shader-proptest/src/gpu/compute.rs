@@ -6,9 +6,23 @@
 use super::device::{Error, Gpu};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
 use crate::kernel::WORKGROUP_SIZE;
-use crate::shader::Shader;
 use ash::vk;
 use std::sync::Mutex;
+
+/// A compiled kernel on a device that runs cases in batches: `invocations` invocations over the
+/// `input` words, returning the first `output_words` output words, one dispatch per call,
+/// waited for. A check runs on any device that gives it one ([`ComputeKernel`] on Vulkan through
+/// ash; the `wgpu` feature's kernels through wgpu).
+pub(crate) trait Dispatch: Send + Sync {
+    /// Runs one batch; a validation message fails it.
+    fn dispatch(&self, invocations: usize, input: &[u32], output_words: usize) -> Result<Vec<u32>, Error>;
+}
+
+impl Dispatch for ComputeKernel<'_> {
+    fn dispatch(&self, invocations: usize, input: &[u32], output_words: usize) -> Result<Vec<u32>, Error> {
+        ComputeKernel::dispatch(self, invocations, input, output_words)
+    }
+}
 
 /// A compute pipeline for one kernel whose entry point is `main`; destroys itself when dropped.
 pub struct ComputeKernel<'g> {
@@ -67,20 +81,6 @@ impl<'g> ComputeKernel<'g> {
             push_constant_bytes,
             io: Mutex::new(None),
         })
-    }
-
-    /// A pipeline for `kernel`, a compute kernel written against `shader`, compiled by the
-    /// shader's back end; a compiler error quotes the kernel.
-    pub(crate) fn compile(
-        gpu: &'g Gpu,
-        shader: &Shader,
-        kernel: &str,
-        push_constant_bytes: u32,
-    ) -> Result<ComputeKernel<'g>, Error> {
-        let spirv = shader
-            .compile_kernel(kernel)
-            .map_err(|error| Error::Compile(format!("{error}\n--- kernel ---\n{kernel}")))?;
-        ComputeKernel::new(gpu, &spirv, push_constant_bytes)
     }
 
     /// Runs `invocations` invocations over `input` and returns the first `output_words` words of

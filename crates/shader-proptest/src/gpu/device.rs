@@ -1,5 +1,6 @@
 //! A Vulkan device with the validation layer on: any validation message fails the run.
 
+use crate::layout::LayoutError;
 use crate::shader::Feature;
 use ash::vk;
 use std::ffi::{c_void, CStr};
@@ -21,6 +22,10 @@ pub enum Error {
     Vulkan(&'static str, vk::Result),
     /// A shader failed to compile: the compiler's message and the source.
     Compile(String),
+    /// A `pod` struct's Rust layout is not the shader's: the comparison, field by field.
+    Layout(LayoutError),
+    /// The Rust types of a check are not those of the shader function: both, in their terms.
+    Signature(String),
     /// The validation layer reported messages (each one fails the run).
     Validation(Vec<String>),
     /// A batch is larger than one dispatch can hold.
@@ -45,6 +50,8 @@ impl fmt::Display for Error {
             Error::Setup(message) => write!(f, "{message}"),
             Error::Vulkan(call, result) => write!(f, "{call} failed: {result}"),
             Error::Compile(message) => write!(f, "shader compilation failed:\n{message}"),
+            Error::Layout(error) => write!(f, "the Rust and shader layouts differ: {error}"),
+            Error::Signature(message) => write!(f, "{message}"),
             Error::Validation(messages) => {
                 write!(
                     f,
@@ -94,6 +101,17 @@ pub struct DeviceRequest<'a> {
 ///
 /// Validation messages of severity warning or error are collected; any of them fails the dispatch
 /// or submission during which it arrived ([`Error::Validation`]).
+///
+/// ```
+/// use shader_proptest::{Feature, Gpu};
+///
+/// let gpu = Gpu::new()?;
+/// println!("{}, {}", gpu.name(), gpu.driver());
+/// if let Some(reason) = gpu.lacks(Feature::ShaderFloat64) {
+///     println!("checks of f64 functions are reported as not run: {reason}");
+/// }
+/// # Ok::<(), shader_proptest::Error>(())
+/// ```
 pub struct Gpu {
     instance: ash::Instance,
     debug_utils: ash::ext::debug_utils::Instance,
@@ -211,6 +229,12 @@ impl Gpu {
     /// for example `llvmpipe (Mesa 25.0.7), Vulkan 1.4.305`.
     pub fn driver(&self) -> &str {
         &self.driver
+    }
+
+    /// The device and its driver, for reports: `llvmpipe (LLVM 15.0.7, 256 bits), driver
+    /// llvmpipe (Mesa 25.0.7), Vulkan 1.4.305`.
+    pub(crate) fn description(&self) -> String {
+        format!("{}, driver {}", self.name, self.driver)
     }
 
     /// Whether `feature` is enabled on this device.

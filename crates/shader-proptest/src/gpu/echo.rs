@@ -32,7 +32,10 @@ pub fn echo<T: Value + bytemuck::Pod>(
     }
     let kernel = echo_kernel_source(shader, packing, ty);
     let size = std::mem::size_of::<T>();
-    let pipeline = ComputeKernel::compile(gpu, shader, &kernel, size as u32)?;
+    let spirv = shader
+        .compile_kernel(&kernel)
+        .map_err(|error| Error::Compile(format!("{error}\n--- kernel ---\n{kernel}")))?;
+    let pipeline = ComputeKernel::new(gpu, &spirv, size as u32)?;
     let words = ShaderType::Struct(ty).words();
     let output = pipeline.dispatch_with_push_constants(
         values.len(),

@@ -1,12 +1,15 @@
 //! The device side (feature `gpu`): a Vulkan device with the validation layer on, the objects made
 //! on it, compute kernels, and the checks that run on them.
 
+mod call;
 mod check;
 mod compute;
 mod device;
 mod echo;
 mod resources;
 mod suite;
+#[cfg(feature = "wgpu")]
+mod wgpu_device;
 
 pub use check::{
     evaluate, Check, Failure, FunctionCheck, Outcome, PreparedCheck, Report, RunConfig, SEED_ENV,
@@ -16,3 +19,5 @@ pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
 pub use echo::echo;
 pub use resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
 pub use suite::run_checks;
+#[cfg(feature = "wgpu")]
+pub use wgpu_device::WgpuDevice;

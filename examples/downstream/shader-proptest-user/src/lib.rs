@@ -1,6 +1,7 @@
 //! A user's colour helpers: Rust functions with twins in `shaders/colour.wgsl`,
 //! `shaders/colour.glsl` and `shaders/colour.slang`, property-tested against them on a Vulkan device
-//! in `tests/colour.rs`.
+//! in `tests/agreement.rs`, beside a shader function of the user's own that calls ray-footprint's
+//! ray-cone module, checked against the module's Rust functions.
 
 use glam::Vec3;
 

@@ -1,10 +1,10 @@
 //! Running: batches of cases generated on worker threads, each from its own seed, while the device
-//! runs the previous batch; one dispatch per batch, judged case by case.
+//! runs the previous batch; one dispatch per batch, every case of it judged.
 
 use super::config::{batch_runner, RunConfig};
 use super::judge::{count_vacuous, Vacuous};
 use super::FunctionCheck;
-use crate::gpu::compute::ComputeKernel;
+use crate::gpu::compute::Dispatch;
 use crate::gpu::device::Error;
 use crate::value::{Args, Value};
 use proptest::strategy::Strategy;
@@ -13,29 +13,34 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::sync_channel;
 
 /// Strategy rejections (`prop_filter`) tolerated in a row before a check gives up.
-const MAX_REJECTIONS: usize = 10_000;
+pub(super) const MAX_REJECTIONS: usize = 10_000;
 
 /// Appends `count` cases from `runner` to a batch, each made by [`generate`] from the check's
 /// strategy in its own type (no boxed value trees): the values, and the random numbers drawn, are
 /// those of the boxed strategy that shrinking replays.
 pub(super) type Generator<A> = dyn Fn(&mut TestRunner, usize, &mut Vec<A>) -> Result<(), Error> + Send + Sync;
 
-/// A value tree from `strategy`, retrying rejected values.
-pub(super) fn generate<S: Strategy>(strategy: &S, runner: &mut TestRunner) -> Result<S::Tree, Error> {
-    for _ in 0..MAX_REJECTIONS {
+/// A value tree from `strategy`, retrying rejected values up to `attempts` times.
+pub(super) fn generate<S: Strategy>(
+    strategy: &S,
+    runner: &mut TestRunner,
+    attempts: usize,
+) -> Result<S::Tree, Error> {
+    for _ in 0..attempts {
         if let Ok(tree) = strategy.new_tree(runner) {
             return Ok(tree);
         }
     }
     Err(Error::Strategy(format!(
-        "the strategy rejected {MAX_REJECTIONS} values in a row"
+        "the strategy rejected {attempts} values in a row"
     )))
 }
 
-/// Counters of a run.
+/// Counters of a run, over every case compared.
 #[derive(Default)]
 pub(super) struct Stats {
     pub cases: usize,
+    pub disagreeing: usize,
     pub max_error: f32,
     pub max_ratio: f32,
     pub vacuous: usize,
@@ -64,7 +69,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// the first disagreement (lowest batch, then case) among the batches run.
     pub(super) fn run_batches(
         &self,
-        pipeline: &ComputeKernel<'_>,
+        pipeline: &dyn Dispatch,
         config: &RunConfig,
         seed: u64,
         stats: &mut Stats,
@@ -141,10 +146,10 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         Ok(batch)
     }
 
-    /// Runs one generated batch and compares it: the first disagreeing case, if any.
+    /// Runs one generated batch and judges every case of it: the first disagreeing case, if any.
     fn dispatch_batch(
         &self,
-        pipeline: &ComputeKernel<'_>,
+        pipeline: &dyn Dispatch,
         batch: &Batch<A>,
         stats: &mut Stats,
     ) -> Result<Option<Mismatch>, Error> {
@@ -153,26 +158,24 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let per_case = batch.expected.len() / count.max(1);
         let mut words = &output[..];
         let mut got = Vec::with_capacity(per_case);
+        let mut first = None;
         for (case, args) in batch.cases.iter().enumerate() {
             got.clear();
             R::read(&mut words).components(&mut got);
             let range = case * per_case..(case + 1) * per_case;
-            match self.judge_case(args, &got, &batch.expected[range.clone()], &batch.bounds[range]) {
-                Ok((max_error, max_ratio)) => {
-                    stats.max_error = stats.max_error.max(max_error);
-                    stats.max_ratio = stats.max_ratio.max(max_ratio);
-                    stats.cases += 1;
-                }
-                Err(reason) => {
-                    return Ok(Some(Mismatch {
-                        batch: batch.index,
-                        case,
-                        reason,
-                    }))
-                }
+            let verdict = self.judge_case(args, &got, &batch.expected[range.clone()], &batch.bounds[range]);
+            stats.max_error = stats.max_error.max(verdict.max_error);
+            stats.max_ratio = stats.max_ratio.max(verdict.max_ratio);
+            stats.cases += 1;
+            if let Some(reason) = verdict.disagreement {
+                stats.disagreeing += 1;
+                first.get_or_insert(Mismatch {
+                    batch: batch.index,
+                    case,
+                    reason,
+                });
             }
         }
-        // The batch agreed: its vacuous cases count (a failing batch's are not compared).
         stats.vacuous += batch.vacuous.cases;
         let components = &batch.vacuous.by_component;
         stats
@@ -183,7 +186,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             .iter_mut()
             .zip(components)
             .for_each(|(total, count)| *total += count);
-        Ok(None)
+        Ok(first)
     }
 }
 
@@ -210,7 +213,9 @@ mod tests {
         let strategy = check.strategy();
         let mut runner = batch_runner(7, 3);
         for case in &cases {
-            let replayed = generate(&strategy, &mut runner).expect("a case").current();
+            let replayed = generate(&strategy, &mut runner, MAX_REJECTIONS)
+                .expect("a case")
+                .current();
             assert_eq!(case.0.to_bits(), replayed.0.to_bits());
             assert_eq!(case.1, replayed.1);
         }

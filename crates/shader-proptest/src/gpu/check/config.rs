@@ -8,6 +8,21 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 pub const SEED_ENV: &str = "SHADER_PROPTEST_SEED";
 
 /// How many cases a check runs, how they are batched and generated.
+///
+/// ```
+/// use shader_proptest::RunConfig;
+///
+/// // A quick run that replays the same cases every time.
+/// let config = RunConfig {
+///     cases: 10_000,
+///     seed: Some(7),
+///     ..RunConfig::default()
+/// };
+/// assert_eq!(config.validate()?, 7);
+/// let nothing = RunConfig { cases: 0, ..config };
+/// assert_eq!(nothing.validate().unwrap_err().to_string(), "cases = \"0\": expected at least 1");
+/// # Ok::<(), shader_proptest::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug)]
 pub struct RunConfig {
     /// At least this many cases are checked (before any shrinking).
@@ -19,13 +34,13 @@ pub struct RunConfig {
     pub seed: Option<u64>,
     /// Threads that generate cases and run the mirror.
     pub threads: usize,
-    /// Most shrinking steps (one dispatch each) after a failure.
+    /// Most dispatches shrinking may take after a failure (each runs many candidates).
     pub shrink_steps: usize,
 }
 
 impl Default for RunConfig {
     /// 100,000 cases in batches of 8,192, the seed from [`SEED_ENV`] if set (else fresh), one
-    /// thread per processor, up to 1,024 shrinking steps.
+    /// thread per processor, up to 1,024 shrinking dispatches.
     fn default() -> Self {
         RunConfig {
             cases: 100_000,

@@ -5,6 +5,14 @@
 use super::FunctionCheck;
 use crate::value::{Args, Value};
 
+/// How one case compares: the largest error and share of its bound over its components, and
+/// why it disagrees, where it does.
+pub(super) struct Verdict {
+    pub max_error: f32,
+    pub max_ratio: f32,
+    pub disagreement: Option<String>,
+}
+
 /// Cases of a batch with a vacuous bound: in any component, and per component.
 #[derive(Default)]
 pub(super) struct Vacuous {
@@ -26,8 +34,11 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let expected = components(&self.mirror(args.clone()));
         let mut bounds = Vec::new();
         self.tolerance.bounds(args, &expected, &mut bounds);
-        self.judge_case(args, &components(got), &expected, &bounds)
-            .map(|(_, max_ratio)| max_ratio)
+        let verdict = self.judge_case(args, &components(got), &expected, &bounds);
+        match verdict.disagreement {
+            None => Ok(verdict.max_ratio),
+            Some(reason) => Err(reason),
+        }
     }
 
     /// Judges the device's components `got` for `args` against the mirror's `expected` within
@@ -38,19 +49,13 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// the mirror run with the processor flushing every subnormal operand and result
     /// ([`with_subnormals_flushed`]). Each component must then be within its bound of one of these
     /// results or of `expected` (a device may flush in one operation and not in another, so
-    /// components may follow different ones; a copied input, for one, is never flushed). Returns
-    /// the largest error and share of the bound, or the first judgement's reason.
-    pub(super) fn judge_case(
-        &self,
-        args: &A,
-        got: &[f32],
-        expected: &[f32],
-        bounds: &[f32],
-    ) -> Result<(f32, f32), String> {
-        let first = match judge(args.is_finite(), got, expected, bounds) {
-            Ok(errors) => return Ok(errors),
-            Err(reason) => reason,
-        };
+    /// components may follow different ones; a copied input, for one, is never flushed). The
+    /// verdict of the second judgement where it accepts the case, else of the first.
+    pub(super) fn judge_case(&self, args: &A, got: &[f32], expected: &[f32], bounds: &[f32]) -> Verdict {
+        let first = judge(args.is_finite(), got, expected, bounds);
+        if first.disagreement.is_none() {
+            return first;
+        }
         let mut allowed = vec![(expected.to_vec(), bounds.to_vec())];
         if let Some(flushed) = flush_subnormals(args) {
             allowed.push(self.expected_and_bounds(&flushed, self.mirror(flushed.clone())));
@@ -58,7 +63,14 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         if let Some(result) = with_subnormals_flushed(|| self.mirror(args.clone())) {
             allowed.push(self.expected_and_bounds(args, result));
         }
-        judge_each_component(args.is_finite(), got, &allowed).map_err(|_| first)
+        match judge_each_component(args.is_finite(), got, &allowed) {
+            Some((max_error, max_ratio)) => Verdict {
+                max_error,
+                max_ratio,
+                disagreement: None,
+            },
+            None => first,
+        }
     }
 
     /// The components of the mirror's `result` for `args` and their bounds.
@@ -77,26 +89,33 @@ fn components<R: Value>(value: &R) -> Vec<f32> {
     out
 }
 
-/// Compares one case's components: the largest error and the largest share of its bound, or
-/// `Err` naming the first component that differs beyond its bound, or a non-finite output for
-/// finite inputs.
-fn judge(finite_input: bool, got: &[f32], expected: &[f32], bounds: &[f32]) -> Result<(f32, f32), String> {
+/// Compares one case's components: the largest error and the largest share of its bound (a
+/// non-finite output counts as an infinite error), and the first component that differs beyond
+/// its bound, or a non-finite output for finite inputs.
+fn judge(finite_input: bool, got: &[f32], expected: &[f32], bounds: &[f32]) -> Verdict {
     let finite = |values: &[f32]| values.iter().all(|x| x.is_finite());
-    if finite_input && !(finite(got) && finite(expected)) {
-        return Err(String::from("non-finite output for finite input"));
-    }
-    let (mut max_error, mut max_ratio) = (0.0f32, 0.0f32);
+    let mut verdict = Verdict {
+        max_error: 0.0,
+        max_ratio: 0.0,
+        disagreement: (finite_input && !(finite(got) && finite(expected)))
+            .then(|| String::from("non-finite output for finite input")),
+    };
     for (index, ((&got, &expected), &bound)) in got.iter().zip(expected).zip(bounds).enumerate() {
-        let Some((error, ratio)) = within_bound(finite_input, got, expected, bound) else {
-            let error = (got - expected).abs();
-            return Err(format!(
-                "component {index} differs by {error:e} (tolerance {bound:e})"
-            ));
+        let (error, ratio) = match within_bound(finite_input, got, expected, bound) {
+            Some(errors) => errors,
+            None => {
+                let error = (got - expected).abs();
+                verdict.disagreement.get_or_insert_with(|| {
+                    format!("component {index} differs by {error:e} (tolerance {bound:e})")
+                });
+                let error = if error.is_nan() { f32::INFINITY } else { error };
+                (error, if bound > 0.0 { error / bound } else { f32::INFINITY })
+            }
         };
-        max_error = max_error.max(error);
-        max_ratio = max_ratio.max(ratio);
+        verdict.max_error = verdict.max_error.max(error);
+        verdict.max_ratio = verdict.max_ratio.max(ratio);
     }
-    Ok((max_error, max_ratio))
+    verdict
 }
 
 /// `got`'s error from `expected` and its share of `bound` (0 for a bound of 0), where the error
@@ -113,27 +132,26 @@ fn within_bound(finite_input: bool, got: f32, expected: f32, bound: f32) -> Opti
 
 /// Compares one case's components with several allowed results (components and bounds): each
 /// component must be within its bound of the same component of one of them (finite, where the
-/// inputs are). The largest error and share of the bound, taking each component's closest result.
+/// inputs are). The largest error and share of the bound, taking each component's closest
+/// result; `None` where a component matches none.
 fn judge_each_component(
     finite_input: bool,
     got: &[f32],
     allowed: &[(Vec<f32>, Vec<f32>)],
-) -> Result<(f32, f32), String> {
+) -> Option<(f32, f32)> {
     if finite_input && !got.iter().all(|x| x.is_finite()) {
-        return Err(String::from("non-finite output for finite input"));
+        return None;
     }
     let (mut max_error, mut max_ratio) = (0.0f32, 0.0f32);
     for (index, &got) in got.iter().enumerate() {
         let matches = allowed
             .iter()
             .filter_map(|(expected, bounds)| within_bound(finite_input, got, expected[index], bounds[index]));
-        let Some((error, ratio)) = matches.min_by(|a, b| a.1.total_cmp(&b.1)) else {
-            return Err(format!("component {index} matches no allowed result"));
-        };
+        let (error, ratio) = matches.min_by(|a, b| a.1.total_cmp(&b.1))?;
         max_error = max_error.max(error);
         max_ratio = max_ratio.max(ratio);
     }
-    Ok((max_error, max_ratio))
+    Some((max_error, max_ratio))
 }
 
 /// Runs `f` with the processor flushing subnormal operands and results of f32 arithmetic to zero

@@ -4,8 +4,8 @@
 //! threads as the machine has, while the device runs the previous batch: one dispatch of a
 //! generated kernel per batch ([`batches`]). Every output component is compared with the mirror's
 //! within the check's [`Tolerance`]; for finite inputs both outputs must be finite too
-//! ([`judge`]). A failing case is shrunk with proptest (re-generated from its batch's seed, then
-//! simplified one dispatch at a time, [`shrink`]) and reported with its inputs, both outputs, the
+//! ([`judge`]). A failing case is shrunk through the random words its strategy drew, many
+//! candidates per dispatch ([`shrink`]), and reported with its inputs, both outputs, the
 //! tolerance, the seed that replays the run and the kernel's source ([`report`]).
 
 mod batches;
@@ -17,16 +17,19 @@ mod shrink;
 pub use config::{RunConfig, SEED_ENV};
 pub use report::{Failure, Outcome, Report};
 
-use super::compute::ComputeKernel;
+use super::call::compile_call;
+use super::compute::{ComputeKernel, Dispatch};
 use super::device::{Error, Gpu};
 use crate::back::Language;
 use crate::kernel::kernel_source;
 use crate::shader::Shader;
+use crate::signature::Call;
 use crate::tolerance::Tolerance;
 use crate::value::{Args, Value};
-use batches::{generate, Generator, Stats};
+use batches::{generate, Generator, Stats, MAX_REJECTIONS};
+use proptest::prelude::any;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
-use proptest::test_runner::TestRng;
+use proptest::test_runner::{RngAlgorithm, TestRng};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -41,26 +44,46 @@ pub trait Check: Send + Sync {
     /// [`Report`] whose outcome is [`Outcome::Failed`].
     fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error>;
     /// Everything [`Check::run`] does before the first case, which needs no cases: the layout
-    /// comparison, the kernel's compilation and its pipeline. Thread-safe, so that a suite can
-    /// prepare the next checks while one runs ([`crate::run_checks`]).
+    /// comparison ([`Error::Layout`]), the kernel's compilation and the signature comparison
+    /// ([`Error::Signature`]), and the pipeline. Thread-safe, so that a suite can prepare the next
+    /// checks while one runs ([`crate::run_checks`]).
     fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error>;
     /// Runs the cases of a check that [`Check::prepare`] made ready.
     fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error>;
 }
 
-/// A check made ready to run on one shader ([`Check::prepare`]): the kernel's source, and its
-/// pipeline, or the outcome that stands for running it (the device lacks a feature the shader
-/// needs; the Rust and shader layouts differ).
+/// A check made ready to run on one shader ([`Check::prepare`]): the kernel's source and its
+/// pipeline on the device, or why the device cannot run it (it lacks a feature the shader needs).
 pub struct PreparedCheck<'g> {
     language: Language,
+    device: String,
     kernel: String,
-    pipeline: Result<ComputeKernel<'g>, Outcome>,
+    pipeline: Result<Box<dyn Dispatch + 'g>, String>,
     elapsed: Duration,
+}
+
+impl<'g> PreparedCheck<'g> {
+    /// The check of `shader`'s `kernel` on `device`, prepared since `started`.
+    pub(in crate::gpu) fn new(
+        shader: &Shader,
+        device: String,
+        kernel: String,
+        pipeline: Result<Box<dyn Dispatch + 'g>, String>,
+        started: Instant,
+    ) -> PreparedCheck<'g> {
+        PreparedCheck {
+            language: shader.language(),
+            device,
+            kernel,
+            pipeline,
+            elapsed: started.elapsed(),
+        }
+    }
 }
 
 /// One shader function, its mirror, the inputs to try and the tolerance.
 ///
-/// ```no_run
+/// ```
 /// use glam::Vec3;
 /// use proptest::prelude::*;
 /// use shader_proptest::{FunctionCheck, Gpu, RunConfig, Shader, Tolerance};
@@ -118,7 +141,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             generator: Arc::new(move |runner, count, cases| {
                 let strategy = strategy();
                 for _ in 0..count {
-                    cases.push(generate(&strategy, runner)?.current());
+                    cases.push(generate(&strategy, runner, MAX_REJECTIONS)?.current());
                 }
                 Ok(())
             }),
@@ -133,8 +156,9 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     }
 
     /// The same check (function, mirror, tolerance) on its cases changed by `perturb`: for example
-    /// pushed towards edge values ([`crate::strategy`]). Shrinking simplifies the original case and
-    /// perturbs it again with the same random numbers.
+    /// pushed towards edge values ([`crate::strategy`]). The random numbers `perturb` takes come
+    /// from a generator seeded by four words the case's strategy draws, so that shrinking replays
+    /// and simplifies the perturbation with the rest of the case.
     pub fn with_perturbation(
         &self,
         perturb: impl Fn(A, &mut TestRng) -> A + Clone + Send + Sync + 'static,
@@ -142,7 +166,10 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let strategy = Arc::clone(&self.strategy);
         let perturbed = move || {
             let perturb = perturb.clone();
-            strategy().prop_perturb(move |args, mut rng| perturb(args, &mut rng))
+            (strategy(), any::<[u32; 4]>()).prop_map(move |(args, seed)| {
+                let bytes: Vec<u8> = seed.iter().flat_map(|word| word.to_le_bytes()).collect();
+                perturb(args, &mut TestRng::from_seed(RngAlgorithm::XorShift, &bytes))
+            })
         };
         FunctionCheck::with_parts(
             self.function.clone(),
@@ -172,36 +199,42 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         kernel_source(shader, &self.function, A::TYPES, R::TYPE)
     }
 
+    /// The SPIR-V of `kernel`, this check's kernel of `shader`, after the layout and signature
+    /// comparisons ([`compile_call`]).
+    pub(in crate::gpu) fn compile(&self, shader: &Shader, kernel: &str) -> Result<Vec<u32>, Error> {
+        let call = Call {
+            function: &self.function,
+            parameters: A::TYPES,
+            result: R::TYPE,
+        };
+        compile_call(shader, &call, kernel)
+    }
+
     /// Runs the check on the function of `shader` (see [`Check::run`]).
     pub fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
         let prepared = self.prepare(gpu, shader)?;
         self.run_prepared(prepared, config)
     }
 
-    /// Compares the layouts and compiles the kernel into a pipeline (see [`Check::prepare`]).
+    /// Compares the layouts, compiles the kernel, compares the signature and makes the pipeline
+    /// (see [`Check::prepare`]).
     pub fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error> {
         let started = Instant::now();
         let kernel = self.kernel(shader);
-        let pipeline = if let Some(reason) = gpu.missing_feature(shader.features()) {
-            Err(Outcome::NotRun(reason))
-        } else if let Err(error) = shader.check_layouts(A::TYPES, R::TYPE) {
-            Err(Outcome::Failed(Box::new(Failure {
-                reason: format!("the Rust and shader layouts differ: {error}"),
-                input: String::new(),
-                mirror: String::new(),
-                shader: String::new(),
-                shrink_steps: 0,
-                kernel: kernel.clone(),
-            })))
-        } else {
-            Ok(ComputeKernel::compile(gpu, shader, &kernel, 0)?)
+        let pipeline = match gpu.missing_feature(shader.features()) {
+            Some(reason) => Err(reason),
+            None => {
+                let spirv = self.compile(shader, &kernel)?;
+                Ok(Box::new(ComputeKernel::new(gpu, &spirv, 0)?) as Box<dyn Dispatch>)
+            }
         };
-        Ok(PreparedCheck {
-            language: shader.language(),
+        Ok(PreparedCheck::new(
+            shader,
+            gpu.description(),
             kernel,
             pipeline,
-            elapsed: started.elapsed(),
-        })
+            started,
+        ))
     }
 
     /// Runs the cases on a prepared check (see [`Check::run_prepared`]). The report's time
@@ -210,24 +243,24 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let started = Instant::now();
         let seed = config.validate()?;
         let (stats, outcome) = match prepared.pipeline {
-            Err(outcome) => (Stats::default(), outcome),
-            Ok(pipeline) => self.run_cases(&pipeline, config, seed, prepared.kernel)?,
+            Err(reason) => (Stats::default(), Outcome::NotRun(reason)),
+            Ok(pipeline) => self.run_cases(pipeline.as_ref(), config, seed, prepared.kernel)?,
         };
-        let elapsed = prepared.elapsed + started.elapsed();
         Ok(Report::new(
             self.function.clone(),
             prepared.language,
+            prepared.device,
             seed,
             &stats,
             outcome,
-            elapsed,
+            prepared.elapsed + started.elapsed(),
         ))
     }
 
     /// Runs the batches on `pipeline` and shrinks the first disagreement, if any.
     fn run_cases(
         &self,
-        pipeline: &ComputeKernel<'_>,
+        pipeline: &dyn Dispatch,
         config: &RunConfig,
         seed: u64,
         kernel: String,
@@ -236,7 +269,8 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let outcome = match self.run_batches(pipeline, config, seed, &mut stats)? {
             None => Outcome::Passed,
             Some(mismatch) => {
-                Outcome::Failed(Box::new(self.shrink(pipeline, config, seed, mismatch, kernel)?))
+                let shrunk = self.shrink(pipeline, config, seed, mismatch)?;
+                Outcome::Failed(Box::new(self.failure(shrunk, stats.disagreeing, kernel)))
             }
         };
         Ok((stats, outcome))
@@ -273,7 +307,12 @@ pub fn evaluate<A: Args, R: Value>(
     cases: &[A],
 ) -> Result<Vec<R>, Error> {
     let kernel = kernel_source(shader, function, A::TYPES, R::TYPE);
-    let pipeline = ComputeKernel::compile(gpu, shader, &kernel, 0)?;
+    let call = Call {
+        function,
+        parameters: A::TYPES,
+        result: R::TYPE,
+    };
+    let pipeline = ComputeKernel::new(gpu, &compile_call(shader, &call, &kernel)?, 0)?;
     let mut input = Vec::new();
     cases.iter().for_each(|args| args.write(&mut input));
     let output = pipeline.dispatch(cases.len(), &input, cases.len() * R::TYPE.words())?;
