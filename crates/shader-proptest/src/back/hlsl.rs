@@ -13,6 +13,7 @@
 
 #[cfg(feature = "gpu")]
 use super::slang::slangc_declared_signatures;
+use super::slang::Slang;
 use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
 use crate::compile::{compile_hlsl_with_glslang, compile_hlsl_with_slangc, CompileError, Stage, Target};
 use crate::kernel::WORKGROUP_SIZE;
@@ -45,40 +46,29 @@ impl Backend for Hlsl {
         }
     }
 
+    /// Types, bit casts and matrix order are spelled as in Slang, which reads HLSL's.
     fn type_name(&self, ty: ShaderType) -> &'static str {
-        match ty {
-            ShaderType::F32 => "float",
-            ShaderType::U32 => "uint",
-            ShaderType::I32 => "int",
-            ShaderType::Bool => "bool",
-            ShaderType::Vec2 => "float2",
-            ShaderType::Vec3 => "float3",
-            ShaderType::Vec4 => "float4",
-            ShaderType::Mat2 => "float2x2",
-            ShaderType::Mat3 => "float3x3",
-            ShaderType::Mat4 => "float4x4",
-            ShaderType::Struct(s) => s.name,
-        }
+        Slang.type_name(ty)
     }
 
     fn int_from_bits(&self, word: &str) -> String {
-        format!("asint({word})")
+        Slang.int_from_bits(word)
     }
 
     fn float_bits(&self, value: &str) -> String {
-        format!("asuint({value})")
+        Slang.float_bits(value)
     }
 
     fn int_bits(&self, value: &str) -> String {
-        format!("asuint({value})")
+        Slang.int_bits(value)
     }
 
     fn bool_word(&self, value: &str) -> String {
-        format!("({value} ? 1u : 0u)")
+        Slang.bool_word(value)
     }
 
     fn matrix_order(&self) -> MatrixOrder {
-        MatrixOrder::Rows
+        Slang.matrix_order()
     }
 
     /// A call of the struct's `kernel_make_` function, which [`Backend::call_kernel`] declares.
