@@ -183,47 +183,13 @@ fn leaves(path: &str, ty: ShaderType, out: &mut Vec<(String, ShaderType)>) {
     }
 }
 
-/// `ty`'s name in `language`.
-fn type_name(language: Language, ty: ShaderType) -> String {
-    let vector = |n: usize| match language {
-        Language::Wgsl => format!("vec{n}<f32>"),
-        Language::Glsl => format!("vec{n}"),
-        _ => format!("float{n}"),
-    };
-    let matrix = |n: usize| match language {
-        Language::Wgsl => format!("mat{n}x{n}<f32>"),
-        Language::Glsl => format!("mat{n}"),
-        _ => format!("float{n}x{n}"),
-    };
-    match (language, ty) {
-        (Language::Wgsl, ShaderType::F32) => "f32".into(),
-        (Language::Wgsl, ShaderType::U32) => "u32".into(),
-        (Language::Wgsl, ShaderType::I32) => "i32".into(),
-        (_, ShaderType::F32) => "float".into(),
-        (_, ShaderType::U32) => "uint".into(),
-        (_, ShaderType::I32) => "int".into(),
-        (_, ShaderType::Bool) => "bool".into(),
-        (_, ShaderType::Vec2) => vector(2),
-        (_, ShaderType::Vec3) => vector(3),
-        (_, ShaderType::Vec4) => vector(4),
-        (_, ShaderType::Mat2) => matrix(2),
-        (_, ShaderType::Mat3) => matrix(3),
-        (_, ShaderType::Mat4) => matrix(4),
-        (_, ShaderType::Struct(s)) => s.name.into(),
-    }
-}
-
 /// The float that a component (`path`, a scalar or a vector) adds to the result's sum.
 fn summand(language: Language, path: &str, ty: ShaderType) -> String {
-    let float = if language == Language::Wgsl {
-        "f32"
-    } else {
-        "float"
-    };
+    let float = language.type_name(ShaderType::F32);
     match ty {
         ShaderType::F32 => path.to_string(),
         ShaderType::Vec2 | ShaderType::Vec3 | ShaderType::Vec4 => {
-            format!("dot({path}, {}(1.0))", type_name(language, ty))
+            format!("dot({path}, {}(1.0))", language.type_name(ty))
         }
         _ => format!("{float}({path})"),
     }
@@ -233,7 +199,7 @@ fn summand(language: Language, path: &str, ty: ShaderType) -> String {
 fn perturbation(language: Language, path: &str, ty: ShaderType) -> String {
     match ty {
         ShaderType::Bool => format!("{path} = {path} != (d > 0.5);"),
-        ShaderType::U32 | ShaderType::I32 => format!("{path} += {}(d);", type_name(language, ty)),
+        ShaderType::U32 | ShaderType::I32 => format!("{path} += {}(d);", language.type_name(ty)),
         _ => format!("{path} += d;"),
     }
 }
@@ -258,7 +224,7 @@ pub fn timing_source(language: Language, signature: &Signature, callee: &str, it
         .iter()
         .map(|(path, ty)| format!("        {}\n", perturbation(language, path, *ty)))
         .collect();
-    let result = type_name(language, signature.result);
+    let result = language.type_name(signature.result);
     let sum = sum.join(" + ");
     match language {
         Language::Wgsl => {
@@ -266,7 +232,7 @@ pub fn timing_source(language: Language, signature: &Signature, callee: &str, it
                 .parameters
                 .iter()
                 .enumerate()
-                .map(|(i, &ty)| format!("a{i}: {}", type_name(language, ty)))
+                .map(|(i, &ty)| format!("a{i}: {}", language.type_name(ty)))
                 .collect();
             let copies: String = (0..signature.parameters.len())
                 .map(|i| format!("    var v{i} = a{i};\n"))
@@ -289,13 +255,13 @@ pub fn timing_source(language: Language, signature: &Signature, callee: &str, it
                 .parameters
                 .iter()
                 .enumerate()
-                .map(|(i, &ty)| format!("{} a{i}", type_name(language, ty)))
+                .map(|(i, &ty)| format!("{} a{i}", language.type_name(ty)))
                 .collect();
             let copies: String = signature
                 .parameters
                 .iter()
                 .enumerate()
-                .map(|(i, &ty)| format!("    {} v{i} = a{i};\n", type_name(language, ty)))
+                .map(|(i, &ty)| format!("    {} v{i} = a{i};\n", language.type_name(ty)))
                 .collect();
             format!(
                 "{result} time_{callee}({}, float zero) {{

@@ -60,6 +60,12 @@ impl Language {
         self.backend().name()
     }
 
+    /// The name of `ty` in this language (a struct's own name for a struct): `vec3<f32>` in
+    /// WGSL, `vec3` in GLSL, `float3` in Slang and HLSL.
+    pub fn type_name(self, ty: ShaderType) -> &'static str {
+        self.backend().type_name(ty)
+    }
+
     /// The back end that writes, compiles and lays out this language's kernels.
     pub(crate) fn backend(self) -> &'static dyn Backend {
         match self {
