@@ -1,11 +1,11 @@
-//! A chain as the shader follows it: the f32 inputs, the Rust mirror of `reflection_chain.wgsl` and
-//! `reflection_chain.glsl` (same functions, same order, same order of operations), and that shader
-//! in either language.
+//! A chain as the shader follows it: the f32 inputs, the Rust mirror of `reflection_chain.wgsl`,
+//! `reflection_chain.glsl` and `reflection_chain.slang` (same functions, same order, same order of
+//! operations), and that shader in each of these languages.
 
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
 use ray_footprint::ray_diff::{self as rd, Derivatives3, RayDiff};
-use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR};
+use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use shader_proptest::{shader_struct, Language, Shader};
 
 /// [`ChainCamera::kind`] of a pinhole camera.
@@ -17,7 +17,8 @@ pub const CHAIN_THIN_LENS: u32 = 2;
 /// Most mirrors in a chain; a chain has one leg more.
 pub const CHAIN_MAX_BOUNCES: u32 = 4;
 
-/// The directory of `reflection_chain.glsl`, for glslang's include path.
+/// The directory of `reflection_chain.glsl` and `reflection_chain.slang`, for glslang's include
+/// path and slangc's search path.
 pub const CHAIN_SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/chains");
 
 /// The camera of a chain's primary ray, through the centre pixel of a square image
@@ -273,8 +274,9 @@ pub fn reflection_chain(
 }
 
 /// The chain shader in `language`: the WGSL ray-cone and ray-differential modules followed by
-/// `reflection_chain.wgsl`, or `reflection_chain.glsl`, which includes the GLSL modules. `Err` for
-/// Slang and HLSL: the chain shader is written in WGSL and GLSL only.
+/// `reflection_chain.wgsl`; `reflection_chain.glsl`, which includes the GLSL modules; or the Slang
+/// module `reflection_chain.slang`, which imports the Slang modules. `Err` for either HLSL
+/// compiler: the chain shader is not written in HLSL.
 pub fn chain_shader(language: Language) -> Result<Shader, String> {
     let modules = [Module::RayCone, Module::RayDiff];
     Ok(match language {
@@ -290,8 +292,11 @@ pub fn chain_shader(language: Language) -> Result<Shader, String> {
         Language::Glsl => Shader::glsl("#include \"reflection_chain.glsl\"")
             .include_dir(GLSL_INCLUDE_DIR)
             .include_dir(CHAIN_SHADER_DIR),
-        Language::Slang | Language::HlslGlslang | Language::HlslSlangc => {
-            return Err("the chain shader is written in WGSL and GLSL only".into())
+        Language::Slang => Shader::slang("import reflection_chain;")
+            .include_dir(SLANG_INCLUDE_DIR)
+            .include_dir(CHAIN_SHADER_DIR),
+        Language::HlslGlslang | Language::HlslSlangc => {
+            return Err("the chain shader is not written in HLSL".into())
         }
     })
 }

@@ -1,5 +1,5 @@
 //! Reflection chains: the ray cone against the crate's ray differentials along the same paths, on
-//! the CPU and, through a shader of the lab's own, in WGSL and GLSL on the device.
+//! the CPU and, through a shader of the lab's own, in WGSL, GLSL and Slang on the device.
 //!
 //! A chain is a primary ray (pinhole, orthographic or thin lens) reflected by 1 to 4 curved mirrors
 //! and followed to a plane across the last ray. The same path is followed by the cone

@@ -1,4 +1,4 @@
-//! Reflection chains in WGSL and GLSL (`ray_footprint_lab::chains`): the chain shader, which
+//! Reflection chains in WGSL, GLSL and Slang (`ray_footprint_lab::chains`): the chain shader, which
 //! follows a ray cone and a ray differential side by side with the library modules, against its
 //! Rust mirror; then the device's cone against the device's ray differentials along the same
 //! paths, within the rounding bound the CPU test (`tests/chains.rs`) uses.
@@ -65,4 +65,9 @@ fn reflection_chain_wgsl() {
 #[test]
 fn reflection_chain_glsl() {
     chains_agree(Language::Glsl);
+}
+
+#[test]
+fn reflection_chain_slang() {
+    chains_agree(Language::Slang);
 }

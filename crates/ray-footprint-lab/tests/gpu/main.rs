@@ -4,7 +4,7 @@
 //!
 //! - [`agreement`]: every shader function against its Rust mirror, in WGSL, GLSL and Slang;
 //! - [`chains`]: reflection chains followed by a ray cone and a ray differential in a shader of
-//!   the lab's own, against its Rust mirror and against each other, in WGSL and GLSL;
+//!   the lab's own, against its Rust mirror and against each other, in WGSL, GLSL and Slang;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
 //! - [`special_cases`]: every function on special values (zeros, the domain's bounds, tied
 //!   vectors), in WGSL, GLSL and Slang;
