@@ -98,7 +98,7 @@ const SHADER_BLOCKS: &[(&str, &[&[&str]])] = &[
 ];
 
 /// The renderer's shader files with a generated block, each in its language.
-const RENDERER_SHADERS: [(&str, Language); 3] = [
+const RENDERER_SHADERS: [(&str, Language); 4] = [
     (
         "crates/ray-footprint-lab/src/rt/shaders/ray_query.wgsl",
         Language::Wgsl,
@@ -110,6 +110,10 @@ const RENDERER_SHADERS: [(&str, Language); 3] = [
     (
         "crates/ray-footprint-lab/src/rt/shaders/rt_abi.slang",
         Language::Slang,
+    ),
+    (
+        "crates/ray-footprint-lab/src/rt/shaders/rt_abi.hlsl",
+        Language::Hlsl,
     ),
 ];
 

@@ -1,5 +1,5 @@
-//! Ray tracing with the modules: acceleration structures, a ray-tracing pipeline (GLSL, with a GLSL
-//! or a Slang closest-hit shader) and, where the device has ray queries, a WGSL ray-query compute
+//! Ray tracing with the modules: acceleration structures, a ray-tracing pipeline (GLSL, with a GLSL,
+//! a Slang or an HLSL closest-hit shader) and, where the device has ray queries, a WGSL ray-query compute
 //! shader, on a shader-proptest device with the validation layer on.
 //!
 //! A [`Renderer`] uploads a [`Scene`] built in code (a large textured ground plane, a mirror sphere,
@@ -24,15 +24,22 @@
 //!   modules; the same bindings, push constants and payload, declared in Slang, in place of the
 //!   GLSL closest hit in the recording pipeline with the GLSL ray generation and miss
 //!   ([`Renderer::with_closest_hit`] and [`ClosestHit::Slang`]);
+//! - HLSL (`shaders/closest_hit.hlsl`, compiled with slangc reading HLSL, with the library's HLSL
+//!   directory on the include path; glslang's HLSL front end has no ray-tracing stages): the same
+//!   recording closest hit, `#include`-ing `ray_cone.hlsl`, `ray_diff.hlsl` and `wireframe.hlsl`
+//!   and shading with `rt_shading.hlsl`, the HLSL twin of `rt_shading.glsl` (its functions that a
+//!   closest hit uses, in the same order); the same bindings, push constants and payload, declared
+//!   with `[[vk::binding]]` and `[[vk::push_constant]]`, the combined image samplers as slangc's
+//!   `Sampler2D` (HLSL has no such type) ([`ClosestHit::Hlsl`]);
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
 //!   with a ray query over the same acceleration structures and measuring the same values with
 //!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.
 //!
-//! All three record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so
+//! All four record, per pixel, the primary hit and what was measured there ([`RtPixelRecord`]), so
 //! the Rust mirror can recompute every value from the same hit data. The structs and constants the
 //! shaders share with Rust are declared once, in [`abi`] (the structs, the flags, the shading
 //! constants), [`Mode`] (the modes' discriminants) and the scene (the materials and the buffers'
-//! layout), and written into `rt_abi.glsl`, `rt_abi.slang` and `ray_query.wgsl` by
+//! layout), and written into `rt_abi.glsl`, `rt_abi.slang`, `rt_abi.hlsl` and `ray_query.wgsl` by
 //! `cargo xtask codegen`.
 //!
 //! ```no_run

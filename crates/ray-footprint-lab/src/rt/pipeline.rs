@@ -1,12 +1,13 @@
 //! Shaders and pipelines: the ray-tracing pipelines with their shader binding tables (the
-//! recording shaders, with a GLSL or a Slang closest hit, and the colour-only shaders), and the
-//! WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
+//! recording shaders, with a GLSL, a Slang or an HLSL closest hit, and the colour-only shaders),
+//! and the WGSL ray-query compute pipeline, over one descriptor-set and pipeline layout.
 
 use super::abi::{RtPushConstants, MAX_DEPTH};
 use ash::vk;
-use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
+use ray_footprint::shaders::{wgsl_prelude, Module, GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use shader_proptest::compile::{
-    base_capabilities, compile_glsl as glslang, compile_slang as slangc, compile_wgsl as naga, Stage, Target,
+    base_capabilities, compile_glsl as glslang, compile_hlsl_with_slangc as hlsl_slangc,
+    compile_slang as slangc, compile_wgsl as naga, Stage, Target,
 };
 use shader_proptest::{vulkan, Buffer, Error, Feature, Object, Owner};
 use std::path::Path;
@@ -93,14 +94,23 @@ pub enum ClosestHit {
     Glsl,
     /// `closest_hit.slang`, compiled by slangc, `import`-ing the Slang modules.
     Slang,
+    /// `closest_hit.hlsl`, compiled by slangc reading HLSL, `#include`-ing the HLSL modules
+    /// (glslang's HLSL front end, which the shader-proptest harness also uses for HLSL, parses no
+    /// ray-tracing stage: `RaytracingAccelerationStructure`, `TraceRay` and the closest hit's
+    /// `BuiltInTriangleIntersectionAttributes` are unknown to it).
+    Hlsl,
 }
 
 impl ClosestHit {
+    /// Every closest-hit shader.
+    pub const ALL: [ClosestHit; 3] = [ClosestHit::Glsl, ClosestHit::Slang, ClosestHit::Hlsl];
+
     /// The closest-hit shader's file in [`SHADER_DIR`].
     fn file(self) -> &'static str {
         match self {
             ClosestHit::Glsl => "closest_hit.rchit",
             ClosestHit::Slang => "closest_hit.slang",
+            ClosestHit::Hlsl => "closest_hit.hlsl",
         }
     }
 }
@@ -288,19 +298,27 @@ pub(super) fn ray_query(owner: &mut Owner<'_>, layout: vk::PipelineLayout) -> Re
     owner.compute_pipeline(&compile_wgsl(&ray_query_source())?, layout)
 }
 
-/// Compiles a ray-tracing stage by its file's language: Slang (`.slang`) with slangc, GLSL with
-/// glslang. Only GLSL stages take `defines`.
+/// A compiler of slangc's: [`slangc`] (Slang) or [`hlsl_slangc`] (HLSL).
+type SlangcCompiler = fn(&str, Stage, Target, &[&Path]) -> Result<Vec<u32>, shader_proptest::CompileError>;
+
+/// Compiles a ray-tracing stage by its file's language: Slang (`.slang`) and HLSL (`.hlsl`) with
+/// slangc, GLSL with glslang. Only GLSL stages take `defines`.
 fn compile_stage(path: &Path, stage: Stage, defines: &[(&str, String)]) -> Result<Vec<u32>, Error> {
-    if path.extension().is_some_and(|extension| extension == "slang") {
-        if !defines.is_empty() {
-            return Err(Error::Compile(format!(
-                "{}: defines are for GLSL stages",
-                path.display()
-            )));
-        }
-        return compile_slang(path, stage);
+    let slangc_input: Option<(&str, SlangcCompiler)> = match path.extension().and_then(|e| e.to_str()) {
+        Some("slang") => Some((SLANG_INCLUDE_DIR, slangc)),
+        Some("hlsl") => Some((HLSL_INCLUDE_DIR, hlsl_slangc)),
+        _ => None,
+    };
+    let Some((library_dir, compiler)) = slangc_input else {
+        return compile_glsl(path, stage, defines);
+    };
+    if !defines.is_empty() {
+        return Err(Error::Compile(format!(
+            "{}: defines are for GLSL stages",
+            path.display()
+        )));
     }
-    compile_glsl(path, stage, defines)
+    compile_with_slangc(path, stage, library_dir, compiler)
 }
 
 /// Compiles a ray-tracing stage with glslang for Vulkan 1.2 (SPIR-V 1.5), with the library's
@@ -333,13 +351,19 @@ fn with_defines(source: &str, defines: &[(&str, String)]) -> String {
     lines.join("\n")
 }
 
-/// Compiles a Slang ray-tracing stage with slangc for Vulkan 1.2 (SPIR-V 1.5), with the library's
-/// Slang directory and [`SHADER_DIR`] on the search path.
-fn compile_slang(path: &Path, stage: Stage) -> Result<Vec<u32>, Error> {
+/// Compiles a Slang or an HLSL ray-tracing stage with slangc's `compiler` for Vulkan 1.2 (SPIR-V
+/// 1.5), with the library's directory of its language (`library_dir`) and [`SHADER_DIR`] on the
+/// search path of `import` and `#include`.
+fn compile_with_slangc(
+    path: &Path,
+    stage: Stage,
+    library_dir: &str,
+    compiler: SlangcCompiler,
+) -> Result<Vec<u32>, Error> {
     let source =
         std::fs::read_to_string(path).map_err(|e| Error::Compile(format!("{}: {e}", path.display())))?;
-    let search_dirs = [Path::new(SLANG_INCLUDE_DIR), Path::new(SHADER_DIR)];
-    slangc(&source, stage, Target::Vulkan1_2, &search_dirs)
+    let search_dirs = [Path::new(library_dir), Path::new(SHADER_DIR)];
+    compiler(&source, stage, Target::Vulkan1_2, &search_dirs)
         .map_err(|error| Error::Compile(format!("{}:\n{error}", path.display())))
 }
 
@@ -352,4 +376,110 @@ fn compile_wgsl(source: &str) -> Result<Vec<u32>, Error> {
         | naga::valid::Capabilities::IMMEDIATES;
     naga(source, "ray_query.wgsl", capabilities, Target::Vulkan1_2)
         .map_err(|error| Error::Compile(error.to_string()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Write;
+    use std::process::{Command, Stdio};
+
+    /// `OpEntryPoint` and the execution model `ClosestHitKHR` (SPIR-V specification, 3.6 and 3.52).
+    const OP_ENTRY_POINT: u32 = 15;
+    const CLOSEST_HIT_KHR: u32 = 5316;
+    /// The version word of a SPIR-V 1.5 module.
+    const SPIRV_1_5: u32 = 0x0001_0500;
+
+    /// Every closest-hit shader compiles to one SPIR-V 1.5 closest-hit entry point that `spirv-val`
+    /// accepts for Vulkan 1.2: what can be checked of them without a ray-tracing device.
+    #[test]
+    fn every_closest_hit_compiles_to_valid_spirv() {
+        for closest_hit in ClosestHit::ALL {
+            let path = Path::new(SHADER_DIR).join(closest_hit.file());
+            let words = compile_stage(&path, Stage::ClosestHit, &[]).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(words[1], SPIRV_1_5, "{closest_hit:?}: the SPIR-V version");
+            assert_eq!(
+                execution_models(&words),
+                [CLOSEST_HIT_KHR],
+                "{closest_hit:?}: the entry points' execution models"
+            );
+            validate(&words).unwrap_or_else(|log| panic!("{closest_hit:?}: spirv-val: {log}"));
+        }
+    }
+
+    /// The execution model of each `OpEntryPoint` in `words`.
+    fn execution_models(words: &[u32]) -> Vec<u32> {
+        let mut models = Vec::new();
+        let mut at = 5; // after the header
+        while at < words.len() {
+            if words[at] & 0xffff == OP_ENTRY_POINT {
+                models.push(words[at + 1]);
+            }
+            at += ((words[at] >> 16) as usize).max(1);
+        }
+        models
+    }
+
+    /// Runs `spirv-val --target-env vulkan1.2` on `words`: its log where it rejects them.
+    fn validate(words: &[u32]) -> Result<(), String> {
+        let mut child = Command::new("spirv-val")
+            .args(["--target-env", "vulkan1.2", "-"])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .map_err(|e| format!("cannot run spirv-val: {e}"))?;
+        let bytes: Vec<u8> = words.iter().flat_map(|word| word.to_le_bytes()).collect();
+        child
+            .stdin
+            .take()
+            .expect("a piped stdin")
+            .write_all(&bytes)
+            .map_err(|e| format!("writing to spirv-val: {e}"))?;
+        let output = child.wait_with_output().map_err(|e| format!("spirv-val: {e}"))?;
+        if output.status.success() {
+            return Ok(());
+        }
+        Err(format!(
+            "{}{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        ))
+    }
+
+    /// The functions of `rt_shading.glsl` that only the ray generation and the miss shader call,
+    /// which `rt_shading.hlsl` (for a closest hit) leaves out.
+    const GLSL_ONLY: [&str; 6] = [
+        "rt_primary_direction",
+        "rt_display",
+        "rt_primary_cone",
+        "rt_eye_diff",
+        "rt_miss_record",
+        "rt_sky",
+    ];
+
+    /// `rt_shading.hlsl` declares the structs and functions of `rt_shading.glsl` in the same order,
+    /// less [`GLSL_ONLY`], so that the two can be read side by side.
+    #[test]
+    fn hlsl_shading_follows_the_glsl_shading() {
+        let glsl = declared_names(include_str!("shaders/rt_shading.glsl"));
+        let expected: Vec<&str> = glsl
+            .into_iter()
+            .filter(|name| !GLSL_ONLY.contains(name))
+            .collect();
+        assert_eq!(declared_names(include_str!("shaders/rt_shading.hlsl")), expected);
+    }
+
+    /// The names of the structs and functions declared at the top level of `source`: lines that
+    /// start with a letter, `struct Name {` or a function's `type name(`.
+    fn declared_names(source: &str) -> Vec<&str> {
+        source
+            .lines()
+            .filter(|line| line.starts_with(|c: char| c.is_ascii_alphabetic()))
+            .filter_map(|line| match line.strip_prefix("struct ") {
+                Some(rest) => rest.split_whitespace().next(),
+                None => line.split('(').next()?.split_whitespace().last(),
+            })
+            .collect()
+    }
 }

@@ -1,8 +1,8 @@
 //! Ray tracing with real acceleration structures.
 //!
-//! The GLSL and the Slang closest-hit shaders and the WGSL ray-query shader record, per pixel, the primary hit
-//! (distance, normal, barycentrics, instance, triangle), every ray-cone value they computed
-//! there, the ray-differential, re-intersection and wireframe values, the material's values (a
+//! The GLSL, the Slang and the HLSL closest-hit shaders and the WGSL ray-query shader record, per
+//! pixel, the primary hit (distance, normal, barycentrics, instance, triangle), every ray-cone
+//! value they computed there, the ray-differential, re-intersection and wireframe values, the material's values (a
 //! mirror's roughness spread; on glass the index ratio, the normal's spread and the refracted cone)
 //! and the anisotropic cone gradients, on the gallery and on the materials scene. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
@@ -16,7 +16,7 @@ use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::layout::{self, GlslPacking, StructLayout};
 use ray_footprint::ray_cone::{self as rc, RayCone, RefractedRayCone, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, RayDiff};
-use ray_footprint::shaders::{GLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
+use ray_footprint::shaders::{GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_cases as suite;
 use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, triangle_curvature_error};
@@ -28,7 +28,7 @@ use ray_footprint_lab::rt::{
     SHADER_DIR,
 };
 use shader_proptest::tolerance::{dot_error, log2_error, ulps};
-use shader_proptest::{FunctionCheck, Gpu, Value};
+use shader_proptest::{FunctionCheck, Gpu, Language, Shader, Value};
 use std::path::Path;
 
 /// The test image: small, so the test is quick on lavapipe, with every mesh in view.
@@ -50,7 +50,8 @@ pub(crate) fn gpu() -> Gpu {
 }
 
 /// The renderer's shared structs have one layout in Rust, WGSL (naga), std430 and scalar in GLSL
-/// (glslang) and in Slang (slangc), field by field; the uniform block's struct also under std140.
+/// (glslang) and in Slang (slangc), and in HLSL's structured buffers (std430, glslang and slangc),
+/// field by field; the uniform block's struct also under std140.
 #[test]
 fn renderer_structs_have_one_layout() {
     for rust in abi::layouts() {
@@ -64,8 +65,8 @@ fn renderer_structs_have_one_layout() {
 }
 
 /// Compares `rust` with its WGSL declaration in the ray-query source, its GLSL declaration in
-/// `rt_abi.glsl` and its Slang declaration in `rt_abi.slang` under each of `packings`, and prints
-/// the table.
+/// `rt_abi.glsl` and its Slang declaration in `rt_abi.slang` under each of `packings`, and its HLSL
+/// declaration in `rt_abi.hlsl` under std430 with each HLSL compiler, and prints the table.
 fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
     let include_dirs = [Path::new(GLSL_INCLUDE_DIR), Path::new(SHADER_DIR)];
     let search_dirs = [Path::new(SLANG_INCLUDE_DIR), Path::new(SHADER_DIR)];
@@ -78,8 +79,18 @@ fn compare_layouts(rust: &StructLayout, packings: &[GlslPacking]) {
         let layout = layout::slang_layout("import rt_abi;", &rust.name, packing, &search_dirs);
         (format!("Slang {}", packing.qualifier()), layout)
     });
+    let hlsl = [Language::HlslGlslang, Language::HlslSlangc].map(|language| {
+        let shader = Shader::new(language, "#include \"rt_abi.hlsl\"")
+            .include_dir(HLSL_INCLUDE_DIR)
+            .include_dir(SHADER_DIR);
+        (
+            format!("{} std430", language.name()),
+            shader.struct_layout(&rust.name),
+        )
+    });
     let shaders: Vec<_> = glsl
         .chain(slang)
+        .chain(hlsl)
         .map(|(label, layout)| (label, layout.unwrap_or_else(|e| panic!("{e}"))))
         .collect();
     let mut columns = vec![("WGSL", &wgsl)];
@@ -106,6 +117,16 @@ fn slang_closest_hit_agrees_with_the_mirror() {
     agree(
         "Slang closest hit",
         ClosestHit::Slang,
+        |renderer, push, uniforms| renderer.render(push, uniforms),
+    );
+}
+
+/// The HLSL closest-hit shader's values agree with the Rust mirror at every hit pixel.
+#[test]
+fn hlsl_closest_hit_agrees_with_the_mirror() {
+    agree(
+        "HLSL closest hit",
+        ClosestHit::Hlsl,
         |renderer, push, uniforms| renderer.render(push, uniforms),
     );
 }
@@ -177,20 +198,33 @@ fn colour_pipelines_render_the_recorded_colours() {
 }
 
 /// The recording pipeline with the Slang closest-hit shader renders the pixels of the one with the
-/// GLSL closest-hit shader (to one [`ROUNDING_STEP`]), in every mode and [`colour_views`] view: the
-/// two shade alike, the mirrors' reflected and the glass' refracted cones and differentials
-/// included.
+/// GLSL closest-hit shader ([`closest_hit_renders_the_glsl_colours`]).
 #[test]
 fn slang_closest_hit_renders_the_glsl_colours() {
+    closest_hit_renders_the_glsl_colours(ClosestHit::Slang, "Slang closest hit");
+}
+
+/// The recording pipeline with the HLSL closest-hit shader renders the pixels of the one with the
+/// GLSL closest-hit shader ([`closest_hit_renders_the_glsl_colours`]).
+#[test]
+fn hlsl_closest_hit_renders_the_glsl_colours() {
+    closest_hit_renders_the_glsl_colours(ClosestHit::Hlsl, "HLSL closest hit");
+}
+
+/// The recording pipeline with `closest_hit` (labelled `label`) renders the pixels of the one
+/// with the GLSL closest-hit shader (to one [`ROUNDING_STEP`]), in every mode and
+/// [`colour_views`] view: the two shade alike, the mirrors' reflected and the glass' refracted
+/// cones and differentials included.
+fn closest_hit_renders_the_glsl_colours(closest_hit: ClosestHit, label: &str) {
     let gpu = gpu();
     println!("device: {}", gpu.name());
     for (scene, views) in colour_views() {
-        let slang = Renderer::with_closest_hit(&gpu, scene.clone(), ClosestHit::Slang)
-            .unwrap_or_else(|e| panic!("{e}"));
+        let other =
+            Renderer::with_closest_hit(&gpu, scene.clone(), closest_hit).unwrap_or_else(|e| panic!("{e}"));
         let glsl = Renderer::new(&gpu, scene).unwrap_or_else(|e| panic!("{e}"));
         for mode in Mode::ALL {
-            compare_colours(&glsl, &views, mode, "Slang closest hit", |push, uniforms| {
-                slang.render(push, uniforms)
+            compare_colours(&glsl, &views, mode, label, |push, uniforms| {
+                other.render(push, uniforms)
             });
         }
     }

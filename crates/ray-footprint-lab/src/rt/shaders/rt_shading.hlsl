@@ -1,0 +1,492 @@
+// ray-footprint ray-tracing renderer: the HLSL twin of rt_shading.glsl, compiled inside
+// closest_hit.hlsl after the HLSL modules ray_cone.hlsl, ray_diff.hlsl and wireframe.hlsl, so every
+// rf_ call is a call of the HLSL modules. It has the structs and functions of rt_shading.glsl that
+// a closest hit uses, in the same order with the same expressions; those only the ray generation
+// and the miss shader call stay GLSL only (the list is GLSL_ONLY in pipeline.rs' tests).
+//
+// It declares no resources and no constants: it reads the push constants `pc`, the buffers
+// `rt_vertices`, `rt_indices`, `rt_meshes`, the uniforms `rt_frame`, the texture reads
+// rt_checker_lod, rt_checker_grad and rt_level_colour_lod that the including file declares, and
+// the RT_ constants of rt_abi.hlsl. Where GLSL builds a struct with a constructor, HLSL fills it
+// from an initializer list; where GLSL picks one of two structs with ?:, HLSL (whose ?: takes
+// scalars, vectors and matrices only) uses if and else, calling only what GLSL's ?: would call.
+
+#ifndef RT_SHADING_HLSL
+#define RT_SHADING_HLSL
+
+// The recording shaders' ray payload: the library's cone payload and the ray's differential
+// (Igehy), which the ray-differential modes carry through the mirror. A primary ray carries the
+// eye-ray differential (rt_eye_diff).
+struct RtPayload {
+    RfHitPayload hit;
+    RfRayDiff diff;
+};
+
+// A triangle's vertices.
+struct RtTriangle {
+    float3 p[3];
+    float3 n[3];
+    float2 uv[3];
+};
+
+// Triangle `primitive` of mesh `mesh`, from the vertex, index and mesh-table buffers.
+RtTriangle rt_triangle(uint mesh, uint primitive) {
+    uint first_index = rt_meshes[RT_MESH_TABLE_WORDS * mesh] + 3u * primitive;
+    uint first_vertex = rt_meshes[RT_MESH_TABLE_WORDS * mesh + 1u];
+    RtTriangle tri;
+    for (uint k = 0u; k < 3u; k++) {
+        uint f = (first_vertex + rt_indices[first_index + k]) * RT_VERTEX_FLOATS;
+        tri.p[k] = float3(rt_vertices[f], rt_vertices[f + 1u], rt_vertices[f + 2u]);
+        tri.n[k] = float3(rt_vertices[f + 4u], rt_vertices[f + 5u], rt_vertices[f + 6u]);
+        tri.uv[k] = float2(rt_vertices[f + 3u], rt_vertices[f + 7u]);
+    }
+    return tri;
+}
+
+// Barycentric weights (1 - u - v, u, v).
+float3 rt_weights(float2 barycentrics) {
+    return float3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
+}
+
+// Diffuse lighting of a surface with unit normal `normal`: an ambient part and the light's.
+float rt_light(float3 normal) {
+    return 0.35 + 0.65 * max(dot(normal, normalize(RT_LIGHT)), 0.0);
+}
+
+// A mesh's material: RT_MATERIAL_* and its parameter (a mirror's roughness, glass's index of
+// refraction).
+struct RtMaterial {
+    uint kind;
+    float parameter;
+};
+
+// The hit a closest-hit shader was called for, as the shared functions take it.
+struct RtHit {
+    // The hit mesh (instance custom index) and its material.
+    uint mesh;
+    RtMaterial material;
+    // The hit triangle: its index in the mesh and its vertices.
+    uint primitive;
+    RtTriangle tri;
+    // Hit barycentrics (u, v) of vertices 1 and 2, and the weights (1 - u - v, u, v).
+    float2 barycentrics;
+    float3 weights;
+    // Unit shading normal interpolated from the stored vertex normals (not turned to the ray).
+    float3 normal;
+    // The ray: origin, unit direction, hit distance.
+    float3 origin;
+    float3 direction;
+    float t;
+    // The hit instance's world-to-object matrix.
+    float4x4 world_to_object;
+    // The pixel the ray belongs to, and its bounce depth (0: the primary ray).
+    uint2 pixel;
+    uint depth;
+};
+
+// The hit of the ray from `origin` along the unit `direction` at distance t on triangle `primitive`
+// of `mesh`, at `barycentrics`, for `pixel`'s ray at bounce `depth`.
+RtHit rt_hit(uint mesh, uint primitive, float2 barycentrics, float3 origin, float3 direction, float t,
+        float4x4 world_to_object, uint2 pixel, uint depth) {
+    RtTriangle tri = rt_triangle(mesh, primitive);
+    float3 w = rt_weights(barycentrics);
+    float3 normal = normalize(w.x * tri.n[0] + w.y * tri.n[1] + w.z * tri.n[2]);
+    uint entry = RT_MESH_TABLE_WORDS * mesh;
+    RtMaterial material = { rt_meshes[entry + 2u], asfloat(rt_meshes[entry + 3u]) };
+    RtHit hit = { mesh, material, primitive, tri, barycentrics, w, normal, origin, direction, t, world_to_object,
+        pixel, depth };
+    return hit;
+}
+
+// The texture coordinates of the hit.
+float2 rt_uv(RtHit hit) {
+    return hit.weights.x * hit.tri.uv[0] + hit.weights.y * hit.tri.uv[1] + hit.weights.z * hit.tri.uv[2];
+}
+
+// The directions of the rays through the right and the lower neighbours of `pixel` (offset alike).
+RfNeighbourDirections rt_neighbours(uint2 pixel) {
+    return rf_pixel_directions(float2(pixel) + pc.pixel_offset, float2(pc.width, pc.height), rt_frame.view_inv,
+        rt_frame.proj_inv);
+}
+
+// The ray-cone texture LOD of the hit reached by `cone` (RTG Eq. 34).
+float rt_cone_lod(RtHit hit, RfRayCone cone) {
+    RtTriangle tri = hit.tri;
+    float base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    return rf_texture_lod(base_lod, rf_width_at(cone, hit.t), float2(pc.texture_size, pc.texture_size), hit.normal,
+        hit.direction);
+}
+
+// The ray-cone footprint of the hit reached by `cone`, in world units.
+float rt_footprint(RtHit hit, RfRayCone cone) {
+    return rf_world_footprint(cone, hit.t, hit.normal, hit.direction);
+}
+
+// The isotropic textureGrad gradient of the hit reached by `cone`: its footprint in UV units times
+// tex_grad_scale.
+float rt_cone_gradient(RtHit hit, RfRayCone cone) {
+    RtTriangle tri = hit.tri;
+    float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    return rf_texture_gradient(rt_footprint(hit, cone) * density, pc.cone.tex_grad_scale);
+}
+
+// The hit triangle's curvature from its vertex normals (JCGT 2021).
+float rt_curvature(RtHit hit) {
+    RtTriangle tri = hit.tri;
+    return rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+}
+
+// The spread angle a reflection off the hit reached by `cone` gets from the curvature (JCGT 2021).
+float rt_curvature_spread(RtHit hit, RfRayCone cone) {
+    return rf_curvature_spread_angle(rt_curvature(hit), rf_width_at(cone, hit.t), hit.normal, hit.direction);
+}
+
+// The spread angle a mirror's roughness adds to a reflection, each way (JCGT 2021's mapping): 0 on
+// a smooth mirror and on other materials.
+float rt_roughness_spread(RtHit hit) {
+    return hit.material.kind == RT_MATERIAL_MIRROR ? rf_roughness_spread_angle(hit.material.parameter) : 0.0;
+}
+
+// Whether `mode` widens reflected (and refracted) cones by the surface's curvature.
+bool rt_follows_curvature(uint mode) {
+    return mode == RT_MODE_CONE_CURVATURE || mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_CONE_ROUGHNESS;
+}
+
+// The spread angle a reflection off the hit adds to `cone` in `mode`: the curvature's (JCGT 2021)
+// in the modes that follow the curvature, and in RT_MODE_CONE_ROUGHNESS twice the roughness spread
+// on top (one for each way the lobe spreads the reflected direction); 0 in the others (a planar
+// mirror).
+float rt_reflection_spread(uint mode, RtHit hit, RfRayCone cone) {
+    if (!rt_follows_curvature(mode)) {
+        return 0.0;
+    }
+    float spread = rt_curvature_spread(hit, cone);
+    return mode == RT_MODE_CONE_ROUGHNESS ? spread + 2.0 * rt_roughness_spread(hit) : spread;
+}
+
+// The index ratio n_incident / n_transmitted at a glass hit: 1 / index entering (the ray meets the
+// side the stored normal points to), the index leaving.
+float rt_relative_index(RtHit hit) {
+    float index = hit.material.parameter;
+    return dot(hit.normal, hit.direction) < 0.0 ? 1.0 / index : index;
+}
+
+// The normal's turn across the footprint of `cone` at the hit, as rf_refract_ray_cone takes it:
+// the curvature from the stored normals times the slanted footprint |width| / |n.d|, positive
+// where the surface is convex on the side the stored normal points to (the curvature's sign, as
+// rf_curvature_spread_angle takes it with the same normal).
+float rt_normal_spread(RtHit hit, RfRayCone cone) {
+    return rt_curvature(hit) * rt_footprint(hit, cone);
+}
+
+// The refraction of `cone` at the glass hit with index ratio eta (RTG II ch. 10, whole angles):
+// the cone propagated to the hit, refracted at the stored normal with rt_normal_spread; on total
+// internal reflection the reflected cone and the flag.
+RfRefractedRayCone rt_refract_cone(RtHit hit, RfRayCone cone, float eta) {
+    return rf_refract_ray_cone(rf_propagate(cone, hit.t, 0.0), hit.normal, hit.direction, rt_normal_spread(hit, cone),
+        eta);
+}
+
+// The cone of the ray a glass hit passes on in `mode`: refracted in RT_MODE_CONE_REFRACTION, and in
+// the others carried on as if the glass were not there.
+RfRayCone rt_glass_cone(uint mode, RtHit hit, RfRayCone cone, float eta) {
+    if (mode == RT_MODE_CONE_REFRACTION) {
+        return rt_refract_cone(hit, cone, eta).cone;
+    }
+    return rf_propagate(cone, hit.t, 0.0);
+}
+
+// The anisotropic textureGrad gradients of the footprint of `cone` at the hit (JCGT 2021, the
+// elliptical footprint's axes in UV units).
+RfDerivatives2 rt_cone_uv_gradients(RtHit hit, RfRayCone cone) {
+    RtTriangle tri = hit.tri;
+    return rf_anisotropic_cone_gradients(rf_width_at(cone, hit.t), hit.direction, tri.p[0], tri.p[1], tri.p[2],
+        tri.uv[0], tri.uv[1], tri.uv[2]);
+}
+
+// The barycentric derivatives (RTG Eq. 12-19) of the hit reached by a ray carrying `diff`.
+RfDerivatives2 rt_barycentric_derivatives(RtHit hit, RfRayDiff diff) {
+    return rf_barycentric_derivatives(diff, hit.direction, hit.t, hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
+}
+
+// UV derivatives (RTG Eq. 21) from the hit's barycentric derivatives.
+RfDerivatives2 rt_uv_derivatives(RtHit hit, RfDerivatives2 barycentric) {
+    return rf_texture_derivatives(barycentric, hit.tri.uv[0], hit.tri.uv[1], hit.tri.uv[2]);
+}
+
+// The isotropic LOD (RTG Eq. 1-2) of UV gradients scaled to texels (the size is a power of two).
+float rt_texel_lod(RfDerivatives2 uv) {
+    RfDerivatives2 texels = { uv.dx * pc.texture_size, uv.dy * pc.texture_size };
+    return rf_lod_isotropic(texels);
+}
+
+// The neighbour pixels' rays (`next`) re-intersected with the hit triangle's plane: signed
+// barycentric offsets (w, u, v).
+RfDerivatives3 rt_offsets(RtHit hit, RfNeighbourDirections next) {
+    RtTriangle tri = hit.tri;
+    return rf_barycentric_offsets(hit.world_to_object, hit.origin, tri.p[0], tri.p[1], tri.p[2], next.right,
+        next.below, hit.weights);
+}
+
+// The UV gradients of the re-intersection offsets.
+RfDerivatives2 rt_offset_uv(RtHit hit, RfDerivatives3 offsets) {
+    return rf_uv_gradients_from_offsets(offsets, hit.tri.uv[0], hit.tri.uv[1], hit.tri.uv[2]);
+}
+
+// The per-pixel barycentric deltas of the neighbour pixels' rays (`next`) re-intersected.
+float3 rt_deltas(RtHit hit, RfNeighbourDirections next) {
+    RtTriangle tri = hit.tri;
+    return rf_barycentric_deltas(hit.world_to_object, hit.origin, tri.p[0], tri.p[1], tri.p[2], next.right,
+        next.below, hit.weights);
+}
+
+// The closed-form barycentric deltas of the footprint of `cone` at the hit.
+float3 rt_cone_deltas(RtHit hit, RfRayCone cone) {
+    return rf_cone_barycentric_deltas(rt_footprint(hit, cone), hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
+}
+
+// The wireframe coverage of the frame's settings at barycentrics (w, u, v) with these deltas.
+float rt_coverage(float3 weights, float3 deltas) {
+    return rf_process_wireframe(rf_unpack_wireframe_settings(rt_frame.wireframe.settings), weights, deltas);
+}
+
+// The wireframe coverage of the hit: by re-intersection on a primary hit, from the closed-form cone
+// deltas on a secondary hit (seen in the mirror), which has no pixel neighbours to re-intersect.
+float rt_wireframe_coverage(RtHit hit, RfRayCone cone) {
+    float3 deltas = hit.depth == 0u ? rt_deltas(hit, rt_neighbours(hit.pixel)) : rt_cone_deltas(hit, cone);
+    return rt_coverage(hit.weights, deltas);
+}
+
+// Whether the render mode carries ray differentials through mirrors and glass.
+bool rt_carries_diff(uint mode) {
+    return mode == RT_MODE_RAY_DIFF || mode == RT_MODE_RAY_DIFF_ISOTROPIC;
+}
+
+// The differential of the ray a mirror or glass passes on at the hit (Igehy): the incoming
+// differential `diff` carried to the hit (origin derivatives from the barycentric derivatives, RTG
+// Eq. 22), its direction derivatives reflected about the interpolated normal, or on glass refracted
+// with the index ratio eta (reflected on total internal reflection); the normal's own derivatives
+// come from the vertex normals.
+RfRayDiff rt_bounced_diff(RtHit hit, RfRayDiff diff, float eta) {
+    RtTriangle tri = hit.tri;
+    RfDerivatives2 bary = rt_barycentric_derivatives(hit, diff);
+    RfDerivatives3 position = rf_secondary_origin_derivatives(bary, tri.p[0], tri.p[1], tri.p[2]);
+    RfDerivatives3 normal = rf_normal_derivatives(tri.n[0], tri.n[1], tri.n[2], hit.barycentrics, bary);
+    RfRayDiff at_hit = { position.dx, 0.0, position.dy, 0.0, diff.d_direction_dx, 0.0, diff.d_direction_dy, 0.0 };
+    if (hit.material.kind == RT_MATERIAL_GLASS) {
+        return rf_refract_ray_diff(at_hit, hit.direction, hit.normal, normal, eta).diff;
+    }
+    return rf_reflect_ray_diff(at_hit, hit.direction, hit.normal, normal);
+}
+
+// textureGrad with UV gradients scaled by tex_grad_scale.
+float3 rt_sample_grad(float2 uv, RfDerivatives2 uv_gradients) {
+    RfDerivatives2 grad = rf_sample_grad_gradients(uv_gradients, pc.cone.tex_grad_scale);
+    return rt_checker_grad(uv, grad.dx, grad.dy).rgb;
+}
+
+// The texture colour of the hit as `mode` samples it, reached by a ray carrying `cone` and `diff`
+// (each read only by the modes that use it). The ray-differential modes sample with the UV
+// derivatives of the carried differential, on primary and secondary hits alike; the
+// re-intersection needs a primary hit: on secondary hits it samples, like the cone modes and the
+// wireframe's base, at the ray-cone LOD.
+float3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    float2 uv = rt_uv(hit);
+    bool reintersection = mode == RT_MODE_BARY_GRADIENTS;
+    switch (reintersection && hit.depth != 0u ? RT_MODE_CONE : mode) {
+    case RT_MODE_MIP0:
+        return rt_checker_lod(uv, 0.0).rgb;
+    case RT_MODE_TEX_GRAD_SCALE: {
+        float gradient = rt_cone_gradient(hit, cone);
+        return rt_checker_grad(uv, float2(gradient, 0.0), float2(0.0, gradient)).rgb;
+    }
+    case RT_MODE_MIP_LEVELS:
+        return rt_level_colour_lod(uv, rt_cone_lod(hit, cone)).rgb;
+    case RT_MODE_RAY_DIFF:
+        return rt_sample_grad(uv, rt_uv_derivatives(hit, rt_barycentric_derivatives(hit, diff)));
+    case RT_MODE_RAY_DIFF_ISOTROPIC:
+        return rt_checker_lod(uv, rt_texel_lod(rt_uv_derivatives(hit, rt_barycentric_derivatives(hit,
+            diff)))).rgb;
+    case RT_MODE_BARY_GRADIENTS:
+        return rt_sample_grad(uv, rt_offset_uv(hit, rt_offsets(hit, rt_neighbours(hit.pixel))));
+    case RT_MODE_CONE_ANISOTROPIC:
+        return rt_sample_grad(uv, rt_cone_uv_gradients(hit, cone));
+    default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME, RT_MODE_CONE_REFRACTION,
+             // RT_MODE_CONE_ROUGHNESS
+        return rt_checker_lod(uv, rt_cone_lod(hit, cone)).rgb;
+    }
+}
+
+// The colour of a surface the ray ends on, lit, under the wireframe in RT_MODE_WIREFRAME; black on
+// glass, which a ray reaches here only past the bounce limit (its light is lost).
+float3 rt_surface_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    if (hit.material.kind == RT_MATERIAL_GLASS) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    float3 colour = rt_light(hit.normal) * rt_texture_colour(mode, hit, cone, diff);
+    if (mode == RT_MODE_WIREFRAME) {
+        colour = lerp(colour, rt_frame.wireframe.colour.rgb, rt_wireframe_coverage(hit, cone));
+    }
+    return colour;
+}
+
+// Whether the ray goes on from the hit: a mirror reflects primary rays (what it reflects is shaded as
+// a textured surface), glass refracts every ray up to RT_MAX_DEPTH bounces.
+bool rt_passes_on(RtHit hit) {
+    if (hit.material.kind == RT_MATERIAL_GLASS) {
+        return hit.depth < RT_MAX_DEPTH;
+    }
+    return hit.material.kind == RT_MATERIAL_MIRROR && hit.depth == 0u;
+}
+
+// The ray a hit passes on: where it starts and where it goes, the share of the light it brings
+// back, its cone and its differential.
+struct RtBounce {
+    float3 origin;
+    float3 direction;
+    float weight;
+    RfRayCone cone;
+    RfRayDiff diff;
+};
+
+// A hash of four words to four (Jarzynski, Olano, "Hash Functions for GPU Rendering", JCGT 9(3),
+// 2020: pcg4d): a multiply-add per word, then two rounds of mixing each word into the next around an
+// xor-shift.
+uint4 rt_hash(uint4 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    v ^= v >> 16u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    return v;
+}
+
+// Two numbers in [0, 1) for the ray of `pixel` at the frame's pixel offset: different for every
+// pixel and sub-pixel sample, the same on every run.
+float2 rt_random(uint2 pixel) {
+    uint4 words = rt_hash(uint4(pixel, asuint(pc.pixel_offset)));
+    return float2(words.xy >> 8u) * (1.0 / 16777216.0);
+}
+
+// A microfacet normal around the unit `normal` drawn from the GGX distribution of width `alpha`
+// (Walter, Marschner, Li, Torrance 2007, Eq. 35-36: tan(theta) = alpha sqrt(u / (1 - u)),
+// phi = 2 pi v), in the tangent frame of rf_orthonormal_tangent.
+float3 rt_ggx_normal(float3 normal, float alpha, float2 random) {
+    float tan_theta = alpha * sqrt(random.x / (1.0 - random.x));
+    float cos_theta = 1.0 / sqrt(1.0 + tan_theta * tan_theta);
+    float sin_theta = tan_theta * cos_theta;
+    float phi = 6.28318530718 * random.y;
+    float3 tangent = rf_orthonormal_tangent(normal);
+    float3 bitangent = cross(normal, tangent);
+    return normalize(sin_theta * (cos(phi) * tangent + sin(phi) * bitangent) + cos_theta * normal);
+}
+
+// The direction a mirror reflects the hit's ray: about the shading normal; under
+// RT_FLAG_GLOSSY_LOBE about a normal drawn from the GGX distribution of the mirror's roughness
+// (alpha = roughness^2), falling back to the shading normal where that reflection would leave below
+// the surface.
+float3 rt_mirror_direction(RtHit hit) {
+    float3 mirrored = reflect(hit.direction, hit.normal);
+    if ((pc.flags & RT_FLAG_GLOSSY_LOBE) == 0u) {
+        return mirrored;
+    }
+    float3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    float roughness = hit.material.parameter;
+    float3 glossy = reflect(hit.direction, rt_ggx_normal(facing, roughness * roughness, rt_random(hit.pixel)));
+    return dot(glossy, facing) > 0.0 ? glossy : mirrored;
+}
+
+// The direction of the ray leaving a glass hit with index ratio eta: refracted by Snell's law
+// (HLSL refract, with the normal turned against the ray), reflected on total internal reflection.
+float3 rt_glass_direction(RtHit hit, float eta) {
+    float3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    float3 refracted = refract(hit.direction, facing, eta);
+    return all(refracted == float3(0.0, 0.0, 0.0)) ? reflect(hit.direction, facing) : refracted;
+}
+
+// Where a ray leaving the hit along `direction` starts: the hit point, lifted off the surface to the
+// side the ray leaves to.
+float3 rt_leaving_origin(RtHit hit, float3 direction) {
+    float side = dot(direction, hit.normal) >= 0.0 ? RT_SURFACE_OFFSET : -RT_SURFACE_OFFSET;
+    return hit.origin + hit.t * hit.direction + side * hit.normal;
+}
+
+// The ray a mirror or glass passes on from the ray carrying `cone` and `diff` in `mode`. A mirror
+// reflects it (rt_mirror_direction) and 90% of the light; its cone leaves by RTG Eq. 35, widened by
+// rt_reflection_spread. Glass refracts it (rt_glass_direction) and passes all of the light on; its
+// cone is rt_glass_cone. In the ray-differential modes it carries the reflected or refracted
+// differential (Igehy).
+RtBounce rt_bounce(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+    bool glass = hit.material.kind == RT_MATERIAL_GLASS;
+    float eta = glass ? rt_relative_index(hit) : 0.0;
+    float3 direction = glass ? rt_glass_direction(hit, eta) : rt_mirror_direction(hit);
+    RfRayCone leaving;
+    if (glass) {
+        leaving = rt_glass_cone(mode, hit, cone, eta);
+    } else {
+        leaving = rf_propagate(cone, hit.t, rt_reflection_spread(mode, hit, cone));
+    }
+    RtBounce bounce = { rt_leaving_origin(hit, direction), direction, glass ? 1.0 : RT_MIRROR_REFLECTANCE, leaving,
+        diff };
+    if (rt_carries_diff(mode)) {
+        bounce.diff = rt_bounced_diff(hit, diff, eta);
+    }
+    return bounce;
+}
+
+// The ray-differential, re-intersection and wireframe values of a primary hit reached by the eye
+// ray carrying `eye` (rt_eye_diff), whose ray-cone footprint is `footprint`: the eye-ray differential
+// transferred to the hit as barycentric and UV derivatives (RTG Eq. 12-21) and their LOD; the
+// neighbour pixels' rays re-intersected with the triangle's plane (signed barycentric offsets, their
+// UV gradients and LOD, and deltas); the wireframe coverage from the re-intersection deltas; and the
+// closed-form cone deltas.
+RtDiffRecord rt_measure_diff(RtHit hit, RfRayDiff eye, float footprint) {
+    RfDerivatives2 bary = rt_barycentric_derivatives(hit, eye);
+    RfDerivatives2 uv = rt_uv_derivatives(hit, bary);
+    RfNeighbourDirections next = rt_neighbours(hit.pixel);
+    RfDerivatives3 offsets = rt_offsets(hit, next);
+    RfDerivatives2 offset_uv = rt_offset_uv(hit, offsets);
+    float3 deltas = rt_deltas(hit, next);
+    float3 cone_deltas = rf_cone_barycentric_deltas(footprint, hit.tri.p[0], hit.tri.p[1], hit.tri.p[2]);
+    RtDiffRecord record = { eye.d_direction_dx, rt_texel_lod(uv), eye.d_direction_dy, rt_texel_lod(offset_uv),
+        bary.dx, bary.dy, uv.dx, uv.dy, next.right, rt_coverage(hit.weights, deltas), next.below, 0u, offsets.dx, 0u,
+        offsets.dy, 0u, offset_uv.dx, offset_uv.dy, deltas, 0u, cone_deltas, 0u };
+    return record;
+}
+
+// What a primary hit reached by the eye ray carrying `cone` and `eye` measured: every ray-cone value
+// (footprint and texel density, base LOD and LOD, RTG Eq. 34; the textureGrad gradient; the
+// triangle's curvature and the spread it gives a reflection, JCGT 2021; the reflected cone with the
+// roughness spread, RTG Eq. 35), the ray-differential, re-intersection and wireframe values
+// (rt_measure_diff), the refraction of the cone on glass (RTG II ch. 10) and the anisotropic cone
+// gradients (JCGT 2021).
+RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
+    RtTriangle tri = hit.tri;
+    float width = rf_width_at(cone, hit.t);
+    float footprint = rt_footprint(hit, cone);
+    float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    float base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
+    float spread = rt_curvature_spread(hit, cone);
+    float roughness_spread = rt_roughness_spread(hit);
+    bool glass = hit.material.kind == RT_MATERIAL_GLASS;
+    float eta = glass ? rt_relative_index(hit) : 0.0;
+    RfRayCone no_cone = { 0.0, 0.0 };
+    RfRefractedRayCone refracted = { no_cone, false };
+    if (glass) {
+        refracted = rt_refract_cone(hit, cone, eta);
+    }
+    RfDerivatives2 cone_uv = rt_cone_uv_gradients(hit, cone);
+    RtPixelRecord record = { hit.normal, hit.t, hit.direction, hit.mesh, hit.barycentrics, hit.primitive, 1u, cone,
+        width, footprint, density, base_lod, rt_cone_lod(hit, cone), rt_cone_gradient(hit, cone), rt_curvature(hit),
+        spread, rf_propagate(cone, hit.t, spread + 2.0 * roughness_spread), rt_measure_diff(hit, eye, footprint),
+        roughness_spread, eta, glass ? rt_normal_spread(hit, cone) : 0.0, refracted.total_internal_reflection ? 1u : 0u,
+        refracted.cone, cone_uv.dx, cone_uv.dy, uint2(0u, 0u) };
+    return record;
+}
+
+#endif // RT_SHADING_HLSL
