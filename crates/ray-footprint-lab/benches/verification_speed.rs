@@ -3,7 +3,11 @@
 //! language, with 1, 2, 4, ... up to all processors generating cases (`RunConfig::threads`).
 //! Prints, per thread count, the checks run and not run, the cases, the wall time (compiling
 //! each kernel and making its pipeline included: half the processors do it for the next checks
-//! while one runs) and the verified evaluations per second.
+//! while one runs) and the verified evaluations per second. Then, per thread count, where the
+//! time went ([`shader_proptest::Phase`]): each phase's seconds summed over the threads that
+//! worked in it and over every check, its share of the summed work, its share of the wall time
+//! (above 100% where threads overlap) and its nanoseconds per case; the two waits are the
+//! dispatching thread's.
 //!
 //! `cargo bench -p ray-footprint-lab --bench verification_speed [-- --cases N] [--threads N]`
 //!
@@ -12,9 +16,12 @@
 
 use ray_footprint_cases::agreement::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
-use shader_proptest::{Gpu, Outcome, RunConfig};
+use shader_proptest::{Gpu, Outcome, Phase, PhaseTimes, RunConfig};
 use std::process::ExitCode;
-use std::time::Instant;
+use std::time::{Duration, Instant};
+
+/// The seed of every pass, so that each pass runs the same cases.
+const SEED: u64 = 1;
 
 struct Options {
     cases: usize,
@@ -58,6 +65,7 @@ struct Pass {
     not_run: usize,
     failed: usize,
     cases: usize,
+    phases: PhaseTimes,
 }
 
 fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
@@ -66,6 +74,7 @@ fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
     run_all_checks(gpu, config, |_, check, language, result| match result {
         Ok(report) => {
             totals.cases += report.cases;
+            totals.phases += report.phases;
             match report.outcome {
                 Outcome::Passed => totals.run += 1,
                 Outcome::Failed(_) => {
@@ -82,6 +91,38 @@ fn pass(gpu: &Gpu, config: &RunConfig) -> Result<Pass, String> {
     })
     .map_err(|e| e.to_string())?;
     error.map_or(Ok(totals), Err)
+}
+
+/// The table of where the time of a pass with `threads` generating threads went, over its
+/// `wall` time.
+fn print_phases(threads: usize, totals: &Pass, wall: Duration) {
+    let work = totals.phases.work().as_secs_f64();
+    println!(
+        "\nwhere the time goes, {threads} generating threads, seed {SEED}: {} cases in {:.1} s wall, {work:.1} s of work summed over the threads",
+        totals.cases,
+        wall.as_secs_f64()
+    );
+    println!("| phase | seconds, summed over threads | share of summed work | share of wall | ns per case |");
+    println!("| --- | ---: | ---: | ---: | ---: |");
+    let row = |name: &str, seconds: f64, share_of_work: String| {
+        println!(
+            "| {name} | {seconds:.2} | {share_of_work} | {:.1}% | {:.0} |",
+            100.0 * seconds / wall.as_secs_f64(),
+            1e9 * seconds / totals.cases.max(1) as f64
+        );
+    };
+    for phase in Phase::ALL.into_iter().filter(|phase| !phase.is_wait()) {
+        let seconds = totals.phases.get(phase).as_secs_f64();
+        row(phase.name(), seconds, format!("{:.1}%", 100.0 * seconds / work));
+    }
+    row("all work", work, String::from("100.0%"));
+    for phase in Phase::ALL.into_iter().filter(|phase| phase.is_wait()) {
+        row(
+            phase.name(),
+            totals.phases.get(phase).as_secs_f64(),
+            String::from("-"),
+        );
+    }
 }
 
 fn main() -> ExitCode {
@@ -109,11 +150,12 @@ fn main() -> ExitCode {
         .threads
         .map_or_else(|| thread_counts(processors), |n| vec![n]);
     let mut failed = 0;
+    let mut passes = Vec::new();
     for threads in counts {
         let config = RunConfig {
             cases: options.cases,
             threads,
-            seed: Some(1),
+            seed: Some(SEED),
             ..RunConfig::default()
         };
         let started = Instant::now();
@@ -124,7 +166,8 @@ fn main() -> ExitCode {
                 return ExitCode::FAILURE;
             }
         };
-        let seconds = started.elapsed().as_secs_f64();
+        let wall = started.elapsed();
+        let seconds = wall.as_secs_f64();
         failed += totals.failed;
         println!(
             "| {threads} | {} | {} | {} | {seconds:.1} | {:.0} |",
@@ -133,6 +176,10 @@ fn main() -> ExitCode {
             totals.cases,
             totals.cases as f64 / seconds
         );
+        passes.push((threads, totals, wall));
+    }
+    for (threads, totals, wall) in &passes {
+        print_phases(*threads, totals, *wall);
     }
     if failed == 0 {
         ExitCode::SUCCESS

@@ -109,8 +109,8 @@ pub use gpu::WgpuDevice;
 #[cfg(feature = "gpu")]
 pub use gpu::{
     barrier_shader_writes_to_host, echo, evaluate, run_checks, vulkan, Buffer, Check, ComputeKernel,
-    DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, PreparedCheck,
-    Report, RunConfig, DEVICE_ENV, SEED_ENV,
+    DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, Phase, PhaseTimes,
+    PreparedCheck, Report, RunConfig, DEVICE_ENV, SEED_ENV,
 };
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

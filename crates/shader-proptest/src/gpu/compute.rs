@@ -4,23 +4,38 @@
 //! ones while they are large enough.
 
 use super::device::{Error, Gpu};
+use super::phases::{Phase, PhaseTimes};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
 use crate::kernel::WORKGROUP_SIZE;
 use ash::vk;
 use std::sync::Mutex;
+use std::time::Instant;
 
 /// A compiled kernel on a device that runs cases in batches: `invocations` invocations over the
 /// `input` words, returning the first `output_words` output words, one dispatch per call,
-/// waited for. A check runs on any device that gives it one ([`ComputeKernel`] on Vulkan through
-/// ash; the `wgpu` feature's kernels through wgpu).
+/// waited for, its upload, dispatch and read-back timed into `times`. A check runs on any device
+/// that gives it one ([`ComputeKernel`] on Vulkan through ash; the `wgpu` feature's kernels
+/// through wgpu).
 pub(crate) trait Dispatch: Send + Sync {
     /// Runs one batch; a validation message fails it.
-    fn dispatch(&self, invocations: usize, input: &[u32], output_words: usize) -> Result<Vec<u32>, Error>;
+    fn dispatch(
+        &self,
+        invocations: usize,
+        input: &[u32],
+        output_words: usize,
+        times: &mut PhaseTimes,
+    ) -> Result<Vec<u32>, Error>;
 }
 
 impl Dispatch for ComputeKernel<'_> {
-    fn dispatch(&self, invocations: usize, input: &[u32], output_words: usize) -> Result<Vec<u32>, Error> {
-        ComputeKernel::dispatch(self, invocations, input, output_words)
+    fn dispatch(
+        &self,
+        invocations: usize,
+        input: &[u32],
+        output_words: usize,
+        times: &mut PhaseTimes,
+    ) -> Result<Vec<u32>, Error> {
+        self.dispatch_timed(invocations, input, output_words, &[], times)
     }
 }
 
@@ -103,6 +118,21 @@ impl<'g> ComputeKernel<'g> {
         output_words: usize,
         push_constants: &[u8],
     ) -> Result<Vec<u32>, Error> {
+        let mut times = PhaseTimes::default();
+        self.dispatch_timed(invocations, input, output_words, push_constants, &mut times)
+    }
+
+    /// [`ComputeKernel::dispatch_with_push_constants`], its upload, dispatch and read-back timed
+    /// into `times`.
+    fn dispatch_timed(
+        &self,
+        invocations: usize,
+        input: &[u32],
+        output_words: usize,
+        push_constants: &[u8],
+        times: &mut PhaseTimes,
+    ) -> Result<Vec<u32>, Error> {
+        let mut clock = Instant::now();
         let gpu = self.owner.gpu;
         let groups = invocations.div_ceil(WORKGROUP_SIZE as usize);
         if groups > gpu.properties().limits.max_compute_work_group_count[0] as usize {
@@ -124,10 +154,14 @@ impl<'g> ComputeKernel<'g> {
         let mut push = vec![0u8; self.push_constant_bytes as usize];
         let used = push_constants.len().min(push.len());
         push[..used].copy_from_slice(&push_constants[..used]);
+        times.lap(Phase::Upload, &mut clock);
         io.owner.submit(|device, command_buffer| {
             self.record(device, command_buffer, io.set, &push, groups as u32)
         })?;
-        io.owner.read(&io.output, output_words)
+        times.lap(Phase::Dispatch, &mut clock);
+        let output = io.owner.read(&io.output, output_words);
+        times.lap(Phase::ReadBack, &mut clock);
+        output
     }
 
     /// Host buffers of `input_bytes` and `output_bytes` and a descriptor set binding them.

@@ -6,6 +6,7 @@ mod check;
 mod compute;
 mod device;
 mod echo;
+mod phases;
 mod resources;
 mod suite;
 #[cfg(feature = "wgpu")]
@@ -17,6 +18,7 @@ pub use check::{
 pub use compute::ComputeKernel;
 pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
 pub use echo::echo;
+pub use phases::{Phase, PhaseTimes};
 pub use resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
 pub use suite::run_checks;
 #[cfg(feature = "wgpu")]

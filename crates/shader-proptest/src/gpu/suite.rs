@@ -8,14 +8,18 @@
 
 use super::check::{Check, PreparedCheck, Report, RunConfig};
 use super::device::{Error, Gpu};
+use super::phases::Phase;
 use crate::shader::Shader;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::sync_channel;
+use std::time::{Duration, Instant};
 
 /// Runs every check of `checks` on its shader, as [`Check::run`] does, and hands each result to
 /// `each` in the order of `checks`. `preparers` threads prepare the checks ([`Check::prepare`])
-/// at most `preparers` checks ahead of the one running; 0 is [`Error::Config`].
+/// at most `preparers` checks ahead of the one running; 0 is [`Error::Config`]. The time the
+/// running thread waited for a check to be prepared is in its report's
+/// [`Phase::WaitForPreparation`].
 pub fn run_checks(
     gpu: &Gpu,
     checks: &[(&dyn Check, Shader)],
@@ -51,13 +55,25 @@ pub fn run_checks(
         // Checks prepared out of order wait here until those before them have run.
         let mut waiting = BTreeMap::new();
         let mut due = 0;
-        for (index, prepared) in receiver {
+        // The time spent waiting for the due check, added to its report.
+        let mut waited = Duration::ZERO;
+        loop {
+            let receiving = Instant::now();
+            let Ok((index, prepared)) = receiver.recv() else {
+                break;
+            };
+            waited += receiving.elapsed();
             waiting.insert(index, prepared);
             while let Some(prepared) = waiting.remove(&due) {
                 let check = checks[due].0;
+                let result = prepared.and_then(|prepared| check.run_prepared(prepared, config));
                 each(
                     due,
-                    prepared.and_then(|prepared| check.run_prepared(prepared, config)),
+                    result.map(|mut report| {
+                        let wait = std::mem::take(&mut waited);
+                        report.phases.add(Phase::WaitForPreparation, wait);
+                        report
+                    }),
                 );
                 due += 1;
             }

@@ -11,6 +11,7 @@
 use super::check::{FunctionCheck, PreparedCheck, Report, RunConfig};
 use super::compute::Dispatch;
 use super::device::{Error, DEVICE_ENV};
+use super::phases::{Phase, PhaseTimes};
 use crate::kernel::WORKGROUP_SIZE;
 use crate::shader::{Feature, Shader};
 use crate::value::{Args, Value};
@@ -134,12 +135,16 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             )));
         }
         let started = Instant::now();
+        let (mut clock, mut times) = (started, PhaseTimes::default());
         let kernel = self.kernel(shader);
         let pipeline = match device.missing_feature(shader.features()) {
             Some(reason) => Err(reason),
             None => {
                 self.compile(shader, &kernel)?;
-                Ok(Box::new(WgpuKernel::new(device, &kernel)?) as Box<dyn Dispatch>)
+                times.lap(Phase::Compile, &mut clock);
+                let pipeline = WgpuKernel::new(device, &kernel)?;
+                times.lap(Phase::Pipeline, &mut clock);
+                Ok(Box::new(pipeline) as Box<dyn Dispatch>)
             }
         };
         Ok(PreparedCheck::new(
@@ -147,7 +152,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             device.description.clone(),
             kernel,
             pipeline,
-            started,
+            (started, times),
         ))
     }
 }
@@ -194,7 +199,14 @@ impl<'g> WgpuKernel<'g> {
 }
 
 impl Dispatch for WgpuKernel<'_> {
-    fn dispatch(&self, invocations: usize, input: &[u32], output_words: usize) -> Result<Vec<u32>, Error> {
+    fn dispatch(
+        &self,
+        invocations: usize,
+        input: &[u32],
+        output_words: usize,
+        times: &mut PhaseTimes,
+    ) -> Result<Vec<u32>, Error> {
+        let mut clock = Instant::now();
         let gpu = &self.device.device;
         let groups = invocations.div_ceil(WORKGROUP_SIZE as usize) as u32;
         if groups > gpu.limits().max_compute_workgroups_per_dimension {
@@ -228,6 +240,7 @@ impl Dispatch for WgpuKernel<'_> {
                     },
                 ],
             });
+            times.lap(Phase::Upload, &mut clock);
             let mut encoder = gpu.create_command_encoder(&wgpu::CommandEncoderDescriptor::default());
             {
                 let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
@@ -243,9 +256,12 @@ impl Dispatch for WgpuKernel<'_> {
         slice.map_async(wgpu::MapMode::Read, |_| {});
         gpu.poll(wgpu::PollType::wait_indefinitely())
             .map_err(|error| Error::Setup(format!("wgpu poll: {error}")))?;
+        times.lap(Phase::Dispatch, &mut clock);
         let view = slice
             .get_mapped_range()
             .map_err(|error| Error::Setup(format!("wgpu reading the results: {error}")))?;
-        Ok(bytemuck::cast_slice(&view)[..output_words].to_vec())
+        let output = bytemuck::cast_slice(&view)[..output_words].to_vec();
+        times.lap(Phase::ReadBack, &mut clock);
+        Ok(output)
     }
 }

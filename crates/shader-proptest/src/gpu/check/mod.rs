@@ -20,6 +20,7 @@ pub use report::{Failure, Outcome, Report};
 use super::call::compile_call;
 use super::compute::{ComputeKernel, Dispatch};
 use super::device::{Error, Gpu};
+use super::phases::{Phase, PhaseTimes};
 use crate::back::Language;
 use crate::kernel::kernel_source;
 use crate::shader::Shader;
@@ -60,16 +61,18 @@ pub struct PreparedCheck<'g> {
     kernel: String,
     pipeline: Result<Box<dyn Dispatch + 'g>, String>,
     elapsed: Duration,
+    times: PhaseTimes,
 }
 
 impl<'g> PreparedCheck<'g> {
-    /// The check of `shader`'s `kernel` on `device`, prepared since `started`.
+    /// The check of `shader`'s `kernel` on `device`, prepared since `started`, its compilation
+    /// and pipeline creation timed in `times`.
     pub(in crate::gpu) fn new(
         shader: &Shader,
         device: String,
         kernel: String,
         pipeline: Result<Box<dyn Dispatch + 'g>, String>,
-        started: Instant,
+        (started, times): (Instant, PhaseTimes),
     ) -> PreparedCheck<'g> {
         PreparedCheck {
             language: shader.language(),
@@ -77,6 +80,7 @@ impl<'g> PreparedCheck<'g> {
             kernel,
             pipeline,
             elapsed: started.elapsed(),
+            times,
         }
     }
 }
@@ -220,12 +224,16 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// (see [`Check::prepare`]).
     pub fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error> {
         let started = Instant::now();
+        let (mut clock, mut times) = (started, PhaseTimes::default());
         let kernel = self.kernel(shader);
         let pipeline = match gpu.missing_feature(shader.features()) {
             Some(reason) => Err(reason),
             None => {
                 let spirv = self.compile(shader, &kernel)?;
-                Ok(Box::new(ComputeKernel::new(gpu, &spirv, 0)?) as Box<dyn Dispatch>)
+                times.lap(Phase::Compile, &mut clock);
+                let pipeline = ComputeKernel::new(gpu, &spirv, 0)?;
+                times.lap(Phase::Pipeline, &mut clock);
+                Ok(Box::new(pipeline) as Box<dyn Dispatch>)
             }
         };
         Ok(PreparedCheck::new(
@@ -233,7 +241,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             gpu.description(),
             kernel,
             pipeline,
-            started,
+            (started, times),
         ))
     }
 
@@ -242,10 +250,11 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     pub fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error> {
         let started = Instant::now();
         let seed = config.validate()?;
-        let (stats, outcome) = match prepared.pipeline {
+        let (mut stats, outcome) = match prepared.pipeline {
             Err(reason) => (Stats::default(), Outcome::NotRun(reason)),
             Ok(pipeline) => self.run_cases(pipeline.as_ref(), config, seed, prepared.kernel)?,
         };
+        stats.times += prepared.times;
         Ok(Report::new(
             self.function.clone(),
             prepared.language,
@@ -269,7 +278,9 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let outcome = match self.run_batches(pipeline, config, seed, &mut stats)? {
             None => Outcome::Passed,
             Some(mismatch) => {
+                let shrinking = Instant::now();
                 let shrunk = self.shrink(pipeline, config, seed, mismatch)?;
+                stats.times.add(Phase::Shrinking, shrinking.elapsed());
                 Outcome::Failed(Box::new(self.failure(shrunk, stats.disagreeing, kernel)))
             }
         };

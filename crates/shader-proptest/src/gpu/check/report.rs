@@ -6,6 +6,7 @@ use super::config::SEED_ENV;
 use super::shrink::Shrunk;
 use super::FunctionCheck;
 use crate::back::Language;
+use crate::gpu::phases::PhaseTimes;
 use crate::value::{Args, Value};
 use std::fmt;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -94,6 +95,9 @@ pub struct Report {
     pub seed: u64,
     /// Wall time of the whole check.
     pub elapsed: Duration,
+    /// Where the check's time went, phase by phase, summed over the threads that worked on it
+    /// (so their sum may exceed [`Report::elapsed`]).
+    pub phases: PhaseTimes,
     /// Passed, failed or not run.
     pub outcome: Outcome,
     /// Whether the report was printed.
@@ -138,6 +142,7 @@ impl Report {
                 .map(|component| (component, share(by_component[component]))),
             seed,
             elapsed,
+            phases: stats.times,
             outcome,
             shown: Shown::default(),
         }

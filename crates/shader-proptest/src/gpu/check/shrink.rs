@@ -21,6 +21,7 @@ use super::config::{batch_runner, RunConfig};
 use super::FunctionCheck;
 use crate::gpu::compute::Dispatch;
 use crate::gpu::device::Error;
+use crate::gpu::phases::PhaseTimes;
 use crate::value::{Args, Value};
 use proptest::prelude::Rng;
 use proptest::strategy::{BoxedStrategy, ValueTree};
@@ -157,7 +158,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     fn run_one(&self, pipeline: &dyn Dispatch, args: &A) -> Result<R, Error> {
         let mut input = Vec::new();
         args.write(&mut input);
-        let output = pipeline.dispatch(1, &input, R::TYPE.words())?;
+        let output = pipeline.dispatch(1, &input, R::TYPE.words(), &mut PhaseTimes::default())?;
         Ok(R::read(&mut &output[..]))
     }
 }
@@ -515,9 +516,12 @@ impl<A: Args, R: Value> Shrinker<'_, A, R> {
         for chunk in cases.chunks(self.batch) {
             let mut input = Vec::new();
             chunk.iter().for_each(|args| args.write(&mut input));
-            let output = self
-                .pipeline
-                .dispatch(chunk.len(), &input, chunk.len() * R::TYPE.words())?;
+            let output = self.pipeline.dispatch(
+                chunk.len(),
+                &input,
+                chunk.len() * R::TYPE.words(),
+                &mut PhaseTimes::default(),
+            )?;
             self.dispatches += 1;
             let mut words = &output[..];
             for args in chunk {
@@ -553,6 +557,7 @@ mod tests {
             invocations: usize,
             input: &[u32],
             _output_words: usize,
+            _times: &mut PhaseTimes,
         ) -> Result<Vec<u32>, Error> {
             Ok((0..invocations).map(|case| input[3 * case]).collect())
         }
