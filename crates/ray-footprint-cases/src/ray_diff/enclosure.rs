@@ -429,6 +429,29 @@ pub(super) fn well_conditioned(k: Interval) -> bool {
     k.relative_width() <= WELL_CONDITIONED
 }
 
+/// Why a ray against a triangle is left out of a check ([`determinant_well_conditioned`]).
+pub(super) const PARALLEL_WITHIN_ROUNDING: &str =
+    "the ray is parallel to the triangle's plane within rounding, or the \
+     triangle a sliver (the determinant k is not known to 2^-10): the clamped quotients may take \
+     either +-DIFF_MAX_VALUE";
+
+/// Whether the determinant of `direction` against the triangle `p0 p1 p2` is well-conditioned
+/// ([`WELL_CONDITIONED`]).
+pub(super) fn determinant_well_conditioned(direction: Vec3, p0: Vec3, p1: Vec3, p2: Vec3) -> bool {
+    well_conditioned(determinant(
+        interval3(direction),
+        interval3(p0),
+        interval3(p1),
+        interval3(p2),
+    ))
+}
+
+/// Why a re-intersection is left out of a check ([`offsets_well_conditioned`]).
+pub(super) const REINTERSECTION_ILL_CONDITIONED: &str =
+    "a neighbour ray is parallel to the triangle's plane \
+     within rounding, or its object-space direction is lost to the cancellation of a far origin \
+     (not known to 2^-10): the clamped barycentrics may take either +-DIFF_MAX_VALUE";
+
 pub(super) fn intersect_triangle_plane(
     origin: Interval3,
     direction: Interval3,
