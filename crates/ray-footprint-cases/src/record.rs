@@ -181,10 +181,11 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         }
     }
 
-    /// The inputs where the function is well-conditioned: `holds(arguments)`, with the `reason`
-    /// the others are not ([`Conditioning`]). The agreement and special-value checks keep to
-    /// them; the others must keep the record's promises on the device
-    /// ([`Function::ill_conditioned_gpu`]).
+    /// The inputs where the function is well-conditioned: `holds(arguments)`, a property of the
+    /// inputs in the function's own terms, with the `reason` the others are not (either side of a
+    /// threshold is right, or the result is known only to the documented clamp). The agreement
+    /// and special-value checks keep to them; the others must keep the record's promises on the
+    /// device ([`Function::ill_conditioned_gpu`]).
     pub fn conditioned(self, reason: &'static str, holds: fn(&A) -> bool) -> Self {
         Record {
             conditioning: Some(Conditioning { reason, holds }),

@@ -210,9 +210,10 @@ pub fn cone_from_ray_diff() -> Record<(RayDiff, Vec3), Vec2> {
         || (ray_diff(), unit_vec3()).boxed(),
     )
     .conditioned(
-        "the origin change and the direction change across the ray are orthogonal within \
-         rounding: the spread's sign (converging or diverging) may go either way",
-        enclosure::spread_sign_decided,
+        "an origin or direction change lies along the ray within rounding (its part across the \
+         ray is not known to 2^-10), or the two are orthogonal within rounding: the width is \
+         rounding noise, or the spread's sign (converging or diverging) may go either way",
+        enclosure::transverse_well_conditioned,
     )
     .enclosure(enclosure::cone_from_ray_diff)
     .reference(reference::cone_from_ray_diff())

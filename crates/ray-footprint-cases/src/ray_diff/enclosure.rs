@@ -622,12 +622,15 @@ fn transverse_parts(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> (Inte
     (origin, turn, origin.dot(turn))
 }
 
-/// Whether the sign of each axis's spread is decided: the alignment of the origin change with
-/// the direction change across the ray does not enclose 0, or the origin change is exactly 0.
-pub(super) fn spread_sign_decided(&(diff, direction): &(RayDiff, Vec3)) -> bool {
+/// Whether each axis of the cone is well-conditioned: the origin and direction changes across the
+/// ray are known to [`WELL_CONDITIONED`] ([`direction_well_conditioned`]; not a change along the
+/// ray within rounding), and the sign of the spread is decided (their alignment does not enclose
+/// 0, or the origin change is exactly 0).
+pub(super) fn transverse_well_conditioned(&(diff, direction): &(RayDiff, Vec3)) -> bool {
     let decided = |d_origin: Vec3, d_direction: Vec3| {
-        let (.., alignment) = transverse_parts(d_origin, d_direction, direction);
-        d_origin == Vec3::ZERO || alignment.lo >= 0.0 || alignment.hi < 0.0
+        let (origin, turn, alignment) = transverse_parts(d_origin, d_direction, direction);
+        let sign_decided = d_origin == Vec3::ZERO || alignment.lo >= 0.0 || alignment.hi < 0.0;
+        sign_decided && direction_well_conditioned(origin) && direction_well_conditioned(turn)
     };
     decided(diff.d_origin_dx, diff.d_direction_dx) && decided(diff.d_origin_dy, diff.d_direction_dy)
 }
