@@ -282,7 +282,7 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
     /// `check` on its cases where the function is well-conditioned.
     fn well_conditioned(&self, check: FunctionCheck<A, R>) -> FunctionCheck<A, R> {
         match self.conditioning {
-            Some(Conditioning { reason, holds }) => check.with_filter(reason, move |args| holds(args)),
+            Some(Conditioning { reason, holds }) => check.with_filter(reason, holds),
             None => check,
         }
     }
