@@ -31,7 +31,7 @@ pub mod special;
 pub mod strategy;
 pub mod wireframe;
 
-pub use record::{Function, Promises, Record};
+pub use record::{Function, IllConditioned, Promises, Record};
 
 use ray_footprint::shaders::Module;
 use std::sync::OnceLock;

@@ -4,7 +4,9 @@
 //! cases, its tolerance (a bound per component, an interval enclosure, or exact), its documented
 //! degenerate inputs, and how the fuzzer draws its arguments and what it promises about the
 //! result. The runners take what they need from it: the agreement and special-value checks
-//! ([`Record::check`], [`Record::special_check`]), the degenerate table ([`crate::degenerate`]),
+//! ([`Record::check`], [`Record::special_check`]), the special values where the function is
+//! ill-conditioned ([`Record::conditioned`], [`Function::ill_conditioned_gpu`]), the degenerate
+//! table ([`crate::degenerate`]),
 //! the `cpu_mirror` fuzz target ([`crate::fuzzing::mirror`]), and the independent references that
 //! prove the mirror itself ([`crate::reference`]). Type-erased as [`Function`], the records of all
 //! modules form one list in module order ([`crate::records`]).
@@ -32,10 +34,11 @@ use crate::degenerate::Row;
 use crate::fuzzing::draw::{Draw, Mode};
 use crate::reference::{reference_seed, Kind, Reference, ReferenceReport};
 use crate::special::Perturb;
-use proptest::strategy::BoxedStrategy;
+use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::Interval;
-use shader_proptest::{Args, Check, Error, FunctionCheck, Gpu, Language, Tolerance, Value};
+use shader_proptest::{evaluate, Args, Check, Error, FunctionCheck, Gpu, Language, Tolerance, Value};
 
 /// What the fuzzer checks of a result beyond finiteness, for arguments in the documented domain.
 enum Promise<A, R> {
@@ -63,6 +66,56 @@ impl Promises {
     }
 }
 
+/// Where a function is well-conditioned: `holds(arguments)`, a property of the inputs in the
+/// function's own terms; `reason` says what the other inputs are and why their value cannot be
+/// checked against the mirror's (either side of a threshold is right, or the result is known only
+/// to the documented clamp).
+struct Conditioning<A> {
+    reason: &'static str,
+    holds: fn(&A) -> bool,
+}
+
+impl<A> Clone for Conditioning<A> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<A> Copy for Conditioning<A> {}
+
+/// The special-value cases of a function outside its well-conditioned domain
+/// ([`Function::ill_conditioned_gpu`]): how many were drawn and run, and the promises their
+/// device results broke.
+#[derive(Clone, Debug)]
+pub struct IllConditioned {
+    /// Why these cases are not judged on their value ([`Record::conditioned`]).
+    pub reason: &'static str,
+    /// Special-value cases drawn.
+    pub drawn: usize,
+    /// Those outside the well-conditioned domain, run on the device.
+    pub run: usize,
+    /// The broken promises, one line per case.
+    pub failures: Vec<String>,
+}
+
+impl IllConditioned {
+    /// The share of the drawn cases that were ill-conditioned.
+    pub fn share(&self) -> f64 {
+        self.run as f64 / self.drawn.max(1) as f64
+    }
+}
+
+/// A proptest runner whose random numbers follow from `seed` alone.
+fn seeded_runner(seed: u64) -> TestRunner {
+    let mut bytes = [0u8; 16];
+    bytes[..8].copy_from_slice(&seed.to_le_bytes());
+    bytes[8..].copy_from_slice(&(!seed).to_le_bytes());
+    TestRunner::new_with_rng(
+        Config::default(),
+        TestRng::from_seed(RngAlgorithm::XorShift, &bytes),
+    )
+}
+
 /// One public function of a shader module and how every runner checks it.
 pub struct Record<A, R> {
     module: Module,
@@ -70,6 +123,7 @@ pub struct Record<A, R> {
     mirror: fn(A) -> R,
     cases: fn() -> BoxedStrategy<A>,
     tolerance: Tolerance<A>,
+    conditioning: Option<Conditioning<A>>,
     degenerate: Vec<Row<A>>,
     fuzz: Option<fn(&mut Draw) -> A>,
     promise: Promise<A, R>,
@@ -93,6 +147,7 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
             mirror,
             cases,
             tolerance: Tolerance::Exact,
+            conditioning: None,
             degenerate: Vec::new(),
             fuzz: None,
             promise: Promise::Finite,
@@ -122,6 +177,18 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         };
         Record {
             tolerance: Tolerance::per_case(widths),
+            ..self
+        }
+    }
+
+    /// The inputs where the function is well-conditioned: `holds(arguments)`, a property of the
+    /// inputs in the function's own terms, with the `reason` the others are not (either side of a
+    /// threshold is right, or the result is known only to the documented clamp). The agreement
+    /// and special-value checks keep to them; the others must keep the record's promises on the
+    /// device ([`Function::ill_conditioned_gpu`]).
+    pub fn conditioned(self, reason: &'static str, holds: fn(&A) -> bool) -> Self {
+        Record {
+            conditioning: Some(Conditioning { reason, holds }),
             ..self
         }
     }
@@ -204,20 +271,78 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         &self.degenerate
     }
 
-    /// The agreement check: `rf_<function>` against the mirror on the record's cases, within its
-    /// tolerance.
+    /// The agreement check: `rf_<function>` against the mirror on the record's cases where it is
+    /// well-conditioned ([`Record::conditioned`]), within its tolerance.
     pub fn check(&self) -> FunctionCheck<A, R> {
-        FunctionCheck::new(format!("rf_{}", self.function), self.cases, self.mirror)
-            .tolerance(self.tolerance.clone())
+        let check = FunctionCheck::new(format!("rf_{}", self.function), self.cases, self.mirror)
+            .tolerance(self.tolerance.clone());
+        self.well_conditioned(check)
     }
 
-    /// The special-value check: the agreement check on its cases pushed towards special values
-    /// ([`crate::special`]).
-    pub fn special_check(&self) -> FunctionCheck<A, R> {
+    /// `check` on its cases where the function is well-conditioned.
+    fn well_conditioned(&self, check: FunctionCheck<A, R>) -> FunctionCheck<A, R> {
+        match self.conditioning {
+            Some(Conditioning { reason, holds }) => check.with_filter(reason, holds),
+            None => check,
+        }
+    }
+
+    /// The agreement check on its cases pushed towards special values ([`crate::special`]),
+    /// well-conditioned or not.
+    fn every_special_case(&self) -> FunctionCheck<A, R> {
         self.check().with_perturbation(|mut args: A, rng| {
             args.perturb(rng);
             args
         })
+    }
+
+    /// The special-value check: the agreement check on its cases pushed towards special values
+    /// ([`crate::special`]), those where the function is well-conditioned
+    /// ([`Record::conditioned`]).
+    pub fn special_check(&self) -> FunctionCheck<A, R> {
+        self.well_conditioned(self.every_special_case())
+    }
+
+    /// Draws `count` special-value cases from `seed` and runs those outside the well-conditioned
+    /// domain on the device in one dispatch: each result must keep the record's promises (finite
+    /// for finite inputs, and its range or property).
+    fn run_ill_conditioned(
+        &self,
+        gpu: &Gpu,
+        language: Language,
+        count: usize,
+        seed: u64,
+    ) -> Result<Option<IllConditioned>, Error> {
+        let Some(Conditioning { reason, holds }) = self.conditioning else {
+            return Ok(None);
+        };
+        let strategy = self.every_special_case().strategy();
+        let mut runner = seeded_runner(seed);
+        let drawn: Vec<A> = (0..count)
+            .filter_map(|_| strategy.new_tree(&mut runner).ok().map(|tree| tree.current()))
+            .collect();
+        let cases: Vec<A> = drawn.iter().filter(|args| !holds(args)).cloned().collect();
+        let shader = self.module.shader(language);
+        let results: Vec<R> = if cases.is_empty() {
+            Vec::new()
+        } else {
+            evaluate(gpu, &shader, &format!("rf_{}", self.function), &cases)?
+        };
+        let failures = cases
+            .iter()
+            .zip(&results)
+            .filter(|(args, _)| args.is_finite())
+            .filter_map(|(args, result)| {
+                let broken = self.broken_promises(args, result);
+                (!broken.is_empty()).then(|| format!("{args:?} gave {result:?}: {}", broken.join("; ")))
+            })
+            .collect();
+        Ok(Some(IllConditioned {
+            reason,
+            drawn: drawn.len(),
+            run: cases.len(),
+            failures,
+        }))
     }
 
     fn broken_promises(&self, args: &A, result: &R) -> Vec<String> {
@@ -257,6 +382,16 @@ pub trait Function: Send + Sync {
     /// Runs the degenerate rows through the shader function in `language`: the rows it does not
     /// follow.
     fn degenerate_gpu(&self, gpu: &Gpu, language: Language) -> Result<Vec<String>, Error>;
+    /// Draws `count` special-value cases from `seed` and runs those where the function is
+    /// ill-conditioned ([`Record::conditioned`]) through the shader function in `language`: their
+    /// results must keep the record's promises. `None` for a record well-conditioned everywhere.
+    fn ill_conditioned_gpu(
+        &self,
+        gpu: &Gpu,
+        language: Language,
+        count: usize,
+        seed: u64,
+    ) -> Result<Option<IllConditioned>, Error>;
     /// Whether the record says how the fuzzer draws its arguments.
     fn has_fuzz_draw(&self) -> bool;
     /// Evaluates the mirror on arguments drawn from `data` in `mode`: `Err` names the promises the
@@ -301,6 +436,16 @@ impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
 
     fn degenerate_gpu(&self, gpu: &Gpu, language: Language) -> Result<Vec<String>, Error> {
         crate::degenerate::gpu(self, gpu, language)
+    }
+
+    fn ill_conditioned_gpu(
+        &self,
+        gpu: &Gpu,
+        language: Language,
+        count: usize,
+        seed: u64,
+    ) -> Result<Option<IllConditioned>, Error> {
+        self.run_ill_conditioned(gpu, language, count, seed)
     }
 
     fn has_fuzz_draw(&self) -> bool {

@@ -13,10 +13,13 @@
 //!   is tied to another vector of the case (equal, opposite, a multiple, one ULP away,
 //!   orthogonal): a repeated or collinear vertex, a ray along an edge.
 //!
-//! A special-value check is the agreement check of the same function on these cases: finite inputs must
-//! give finite outputs in every language, and the shader must agree with the mirror within the
-//! function's tolerance, which, where the function is ill-conditioned, widens to the documented
-//! clamp.
+//! A special-value check is the agreement check of the same function on these cases, where the
+//! function is well-conditioned ([`crate::Record::conditioned`]): finite inputs must give finite
+//! outputs in every language, and the shader must agree with the mirror within the function's
+//! tolerance. The cases outside that domain (within rounding of a threshold, a ray parallel to a
+//! plane within rounding), where the tolerance could only be the documented clamp, are run on
+//! the device on their own and must keep the record's promises: finite, within the documented
+//! range ([`crate::Function::ill_conditioned_gpu`]).
 
 use crate::strategy::{HUGE, TINY};
 use glam::{Mat4, Vec2, Vec3};

@@ -229,6 +229,9 @@ pub fn edge_ramp() -> Record<impl Args + Perturb, impl Value> {
             .boxed()
         },
     )
+    .conditioned(AT_AN_EDGE, |&(x, start, width)| {
+        (0..3).all(|i| edge_ramp_error(x[i], start[i], width[i], 0.0) < AMBIGUOUS_COVERAGE)
+    })
     // start is an input here, so only the division and the polynomial differ.
     .bound(|&(x, start, width), i, _| edge_ramp_error(x[i], start[i], width[i], 0.0))
     .reference(reference::edge_ramp())
@@ -267,12 +270,12 @@ pub fn line_width() -> Record<impl Args + Perturb, impl Value> {
         || {
             (hit(), size(), size())
                 .prop_map(|((b, d), thickness, smoothing)| (d, thickness, smoothing, b))
-                .prop_filter(AT_AN_EDGE, |&(d, thickness, smoothing, b)| {
-                    line_width_error(d, thickness, 0.0, smoothing, b) < AMBIGUOUS_COVERAGE
-                })
                 .boxed()
         },
     )
+    .conditioned(AT_AN_EDGE, |&(d, thickness, smoothing, b)| {
+        line_width_error(d, thickness, 0.0, smoothing, b) < AMBIGUOUS_COVERAGE
+    })
     .bound(|&(d, thickness, smoothing, b), _, _| line_width_error(d, thickness, 0.0, smoothing, b))
     .reference(reference::line_width())
     .fuzz(|d| (d.vec3(), d.scalar(), d.scalar(), d.vec3()))
@@ -311,12 +314,12 @@ pub fn process_wireframe() -> Record<(WireframeSettings, Vec3, Vec3), f32> {
         || {
             (settings(), hit())
                 .prop_map(|(settings, (b, d))| (settings, b, d))
-                .prop_filter(AT_AN_EDGE, |&(settings, b, d)| {
-                    process_wireframe_error(settings, b, d) < AMBIGUOUS_COVERAGE
-                })
                 .boxed()
         },
     )
+    .conditioned(AT_AN_EDGE, |&(settings, b, d)| {
+        process_wireframe_error(settings, b, d) < AMBIGUOUS_COVERAGE
+    })
     .bound(|&(settings, b, d), _, _| process_wireframe_error(settings, b, d))
     .reference(reference::process_wireframe())
     .fuzz(|d| (d.settings(), d.vec3(), d.vec3()))

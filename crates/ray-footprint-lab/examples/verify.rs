@@ -11,11 +11,8 @@
 
 use ray_footprint_cases::agreement::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
-use shader_proptest::{Gpu, Outcome, RunConfig};
+use shader_proptest::{Gpu, Outcome, RunConfig, MAX_VACUOUS};
 use std::process::ExitCode;
-
-/// Largest share of a check's cases whose tolerance may be vacuous.
-const MAX_VACUOUS: f64 = 0.01;
 
 fn main() -> ExitCode {
     let config = options_or_exit(

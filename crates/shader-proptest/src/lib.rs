@@ -110,7 +110,7 @@ pub use gpu::WgpuDevice;
 pub use gpu::{
     barrier_shader_writes_to_host, echo, evaluate, run_checks, vulkan, Buffer, Check, ComputeKernel,
     DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, Phase, PhaseTimes,
-    PreparedCheck, Report, RunConfig, DEVICE_ENV, SEED_ENV,
+    PreparedCheck, Report, RunConfig, DEVICE_ENV, MAX_VACUOUS, SEED_ENV,
 };
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

@@ -29,12 +29,13 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
                 .prop_map(|(cone, (n, d), behind, beta, eta)| {
                     (cone, if behind { -n } else { n }, d, beta, eta)
                 })
-                .prop_filter(
-                    "within rounding of grazing or of the critical angle",
-                    refraction_decided,
-                )
                 .boxed()
         },
+    )
+    .conditioned(
+        "within rounding of grazing or of the critical angle: which side of the normal the ray \
+         meets, or whether it is totally internally reflected, may go either way",
+        refraction_decided,
     )
     .enclosure(enclosure::refract_ray_cone)
     .reference(reference::refract_flat())

@@ -169,6 +169,14 @@ pub fn normal_spread_angle_small() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
+/// Whether the sign of `dot(dp_dx, dn_dx) + dot(dp_dy, dn_dy)` is decided: the sum lies beyond its
+/// rounding error (6 terms, 8 ULP of their magnitudes) from zero.
+fn curvature_sign_decided(&(dp_dx, dp_dy, dn_dx, dn_dy): &(Vec3, Vec3, Vec3, Vec3)) -> bool {
+    let sum = dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy);
+    let terms = (dp_dx * dn_dx).abs().element_sum() + (dp_dy * dn_dy).abs().element_sum();
+    sum.abs() > 8.0 * ULP * terms
+}
+
 /// `rf_curvature_sign`.
 pub fn curvature_sign() -> Record<impl Args + Perturb, impl Value> {
     let x = Vec3::X;
@@ -178,17 +186,12 @@ pub fn curvature_sign() -> Record<impl Args + Perturb, impl Value> {
         |(dp_dx, dp_dy, dn_dx, dn_dy)| rc::curvature_sign(dp_dx, dp_dy, dn_dx, dn_dy),
         || (small_vec3(), small_vec3(), small_vec3(), small_vec3()).boxed(),
     )
-    // Exact, unless the sum is within its rounding error (6 terms, 8 ULP) of zero: then
-    // either sign is right.
-    .bound(|&(dp_dx, dp_dy, dn_dx, dn_dy), _, _| {
-        let sum = dp_dx.dot(dn_dx) + dp_dy.dot(dn_dy);
-        let terms = (dp_dx * dn_dx).abs().element_sum() + (dp_dy * dn_dy).abs().element_sum();
-        if sum.abs() <= 8.0 * ULP * terms {
-            2.0
-        } else {
-            0.0
-        }
-    })
+    .conditioned(
+        "the sum of dot(dp, dn) is within its rounding error of zero: either sign is right",
+        curvature_sign_decided,
+    )
+    // Exact where the sign is decided; elsewhere either sign is right.
+    .bound(|args, _, _| if curvature_sign_decided(args) { 0.0 } else { 2.0 })
     .reference(reference::curvature_sign())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, sign, promises| promises.within(sign.abs(), 1.0, 1.0, "|sign|"))

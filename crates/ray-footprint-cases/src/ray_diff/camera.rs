@@ -2,7 +2,7 @@
 
 use super::enclosure;
 use super::rows::{centre_camera, matrix_rows};
-use super::strategy::{any_direction, camera, camera_with_a_view, differential_vec3, matrices};
+use super::strategy::{any_direction, camera, differential_vec3, has_a_view, matrices, NARROW_VIEW};
 use super::{reference, Matrices, MODULE};
 use crate::degenerate::{mirror, parts, same, value, vulkan_inverse_projection, NAN};
 use crate::record::Record;
@@ -90,8 +90,9 @@ pub fn eye_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "eye_ray_diff",
         |(pixel, size, fov, r, u, v)| rd::eye_ray_diff(pixel, size, fov, r, u, v),
-        camera_with_a_view,
+        camera,
     )
+    .conditioned(NARROW_VIEW, has_a_view)
     .enclosure(enclosure::eye_ray_diff)
     .reference(reference::eye_ray_diff())
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))

@@ -22,6 +22,11 @@ pub fn cone_barycentric_deltas() -> Record<(f32, Vec3, Vec3, Vec3), Vec3> {
         |(f, p0, p1, p2)| rd::cone_barycentric_deltas(f, p0, p1, p2),
         || with_corners(scalar(), triangle()),
     )
+    .conditioned(
+        "a sliver or a repeated vertex within rounding (the doubled area is not known to 2^-10): \
+         the deltas may take anything up to the clamp DIFF_MAX_VALUE",
+        enclosure::area_well_conditioned,
+    )
     .enclosure(enclosure::cone_barycentric_deltas)
     .reference(reference::cone_barycentric_deltas())
     .fuzz(|d| (d.scalar(), d.vec3(), d.vec3(), d.vec3()))
@@ -203,6 +208,12 @@ pub fn cone_from_ray_diff() -> Record<(RayDiff, Vec3), Vec2> {
         "cone_from_ray_diff",
         |(diff, d)| rd::cone_from_ray_diff(diff, d),
         || (ray_diff(), unit_vec3()).boxed(),
+    )
+    .conditioned(
+        "an origin or direction change lies along the ray within rounding (its part across the \
+         ray is not known to 2^-10), or the two are orthogonal within rounding: the width is \
+         rounding noise, or the spread's sign (converging or diverging) may go either way",
+        enclosure::transverse_well_conditioned,
     )
     .enclosure(enclosure::cone_from_ray_diff)
     .reference(reference::cone_from_ray_diff())

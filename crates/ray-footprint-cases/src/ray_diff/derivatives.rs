@@ -1,6 +1,6 @@
 //! Records of `ray_diff`: Barycentric, texture and LOD derivatives (RTG Eq. 12-24).
 
-use super::enclosure::{self, well_conditioned};
+use super::enclosure::{self, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING};
 use super::rows::{direction_dx, zero_diff_dx};
 use super::strategy::{any_direction, derivatives2, ray_diff};
 use super::{reference, BarycentricArgs, MODULE};
@@ -11,7 +11,7 @@ use crate::strategy::{distance, image_size, one_argument, triangle, uv_triangle,
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, DIFF_MAX_VALUE, DIFF_MIN_MAGNITUDE};
-use shader_proptest::interval::{interval2, interval3, Interval};
+use shader_proptest::interval::{interval2, Interval};
 use shader_proptest::{Args, Value};
 
 /// `rf_barycentric_derivatives`: the enclosure of the four derivatives.
@@ -27,17 +27,12 @@ pub fn barycentric_derivatives() -> Record<BarycentricArgs, Derivatives2> {
         || {
             (ray_diff(), any_direction(), distance(), triangle())
                 .prop_map(|(diff, d, t, p)| (diff, d, t, p[0], p[1], p[2]))
-                .prop_filter("an ill-conditioned determinant", |&(_, d, _, p0, p1, p2)| {
-                    well_conditioned(enclosure::determinant(
-                        interval3(d),
-                        interval3(p0),
-                        interval3(p1),
-                        interval3(p2),
-                    ))
-                })
                 .boxed()
         },
     )
+    .conditioned(PARALLEL_WITHIN_ROUNDING, |&(_, d, _, p0, p1, p2)| {
+        determinant_well_conditioned(d, p0, p1, p2)
+    })
     .enclosure(enclosure::barycentric_derivatives)
     .reference(reference::barycentric_derivatives())
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.vec3(), d.vec3(), d.vec3()))

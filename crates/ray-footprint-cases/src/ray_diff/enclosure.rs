@@ -429,6 +429,29 @@ pub(super) fn well_conditioned(k: Interval) -> bool {
     k.relative_width() <= WELL_CONDITIONED
 }
 
+/// Why a ray against a triangle is left out of a check ([`determinant_well_conditioned`]).
+pub(super) const PARALLEL_WITHIN_ROUNDING: &str =
+    "the ray is parallel to the triangle's plane within rounding, or the \
+     triangle a sliver (the determinant k is not known to 2^-10): the clamped quotients may take \
+     either +-DIFF_MAX_VALUE";
+
+/// Whether the determinant of `direction` against the triangle `p0 p1 p2` is well-conditioned
+/// ([`WELL_CONDITIONED`]).
+pub(super) fn determinant_well_conditioned(direction: Vec3, p0: Vec3, p1: Vec3, p2: Vec3) -> bool {
+    well_conditioned(determinant(
+        interval3(direction),
+        interval3(p0),
+        interval3(p1),
+        interval3(p2),
+    ))
+}
+
+/// Why a re-intersection is left out of a check ([`offsets_well_conditioned`]).
+pub(super) const REINTERSECTION_ILL_CONDITIONED: &str =
+    "a neighbour ray is parallel to the triangle's plane \
+     within rounding, or its object-space direction is lost to the cancellation of a far origin \
+     (not known to 2^-10): the clamped barycentrics may take either +-DIFF_MAX_VALUE";
+
 pub(super) fn intersect_triangle_plane(
     origin: Interval3,
     direction: Interval3,
@@ -484,9 +507,19 @@ pub(super) fn offsets_well_conditioned(args: &OffsetArgs) -> bool {
         .all(|&d| direction_well_conditioned(d) && well_conditioned(determinant(d, p0, p1, p2)))
 }
 
+/// The enclosure of twice the area of the triangle `p0 p1 p2`, `|cross(p1 - p0, p2 - p0)|`.
+fn doubled_area(p0: Interval3, p1: Interval3, p2: Interval3) -> Interval {
+    scaled_length((p1 - p0).cross(p2 - p0))
+}
+
+/// Whether the doubled area of the triangle is known to [`WELL_CONDITIONED`] (an exact 0 is).
+pub(super) fn area_well_conditioned(&(_, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> bool {
+    well_conditioned(doubled_area(interval3(p0), interval3(p1), interval3(p2)))
+}
+
 pub(super) fn cone_barycentric_deltas(&(footprint, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> Vec<Interval> {
     let (p0, p1, p2) = (interval3(p0), interval3(p1), interval3(p2));
-    let area2 = scaled_length((p1 - p0).cross(p2 - p0)).max_c(f64::from(DIFF_MIN_MAGNITUDE));
+    let area2 = doubled_area(p0, p1, p2).max_c(f64::from(DIFF_MIN_MAGNITUDE));
     [p2 - p1, p2 - p0, p1 - p0]
         .iter()
         .map(|&edge| {
@@ -581,15 +614,33 @@ pub(super) fn ray_diff_from_cone(&(cone, direction): &(Vec2, Vec3)) -> Vec<Inter
     ray_diff(u * width, v * width, u * spread, v * spread)
 }
 
+/// The parts of one axis's origin and direction changes across the ray, and their alignment.
+fn transverse_parts(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> (Interval3, Interval3, Interval) {
+    let d = interval3(direction);
+    let across = |v: Vec3| interval3(v) - d * interval3(v).dot(d);
+    let (origin, turn) = (across(d_origin), across(d_direction));
+    (origin, turn, origin.dot(turn))
+}
+
+/// Whether each axis of the cone is well-conditioned: the origin and direction changes across the
+/// ray are known to [`WELL_CONDITIONED`] ([`direction_well_conditioned`]; not a change along the
+/// ray within rounding), and the sign of the spread is decided (their alignment does not enclose
+/// 0, or the origin change is exactly 0).
+pub(super) fn transverse_well_conditioned(&(diff, direction): &(RayDiff, Vec3)) -> bool {
+    let decided = |d_origin: Vec3, d_direction: Vec3| {
+        let (origin, turn, alignment) = transverse_parts(d_origin, d_direction, direction);
+        let sign_decided = d_origin == Vec3::ZERO || alignment.lo >= 0.0 || alignment.hi < 0.0;
+        sign_decided && direction_well_conditioned(origin) && direction_well_conditioned(turn)
+    };
+    decided(diff.d_origin_dx, diff.d_direction_dx) && decided(diff.d_origin_dy, diff.d_direction_dy)
+}
+
 /// One axis; the sign of the spread is exact when the origin change is exactly 0 (then the dot
 /// product is exactly 0 on every implementation), else the hull of both where rounding leaves it
 /// open.
 fn transverse_cone(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> [Interval; 2] {
-    let d = interval3(direction);
-    let across = |v: Vec3| interval3(v) - d * interval3(v).dot(d);
-    let (origin, turn) = (across(d_origin), across(d_direction));
+    let (origin, turn, alignment) = transverse_parts(d_origin, d_direction, direction);
     let spread = scaled_length(turn);
-    let alignment = origin.dot(turn);
     let signed = if alignment.lo >= 0.0 || d_origin == Vec3::ZERO {
         spread
     } else if alignment.hi < 0.0 {

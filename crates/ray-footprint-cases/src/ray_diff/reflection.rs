@@ -115,11 +115,13 @@ pub fn refract_ray_diff() -> Record<impl Args + Perturb, impl Value> {
             let eta = prop_oneof![4 => 0.3f32..3.0, 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => 0.0f32..0.01];
             (ray_diff(), normal_and_direction(), derivatives3(), eta)
                 .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
-                .prop_filter("within rounding of the critical angle", |args| {
-                    !enclosure::refraction_determinant(args).contains_zero()
-                })
                 .boxed()
         },
+    )
+    .conditioned(
+        "within rounding of the critical angle (k = 1 - eta^2 (1 - dot(D, N)^2) encloses 0): the \
+         refracted and the reflected branch are both right",
+        |args| !enclosure::refraction_determinant(args).contains_zero(),
     )
     .enclosure(enclosure::refract_ray_diff)
     .found(

@@ -1,6 +1,10 @@
 //! Records of `ray_diff`: Re-intersection of the neighbour rays (RTG Eq. 13).
 
 use super::enclosure;
+use super::enclosure::{
+    determinant_well_conditioned, offsets_well_conditioned, PARALLEL_WITHIN_ROUNDING,
+    REINTERSECTION_ILL_CONDITIONED,
+};
 use super::rows::{delta_rows, offset_rows, plane_intersection_rows, OFFSET};
 use super::strategy::{derivatives3, plane_intersections, well_conditioned_offset_args, F32_ORIGIN_EXPONENT};
 use super::{reference, OffsetArgs, MODULE};
@@ -21,6 +25,9 @@ pub fn intersect_triangle_plane() -> Record<impl Args + Perturb, impl Value> {
         |(o, d, p0, p1, p2)| rd::intersect_triangle_plane(o, d, p0, p1, p2),
         plane_intersections,
     )
+    .conditioned(PARALLEL_WITHIN_ROUNDING, |&(_, d, p0, p1, p2)| {
+        determinant_well_conditioned(d, p0, p1, p2)
+    })
     .enclosure(|&(o, d, p0, p1, p2)| {
         enclosure::intersect_triangle_plane(
             interval3(o),
@@ -59,6 +66,7 @@ pub fn barycentric_offsets() -> Record<OffsetArgs, Derivatives3> {
         // direction; beyond, the ray_diff_f64 module is the tool.
         || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
     )
+    .conditioned(REINTERSECTION_ILL_CONDITIONED, offsets_well_conditioned)
     .enclosure(|a| {
         let (dx, dy) = enclosure::barycentric_offsets(a);
         enclosure::derivatives3(dx, dy)
@@ -80,6 +88,7 @@ pub fn barycentric_deltas() -> Record<OffsetArgs, Vec3> {
         |(m, o, p0, p1, p2, x, y, b)| rd::barycentric_deltas(m, o, p0, p1, p2, x, y, b),
         || well_conditioned_offset_args(F32_ORIGIN_EXPONENT),
     )
+    .conditioned(REINTERSECTION_ILL_CONDITIONED, offsets_well_conditioned)
     .enclosure(|a| {
         let (dx, dy) = enclosure::barycentric_offsets(a);
         (dx.abs() + dy.abs()).components()

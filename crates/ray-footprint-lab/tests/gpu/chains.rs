@@ -8,11 +8,8 @@ use ray_footprint_lab::chains::{
     chain_shader, check_on_the_device, head_on_chain_with_one_saddle, in_plane_chain, reflection_chain_check,
     Comparison, HEAD_ON_CHAINS, IN_PLANE_CHAINS,
 };
-use shader_proptest::{Language, RunConfig};
+use shader_proptest::{Language, RunConfig, MAX_VACUOUS};
 use std::time::Instant;
-
-/// Largest share of the cases whose tolerance may be vacuous, as `verify` asks of every check.
-const MAX_VACUOUS: f64 = 0.01;
 
 /// The chain shader in `language` against its mirror (100,000 chains, tolerances from the interval
 /// enclosure), then [`IN_PLANE_CHAINS`] and [`HEAD_ON_CHAINS`] chains on the device, each sample

@@ -7,7 +7,8 @@
 //!   the lab's own, against its Rust mirror and against each other, in WGSL, GLSL and Slang;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
 //! - [`special_cases`]: every function on special values (zeros, the domain's bounds, tied
-//!   vectors), in WGSL, GLSL and Slang;
+//!   vectors), in WGSL, GLSL, Slang and HLSL: agreement where the function is well-conditioned,
+//!   with at most `MAX_VACUOUS` vacuous cases, and its promises elsewhere;
 //! - [`degenerate`]: the degenerate-input table on the GPU;
 //! - [`rt`]: the ray-tracing renderer's per-pixel values against the mirror;
 //! - [`quality`]: the quality lab at a tiny size (finite metrics, a ground truth that scores

@@ -13,7 +13,7 @@ mod suite;
 mod wgpu_device;
 
 pub use check::{
-    evaluate, Check, Failure, FunctionCheck, Outcome, PreparedCheck, Report, RunConfig, SEED_ENV,
+    evaluate, Check, Failure, FunctionCheck, Outcome, PreparedCheck, Report, RunConfig, MAX_VACUOUS, SEED_ENV,
 };
 pub use compute::ComputeKernel;
 pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};

@@ -15,7 +15,7 @@ mod report;
 mod shrink;
 
 pub use config::{RunConfig, SEED_ENV};
-pub use report::{Failure, Outcome, Report};
+pub use report::{Failure, Outcome, Report, MAX_VACUOUS};
 
 use super::call::compile_call;
 use super::compute::{ComputeKernel, Dispatch};
@@ -178,6 +178,27 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         FunctionCheck::with_parts(
             self.function.clone(),
             perturbed,
+            Arc::clone(&self.mirror),
+            self.tolerance.clone(),
+        )
+    }
+
+    /// The same check (function, mirror, tolerance) on those of its cases that `keep` accepts;
+    /// `reason` names the others. A filter after [`FunctionCheck::with_perturbation`] keeps the
+    /// perturbed cases of a domain, for example those where the function is well-conditioned.
+    pub fn with_filter(
+        &self,
+        reason: &'static str,
+        keep: impl Fn(&A) -> bool + Clone + Send + Sync + 'static,
+    ) -> FunctionCheck<A, R> {
+        let strategy = Arc::clone(&self.strategy);
+        let filtered = move || {
+            let keep = keep.clone();
+            strategy().prop_filter(reason, move |args| keep(args))
+        };
+        FunctionCheck::with_parts(
+            self.function.clone(),
+            filtered,
             Arc::clone(&self.mirror),
             self.tolerance.clone(),
         )

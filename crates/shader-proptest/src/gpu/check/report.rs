@@ -12,6 +12,10 @@ use std::fmt;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
+/// Largest share of a check's cases whose tolerance may be vacuous ([`Report::vacuous`]): above
+/// it, the check says too little about its function to count as passed.
+pub const MAX_VACUOUS: f64 = 0.01;
+
 /// How a check ended.
 #[derive(Clone, Debug)]
 pub enum Outcome {
