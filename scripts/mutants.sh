@@ -8,17 +8,17 @@
 # `mutants` profile (Cargo.toml: optimised, no debug information).
 #
 # Usage: scripts/mutants.sh [OUT_DIR] [cargo-mutants arguments...]
-#   scripts/mutants.sh target/mutants -j 8                      every mutant, 8 at a time
-#   scripts/mutants.sh target/mutants --shard 0/12 --sharding round-robin
+#   scripts/mutants.sh target/mutants-report -j 8                      every mutant, 8 at a time
+#   scripts/mutants.sh target/mutants-report --shard 0/12 --sharding round-robin
 #                                                               every 12th mutant, a sample
 #
 # cargo-mutants (the version below) is installed with `cargo install` when missing. Writes
-# OUT_DIR/mutants.out (default target/mutants) and prints the counts, the score (caught over
+# OUT_DIR/mutants.out (default target/mutants-report) and prints the counts, the score (caught over
 # viable mutants: caught, missed and timed out) and every surviving mutant.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 version=27.1.0
-out=${1:-$root/target/mutants}
+out=${1:-$root/target/mutants-report}
 shift || true
 if ! cargo mutants --version 2>/dev/null | grep -q "$version"; then
     cargo install --locked --version "$version" cargo-mutants
