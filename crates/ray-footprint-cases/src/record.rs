@@ -303,48 +303,6 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         self.well_conditioned(self.every_special_case())
     }
 
-    /// Draws `count` special-value cases from `seed` and runs those outside the well-conditioned
-    /// domain on the device in one dispatch: each result must keep the record's promises (finite
-    /// for finite inputs, and its range or property).
-    fn run_ill_conditioned(
-        &self,
-        gpu: &Gpu,
-        language: Language,
-        count: usize,
-        seed: u64,
-    ) -> Result<Option<IllConditioned>, Error> {
-        let Some(Conditioning { reason, holds }) = self.conditioning else {
-            return Ok(None);
-        };
-        let strategy = self.every_special_case().strategy();
-        let mut runner = seeded_runner(seed);
-        let drawn: Vec<A> = (0..count)
-            .filter_map(|_| strategy.new_tree(&mut runner).ok().map(|tree| tree.current()))
-            .collect();
-        let cases: Vec<A> = drawn.iter().filter(|args| !holds(args)).cloned().collect();
-        let shader = self.module.shader(language);
-        let results: Vec<R> = if cases.is_empty() {
-            Vec::new()
-        } else {
-            evaluate(gpu, &shader, &format!("rf_{}", self.function), &cases)?
-        };
-        let failures = cases
-            .iter()
-            .zip(&results)
-            .filter(|(args, _)| args.is_finite())
-            .filter_map(|(args, result)| {
-                let broken = self.broken_promises(args, result);
-                (!broken.is_empty()).then(|| format!("{args:?} gave {result:?}: {}", broken.join("; ")))
-            })
-            .collect();
-        Ok(Some(IllConditioned {
-            reason,
-            drawn: drawn.len(),
-            run: cases.len(),
-            failures,
-        }))
-    }
-
     fn broken_promises(&self, args: &A, result: &R) -> Vec<String> {
         let mut components = Vec::new();
         result.components(&mut components);
@@ -445,7 +403,36 @@ impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
         count: usize,
         seed: u64,
     ) -> Result<Option<IllConditioned>, Error> {
-        self.run_ill_conditioned(gpu, language, count, seed)
+        let Some(Conditioning { reason, holds }) = self.conditioning else {
+            return Ok(None);
+        };
+        let strategy = self.every_special_case().strategy();
+        let mut runner = seeded_runner(seed);
+        let drawn: Vec<A> = (0..count)
+            .filter_map(|_| strategy.new_tree(&mut runner).ok().map(|tree| tree.current()))
+            .collect();
+        let cases: Vec<A> = drawn.iter().filter(|args| !holds(args)).cloned().collect();
+        let shader = self.module.shader(language);
+        let results: Vec<R> = if cases.is_empty() {
+            Vec::new()
+        } else {
+            evaluate(gpu, &shader, &format!("rf_{}", self.function), &cases)?
+        };
+        let failures = cases
+            .iter()
+            .zip(&results)
+            .filter(|(args, _)| args.is_finite())
+            .filter_map(|(args, result)| {
+                let broken = self.broken_promises(args, result);
+                (!broken.is_empty()).then(|| format!("{args:?} gave {result:?}: {}", broken.join("; ")))
+            })
+            .collect();
+        Ok(Some(IllConditioned {
+            reason,
+            drawn: drawn.len(),
+            run: cases.len(),
+            failures,
+        }))
     }
 
     fn has_fuzz_draw(&self) -> bool {
