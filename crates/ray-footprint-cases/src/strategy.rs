@@ -4,6 +4,10 @@
 //! widths, curvatures), unit vectors are unit length, angles are radians. Each strategy mixes the
 //! ordinary range with the edges of that domain: zero, tiny and huge values, grazing angles and
 //! degenerate triangles.
+//!
+//! Floats in a range are drawn with `shader_proptest::draw::uniform` and choices with
+//! `shader_proptest::one_of!`, which cost a fraction of proptest's float ranges and `prop_oneof!`
+//! (generating the cases is most of a check's work on a fast device).
 
 use glam::{Mat4, Vec2, Vec3};
 use proptest::prelude::*;
