@@ -26,6 +26,7 @@
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh costs OUT_DIR
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh seeds OUT_DIR SEED...
+#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh speed OUT_DIR
 #
 #    Both unpack the Vulkan loader and its GL/X libraries into / where the system has no loader,
 #    and the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under
@@ -49,6 +50,10 @@
 #                                                                           cost_quality.log, cost_quality.png
 #      costs-summary.txt (also printed last)
 #    `seeds` runs the GPU test binary once per seed     -> gpu-tests-seed-SEED.log, seeds-summary.txt
+#    `speed` runs bench verification_speed on every processor with a SPIR-V cache
+#      (SHADER_PROPTEST_SPIRV_CACHE): one pass that fills a cache and warms the machine, then two
+#      rounds of a pass with an empty cache (cold) and one with the filled cache (warm)
+#                                            -> speed-ROUND-cold.log, speed-ROUND-warm.log, speed-summary.txt
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -247,6 +252,36 @@ seeds() {
     } | tee "$out/seeds-summary.txt"
 }
 
+# verification_speed on every processor: a pass that fills a SPIR-V cache (and warms the clocks),
+# then rounds of an empty cache (cold) and the filled one (warm), interleaved.
+speed() {
+    local out=${1:?usage: nvidia-run.sh speed OUT_DIR}
+    mkdir -p "$out"
+    out=$(cd "$out" && pwd)
+    prepare
+    local bin="$PACK/bin" threads filled round cold
+    threads=$(nproc)
+    filled=$(mktemp -d)
+    SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed, filling" "$out/speed-fill.log" \
+        "$bin/verification_speed" --threads "$threads"
+    for round in 1 2; do
+        cold=$(mktemp -d)
+        SHADER_PROPTEST_SPIRV_CACHE=$cold step "speed $round, cold cache" "$out/speed-$round-cold.log" \
+            "$bin/verification_speed" --threads "$threads"
+        rm -rf "$cold"
+        SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed $round, warm cache" "$out/speed-$round-warm.log" \
+            "$bin/verification_speed" --threads "$threads"
+    done
+    rm -rf "$filled"
+    {
+        printf '%s\n' "${STEPS[@]}"
+        for log in "$out"/speed-[12]-*.log; do
+            echo "$(basename "$log" .log): $(grep -A2 '^| threads' "$log" | tail -n 1)"
+        done
+        sed -n '/^| phase/,$p' "$out/speed-2-warm.log"
+    } | tee "$out/speed-summary.txt"
+}
+
 # The lines that say how each step went.
 summary() {
     local out=$1
@@ -293,8 +328,9 @@ case "${1:-}" in
     run) shift && run "$@" ;;
     costs) shift && costs "$@" ;;
     seeds) shift && seeds "$@" ;;
+    speed) shift && speed "$@" ;;
     *)
-        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED..." >&2
+        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED... | speed OUT_DIR" >&2
         exit 2
         ;;
 esac

@@ -19,6 +19,7 @@ use proptest::strategy::BoxedStrategy;
 use ray_footprint::ray_diff_f64 as rd64;
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3_f64, Interval};
+use shader_proptest::one_of;
 use shader_proptest::{Args, Value};
 
 /// Why a re-intersection is left out of the f64 checks ([`enclosure::offsets_well_conditioned_f64`]).
@@ -56,7 +57,7 @@ fn determinant_well_conditioned_f64(&(_, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec
 /// The arguments of `intersect_triangle_plane_f64`: an origin, a unit or any direction and a
 /// triangle whose f64 determinant is well-conditioned.
 fn plane_intersections_f64() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec3, Vec3)> {
-    let direction = prop_oneof![3 => unit_vec3(), 1 => vec3()];
+    let direction = one_of![3 => unit_vec3(), 1 => vec3()];
     (vec3(), direction, triangle())
         .prop_map(|(o, d, p)| (o, d, p[0], p[1], p[2]))
         .prop_filter(PARALLEL_WITHIN_ROUNDING, determinant_well_conditioned_f64)

@@ -4,10 +4,16 @@
 //! widths, curvatures), unit vectors are unit length, angles are radians. Each strategy mixes the
 //! ordinary range with the edges of that domain: zero, tiny and huge values, grazing angles and
 //! degenerate triangles.
+//!
+//! Floats in a range are drawn with `shader_proptest::draw::uniform` and choices with
+//! `shader_proptest::one_of!`, which cost a fraction of proptest's float ranges and `prop_oneof!`
+//! (generating the cases is most of a check's work on a fast device).
 
 use glam::{Mat4, Vec2, Vec3};
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
+use shader_proptest::draw::uniform;
+use shader_proptest::one_of;
 use std::fmt::Debug;
 
 /// Largest magnitude in the tested domain.
@@ -23,11 +29,11 @@ fn signed(magnitude: BoxedStrategy<f32>) -> BoxedStrategy<f32> {
 
 /// A non-negative magnitude: mostly ordinary, sometimes 0, tiny or huge (log-uniform at the edges).
 pub fn magnitude() -> BoxedStrategy<f32> {
-    prop_oneof![
-        6 => 0.0f32..1.0e3,
+    one_of![
+        6 => uniform(0.0, 1.0e3),
         1 => Just(0.0f32),
-        1 => (-12.0f32..-3.0).prop_map(|e| 10f32.powf(e)),
-        1 => (3.0f32..12.0).prop_map(|e| 10f32.powf(e)),
+        1 => uniform(-12.0, -3.0).prop_map(|e| 10f32.powf(e)),
+        1 => uniform(3.0, 12.0).prop_map(|e| 10f32.powf(e)),
     ]
     .boxed()
 }
@@ -44,34 +50,34 @@ pub fn distance() -> BoxedStrategy<f32> {
 
 /// An angle in radians: mostly small (pixel spreads), sometimes 0, large, or negative (converging).
 pub fn angle() -> BoxedStrategy<f32> {
-    prop_oneof![
-        4 => (-9.0f32..-1.0).prop_map(|e| 10f32.powf(e)),
-        2 => -3.2f32..3.2,
+    one_of![
+        4 => uniform(-9.0, -1.0).prop_map(|e| 10f32.powf(e)),
+        2 => uniform(-3.2, 3.2),
         1 => Just(0.0f32),
-        1 => (-9.0f32..-1.0).prop_map(|e| -(10f32.powf(e))),
+        1 => uniform(-9.0, -1.0).prop_map(|e| -(10f32.powf(e))),
     ]
     .boxed()
 }
 
 /// A vertical field of view in radians, including 0, negative and wider-than-clamp values.
 pub fn fov_y() -> BoxedStrategy<f32> {
-    prop_oneof![
-        6 => 0.05f32..3.0,
+    one_of![
+        6 => uniform(0.05, 3.0),
         1 => Just(0.0f32),
-        1 => (-9.0f32..-2.0).prop_map(|e| 10f32.powf(e)),
-        1 => 3.0f32..4.0,
-        1 => -3.0f32..0.0,
+        1 => uniform(-9.0, -2.0).prop_map(|e| 10f32.powf(e)),
+        1 => uniform(3.0, 4.0),
+        1 => uniform(-3.0, 0.0),
     ]
     .boxed()
 }
 
 /// An image or texture size in pixels: ordinary sizes, 0, 1, fractions and negatives (clamped).
 pub fn pixels() -> BoxedStrategy<f32> {
-    prop_oneof![
+    one_of![
         6 => (1u32..16384).prop_map(|h| h as f32),
         1 => Just(0.0f32),
         1 => Just(1.0f32),
-        1 => -100.0f32..1.0,
+        1 => uniform(-100.0, 1.0),
     ]
     .boxed()
 }
@@ -98,15 +104,15 @@ pub fn vec3() -> BoxedStrategy<Vec3> {
 
 /// A vector with ordinary components (a position or derivative of moderate size).
 pub fn small_vec3() -> BoxedStrategy<Vec3> {
-    (-10.0f32..10.0, -10.0f32..10.0, -10.0f32..10.0)
+    (uniform(-10.0, 10.0), uniform(-10.0, 10.0), uniform(-10.0, 10.0))
         .prop_map(|(x, y, z)| Vec3::new(x, y, z))
         .boxed()
 }
 
 /// A unit vector (axis-aligned ones included).
 pub fn unit_vec3() -> BoxedStrategy<Vec3> {
-    prop_oneof![
-        8 => (-1.0f32..1.0, 0.0f32..std::f32::consts::TAU).prop_map(|(z, phi)| {
+    one_of![
+        8 => (uniform(-1.0, 1.0), uniform(0.0, std::f32::consts::TAU)).prop_map(|(z, phi)| {
             let r = (1.0 - z * z).max(0.0).sqrt();
             Vec3::new(r * phi.cos(), r * phi.sin(), z).normalize()
         }),
@@ -117,9 +123,9 @@ pub fn unit_vec3() -> BoxedStrategy<Vec3> {
 
 /// A unit normal and a unit ray direction, from head-on to grazing (|dot| down to 0).
 pub fn normal_and_direction() -> BoxedStrategy<(Vec3, Vec3)> {
-    let cosine = prop_oneof![
-        4 => 0.0f32..1.0,
-        2 => (-8.0f32..-2.0).prop_map(|e| 10f32.powf(e)),
+    let cosine = one_of![
+        4 => uniform(0.0, 1.0),
+        2 => uniform(-8.0, -2.0).prop_map(|e| 10f32.powf(e)),
         1 => Just(0.0f32),
         1 => Just(1.0f32),
     ];
@@ -140,29 +146,34 @@ pub fn triangle() -> BoxedStrategy<[Vec3; 3]> {
     let ordinary = (small_vec3(), small_vec3(), small_vec3()).prop_map(|(a, b, c)| [a, b, c]);
     let scaled = (
         ordinary.clone(),
-        prop_oneof![Just(TINY), Just(1.0e-6f32), Just(1.0e6f32), Just(1.0e11f32)],
+        one_of![Just(TINY), Just(1.0e-6f32), Just(1.0e6f32), Just(1.0e11f32)],
     )
         .prop_map(|(t, s)| t.map(|p| p * s));
-    let sliver = (small_vec3(), small_vec3(), 0.0f32..1.0, -6.0f32..-2.0)
+    let sliver = (small_vec3(), small_vec3(), uniform(0.0, 1.0), uniform(-6.0, -2.0))
         .prop_map(|(a, b, along, e)| [a, b, a.lerp(b, along) + Vec3::splat(10f32.powf(e))]);
     let degenerate = (small_vec3(), small_vec3()).prop_map(|(a, b)| [a, b, a]);
-    prop_oneof![5 => ordinary, 1 => scaled, 1 => sliver, 1 => degenerate].boxed()
+    one_of![5 => ordinary, 1 => scaled, 1 => sliver, 1 => degenerate].boxed()
 }
 
 /// UV coordinates of a triangle: ordinary, tiny, collinear or all equal.
 pub fn uv_triangle() -> BoxedStrategy<[Vec2; 3]> {
-    let uv = || (-2.0f32..2.0, -2.0f32..2.0).prop_map(|(u, v)| Vec2::new(u, v));
+    let uv = || (uniform(-2.0, 2.0), uniform(-2.0, 2.0)).prop_map(|(u, v)| Vec2::new(u, v));
     let ordinary = (uv(), uv(), uv()).prop_map(|(a, b, c)| [a, b, c]);
     let tiny = (uv(), uv(), uv()).prop_map(|(a, b, c)| [a, a + (b - a) * 1.0e-6, a + (c - a) * 1.0e-6]);
-    let collinear = (uv(), uv(), 0.0f32..1.0).prop_map(|(a, b, t)| [a, b, a.lerp(b, t)]);
+    let collinear = (uv(), uv(), uniform(0.0, 1.0)).prop_map(|(a, b, t)| [a, b, a.lerp(b, t)]);
     let equal = uv().prop_map(|a| [a, a, a]);
-    prop_oneof![5 => ordinary, 1 => tiny, 1 => collinear, 1 => equal].boxed()
+    one_of![5 => ordinary, 1 => tiny, 1 => collinear, 1 => equal].boxed()
 }
 
 /// The inverse projection matrix of a perspective camera, OpenGL's or Vulkan's (y-flipped): field of
 /// view, aspect ratio and near plane drawn, the far plane at 1000 times the near one.
 pub fn perspective_proj_inv() -> BoxedStrategy<Mat4> {
-    (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>())
+    (
+        uniform(0.05, 3.0),
+        uniform(0.2, 5.0),
+        uniform(0.01, 10.0),
+        any::<bool>(),
+    )
         .prop_map(|(fov, aspect, near, vulkan)| {
             let projection = if vulkan {
                 glam::camera::rh::proj::vulkan::perspective(fov, aspect, near, near * 1000.0)

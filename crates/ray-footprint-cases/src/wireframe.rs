@@ -23,6 +23,7 @@ use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{self as wf, WireframeSettings, WireframeSettingsIo, WIREFRAME_DEFAULT};
+use shader_proptest::one_of;
 use shader_proptest::{Args, Value};
 use strategy::{
     barycentrics, edge_ramp_component, hit, position_along_edge, settings, settings_io, size, stipple_length,
@@ -114,7 +115,7 @@ pub fn edge_position() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "edge_position",
         |(b,)| wf::edge_position(b),
-        || one_argument(prop_oneof![3 => barycentrics(), 1 => vec3()]),
+        || one_argument(one_of![3 => barycentrics(), 1 => vec3()]),
     )
     .reference(reference::edge_position())
     .fuzz(|d| (d.vec3(),))

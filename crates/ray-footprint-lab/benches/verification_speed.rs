@@ -12,10 +12,12 @@
 //! `cargo bench -p ray-footprint-lab --bench verification_speed [-- --cases N] [--threads N]`
 //!
 //! `--cases` sets the cases per check and language (100,000, as `verify`); `--threads` measures
-//! one thread count only.
+//! one thread count only. With `SHADER_PROPTEST_SPIRV_CACHE` set, kernels compiled by an earlier
+//! run come from that cache (`shader_proptest::compile::SPIRV_CACHE_ENV`).
 
 use ray_footprint_cases::agreement::run_all_checks;
 use ray_footprint_lab::cli::{options_or_exit, positive_count};
+use shader_proptest::compile::SPIRV_CACHE_ENV;
 use shader_proptest::{Gpu, Outcome, Phase, PhaseTimes, RunConfig};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -138,11 +140,13 @@ fn main() -> ExitCode {
         }
     };
     let processors = std::thread::available_parallelism().map_or(1, usize::from);
+    let cache = std::env::var(SPIRV_CACHE_ENV).unwrap_or_default();
     println!(
-        "device: {} ({}); {processors} processors; {} cases per check and language",
+        "device: {} ({}); {processors} processors; {} cases per check and language; SPIR-V cache: {}",
         gpu.name(),
         gpu.driver(),
-        options.cases
+        options.cases,
+        if cache.is_empty() { "off" } else { &cache }
     );
     println!("| threads | checks run | not run | cases | seconds | verified evaluations/s |");
     println!("| ---: | ---: | ---: | ---: | ---: | ---: |");

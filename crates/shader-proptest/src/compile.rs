@@ -4,7 +4,10 @@
 //! one for their kernels and layout probes, and any other shader a user builds with this crate goes
 //! through them too.
 
+mod cache;
+
 pub use crate::back::Language;
+pub use cache::SPIRV_CACHE_ENV;
 use std::fmt;
 use std::path::Path;
 use std::process::{Command, Output};
@@ -176,9 +179,14 @@ pub(crate) fn glslang(
     for dir in include_dirs {
         command.arg(format!("-I{}", dir.display()));
     }
-    run_compiler(command, source, stage.extension(), |command, input, output| {
-        command.arg("-o").arg(output).arg(input);
-    })
+    run_compiler(
+        command,
+        (source, stage.extension()),
+        include_dirs,
+        |command, input, output| {
+            command.arg("-o").arg(output).arg(input);
+        },
+    )
 }
 
 /// Compiles HLSL (a whole shader with the entry point `main`) as `stage` for `target` with
@@ -197,9 +205,14 @@ pub fn compile_hlsl_with_glslang(
     for dir in include_dirs {
         command.arg(format!("-I{}", dir.display()));
     }
-    run_compiler(command, source, "hlsl", |command, input, output| {
-        command.arg("-o").arg(output).arg(input);
-    })
+    run_compiler(
+        command,
+        (source, "hlsl"),
+        include_dirs,
+        |command, input, output| {
+            command.arg("-o").arg(output).arg(input);
+        },
+    )
 }
 
 /// Compiles Slang (a whole shader with the entry point `main`) as `stage` for `target` with slangc,
@@ -261,9 +274,14 @@ fn run_slangc(
     for dir in search_dirs {
         command.arg("-I").arg(dir);
     }
-    let mut words = run_compiler(command, source, extension, |command, input, output| {
-        command.arg(input).arg("-o").arg(output);
-    })?;
+    let mut words = run_compiler(
+        command,
+        (source, extension),
+        search_dirs,
+        |command, input, output| {
+            command.arg(input).arg("-o").arg(output);
+        },
+    )?;
     source_language_unknown(&mut words);
     Ok(words)
 }
@@ -290,10 +308,33 @@ fn source_language_unknown(words: &mut [u32]) {
 const GLSLANG_MISSING: &str = "Missing functionality";
 
 /// Runs a command-line compiler on `source`, written to a file with `extension` in a fresh
-/// temporary directory; `arguments` adds the input and output paths to `command`. Returns the
-/// output's SPIR-V words, or the compiler's log naming the input file; a run that printed
-/// [`GLSLANG_MISSING`] counts as failed.
+/// temporary directory, `include_dirs` on its include path; `arguments` adds the input and output
+/// paths to `command`. Returns the output's SPIR-V words, or the compiler's log naming the input
+/// file; a run that printed [`GLSLANG_MISSING`] counts as failed. With [`SPIRV_CACHE_ENV`] set,
+/// the words of a compile of the same input by the same compiler come from the cache
+/// (`compile/cache.rs`), and a new compile's words go into it.
 fn run_compiler(
+    command: Command,
+    (source, extension): (&str, &str),
+    include_dirs: &[&Path],
+    arguments: impl FnOnce(&mut Command, &Path, &Path),
+) -> Result<Vec<u32>, CompileError> {
+    let Some(dir) = cache::directory() else {
+        return compile_in_temporary_directory(command, source, extension, arguments);
+    };
+    let Some(key) = cache::key(&command, extension, source, include_dirs) else {
+        return compile_in_temporary_directory(command, source, extension, arguments);
+    };
+    if let Some(words) = cache::lookup(&dir, &key) {
+        return Ok(words);
+    }
+    let words = compile_in_temporary_directory(command, source, extension, arguments)?;
+    cache::store(&dir, &key, &words);
+    Ok(words)
+}
+
+/// [`run_compiler`] without the cache.
+fn compile_in_temporary_directory(
     mut command: Command,
     source: &str,
     extension: &str,

@@ -81,6 +81,8 @@ the compilers, the value descriptions, the tolerances and the layout reader.
 
 mod back;
 pub mod compile;
+#[cfg(feature = "gpu")]
+pub mod draw;
 pub mod interval;
 mod kernel;
 pub mod layout;

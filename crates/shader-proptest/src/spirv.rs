@@ -19,7 +19,7 @@ use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The first word of every SPIR-V module.
-const MAGIC: u32 = 0x0723_0203;
+pub(crate) const MAGIC: u32 = 0x0723_0203;
 /// Words in the module header (magic, version, generator, bound, schema).
 const HEADER_WORDS: usize = 5;
 

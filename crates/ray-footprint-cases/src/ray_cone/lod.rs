@@ -12,6 +12,7 @@ use crate::strategy::{
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use shader_proptest::draw::uniform;
 use shader_proptest::tolerance::{dot_error, log2_error, ulps, ULP};
 use shader_proptest::{Args, Value};
 
@@ -287,7 +288,12 @@ pub fn texture_lod() -> Record<TextureLodArgs, f32> {
         "texture_lod",
         |(base, width, size, normal, direction)| rc::texture_lod(base, width, size, normal, direction),
         || {
-            (-20.0f32..20.0, scalar(), image_size(), normal_and_direction())
+            (
+                uniform(-20.0, 20.0),
+                scalar(),
+                image_size(),
+                normal_and_direction(),
+            )
                 .prop_map(|(base, width, size, (n, d))| (base, width, size, n, d))
                 .boxed()
         },
@@ -354,7 +360,7 @@ pub fn texture_gradient() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "texture_gradient",
         |(uv_footprint, scale)| rc::texture_gradient(uv_footprint, scale),
-        || (scalar(), -1.0f32..4.0).boxed(),
+        || (scalar(), uniform(-1.0, 4.0)).boxed(),
     )
     // One correctly rounded product.
     .bound(|_, _, _| f32::MIN_POSITIVE)

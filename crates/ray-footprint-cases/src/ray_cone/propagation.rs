@@ -12,6 +12,7 @@ use crate::strategy::{angle, distance, normal_and_direction, scalar, small_vec3,
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use shader_proptest::draw::uniform;
 use shader_proptest::tolerance::{atan_error, ulps, ULP};
 use shader_proptest::{Args, Value};
 use std::f32::consts::PI;
@@ -233,7 +234,7 @@ pub fn surface_spread_angle() -> Record<impl Args + Perturb, impl Value> {
             (
                 angle(),
                 prop::sample::select(vec![1.0f32, -1.0]),
-                -4.0f32..4.0,
+                uniform(-4.0, 4.0),
                 angle(),
             )
                 .boxed()

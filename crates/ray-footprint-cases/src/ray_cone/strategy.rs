@@ -6,6 +6,8 @@ use crate::strategy::{angle, perspective_proj_inv, scalar, triangle, uv_triangle
 use glam::{Mat4, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{PackedRayCone, RayCone};
+use shader_proptest::draw::uniform;
+use shader_proptest::one_of;
 use shader_proptest::tolerance::dot_error;
 
 /// A cone: a width from [`scalar`], a spread angle from [`angle`].
@@ -33,13 +35,13 @@ pub(super) fn packed_ray_cone() -> BoxedStrategy<PackedRayCone> {
 /// An inverse projection matrix of a perspective camera (y-flipped or not), or an arbitrary matrix.
 pub(super) fn proj_inv() -> BoxedStrategy<Mat4> {
     let arbitrary = prop::array::uniform16(scalar()).prop_map(|cols| Mat4::from_cols_array(&cols));
-    prop_oneof![3 => perspective_proj_inv(), 1 => arbitrary].boxed()
+    one_of![3 => perspective_proj_inv(), 1 => arbitrary].boxed()
 }
 
 /// Index ratios: ordinary, 1, glass in and out, 0, and anything in the domain.
 pub(super) fn eta() -> BoxedStrategy<f32> {
-    prop_oneof![
-        4 => 0.3f32..3.0,
+    one_of![
+        4 => uniform(0.3, 3.0),
         1 => Just(1.0f32),
         1 => Just(1.5f32),
         1 => Just(1.0f32 / 1.5),

@@ -11,6 +11,7 @@ use crate::strategy::{distance, image_size, one_argument, triangle, uv_triangle,
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, DIFF_MAX_VALUE, DIFF_MIN_MAGNITUDE};
+use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval2, Interval};
 use shader_proptest::{Args, Value};
 
@@ -318,7 +319,7 @@ pub fn sample_grad_gradients() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "sample_grad_gradients",
         |(g, scale)| rd::sample_grad_gradients(g, scale),
-        || (derivatives2(), -1.0f32..4.0).boxed(),
+        || (derivatives2(), uniform(-1.0, 4.0)).boxed(),
     )
     .enclosure(|&(g, scale)| {
         let scale = Interval::exact(scale.max(0.0));

@@ -12,7 +12,9 @@ use proptest::prelude::*;
 use ray_footprint::ray_diff::{
     self as rd, Derivatives2, Derivatives3, TriplanarGradients, DIFF_MIN_MAGNITUDE,
 };
+use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval2, interval3, Interval, Interval3, IntervalVec};
+use shader_proptest::one_of;
 use shader_proptest::{Args, Value};
 
 /// `rf_planar_mapping_gradients`.
@@ -22,7 +24,13 @@ pub fn planar_mapping_gradients() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "planar_mapping_gradients",
         |(dp, scale)| rd::planar_mapping_gradients(dp, scale),
-        || (derivatives3(), vec2_of(-10.0f32..10.0, -10.0f32..10.0)).boxed(),
+        || {
+            (
+                derivatives3(),
+                vec2_of(uniform(-10.0, 10.0), uniform(-10.0, 10.0)),
+            )
+                .boxed()
+        },
     )
     .enclosure(|&(dp, scale)| {
         let project = |v: Vec3| interval2(Vec2::new(v.x, v.z)) * interval2(scale);
@@ -62,8 +70,8 @@ pub fn triplanar_weights() -> Record<impl Args + Perturb, impl Value> {
         "triplanar_weights",
         |(normal, sharpness)| rd::triplanar_weights(normal, sharpness),
         || {
-            let normal = prop_oneof![8 => unit_vec3(), 1 => Just(Vec3::ZERO)];
-            (normal, prop_oneof![4 => 0.0f32..16.0, 1 => -2.0f32..100.0]).boxed()
+            let normal = one_of![8 => unit_vec3(), 1 => Just(Vec3::ZERO)];
+            (normal, one_of![4 => uniform(0.0, 16.0), 1 => uniform(-2.0, 100.0)]).boxed()
         },
     )
     .enclosure(|&(normal, sharpness)| enclosure::triplanar_weights(normal, sharpness))
@@ -103,7 +111,7 @@ pub fn triplanar_gradients() -> Record<impl Args + Perturb, impl Value> {
         MODULE,
         "triplanar_gradients",
         |(dp, scale)| rd::triplanar_gradients(dp, scale),
-        || (derivatives3(), -10.0f32..10.0).boxed(),
+        || (derivatives3(), uniform(-10.0, 10.0)).boxed(),
     )
     .enclosure(|&(dp, scale)| {
         let (dx, dy) = (

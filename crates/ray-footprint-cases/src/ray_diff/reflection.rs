@@ -11,6 +11,8 @@ use crate::strategy::{normal_and_direction, unit_vec3, vec2_of};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, RayDiff, DIFF_MIN_MAGNITUDE};
+use shader_proptest::draw::uniform;
+use shader_proptest::one_of;
 use shader_proptest::{Args, Value};
 
 /// `rf_normal_derivatives`.
@@ -26,7 +28,7 @@ pub fn normal_derivatives() -> Record<impl Args + Perturb, impl Value> {
         || {
             (
                 (unit_vec3(), unit_vec3(), unit_vec3()),
-                vec2_of(-1.0f32..2.0, -1.0f32..2.0),
+                vec2_of(uniform(-1.0, 2.0), uniform(-1.0, 2.0)),
                 derivatives2(),
             )
                 .prop_map(|((n0, n1, n2), uv, b)| (n0, n1, n2, uv, b))
@@ -112,7 +114,7 @@ pub fn refract_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         // Within rounding of the critical angle (the enclosure of `k` contains 0) either branch is
         // right and the flag's tolerance would be vacuous: those cases are checked separately.
         || {
-            let eta = prop_oneof![4 => 0.3f32..3.0, 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => 0.0f32..0.01];
+            let eta = one_of![4 => uniform(0.3, 3.0), 1 => Just(1.0f32), 1 => Just(0.0f32), 1 => uniform(0.0, 0.01)];
             (ray_diff(), normal_and_direction(), derivatives3(), eta)
                 .prop_map(|(diff, (n, d), dn, eta)| (diff, d, n, dn, eta))
                 .boxed()

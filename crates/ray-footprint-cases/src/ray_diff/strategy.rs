@@ -14,10 +14,16 @@ use crate::strategy::{
 use glam::{Mat4, Quat, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{Derivatives2, Derivatives3, GBufferSample, RayDiff};
+use shader_proptest::draw::uniform;
+use shader_proptest::one_of;
 
 /// A pixel inside an image (or, sometimes, outside it) and the image size (from [`image_size`]).
 fn pixel_and_size() -> BoxedStrategy<(Vec2, Vec2)> {
-    (image_size(), vec2_of(0.0f32..1.0, 0.0f32..1.0), any::<bool>())
+    (
+        image_size(),
+        vec2_of(uniform(0.0, 1.0), uniform(0.0, 1.0)),
+        any::<bool>(),
+    )
         .prop_map(|(size, fraction, outside)| {
             let pixel = if outside {
                 fraction * 40000.0 - 20000.0
@@ -31,7 +37,7 @@ fn pixel_and_size() -> BoxedStrategy<(Vec2, Vec2)> {
 
 /// A rotation (axis-aligned ones included).
 fn rotation() -> BoxedStrategy<Quat> {
-    (unit_vec3(), 0.0f32..std::f32::consts::TAU)
+    (unit_vec3(), uniform(0.0, std::f32::consts::TAU))
         .prop_map(|(axis, angle)| Quat::from_axis_angle(axis, angle))
         .boxed()
 }
@@ -53,13 +59,14 @@ fn rigid() -> BoxedStrategy<Mat4> {
 /// An inverse projection matrix: perspective (OpenGL or Vulkan, y-flipped), or arbitrary with
 /// moderate entries.
 fn proj_inv() -> BoxedStrategy<Mat4> {
-    let arbitrary = prop::array::uniform16(-10.0f32..10.0).prop_map(|cols| Mat4::from_cols_array(&cols));
-    prop_oneof![3 => perspective_proj_inv(), 1 => arbitrary].boxed()
+    let arbitrary =
+        prop::array::uniform16(uniform(-10.0, 10.0)).prop_map(|cols| Mat4::from_cols_array(&cols));
+    one_of![3 => perspective_proj_inv(), 1 => arbitrary].boxed()
 }
 
 /// A differential vector: ordinary, small (pixel-sized), or anywhere in the domain.
 pub(super) fn differential_vec3() -> BoxedStrategy<Vec3> {
-    prop_oneof![
+    one_of![
         3 => small_vec3(),
         2 => small_vec3().prop_map(|v| v * 1.0e-4),
         1 => vec3(),
@@ -71,7 +78,7 @@ pub(super) fn differential_vec3() -> BoxedStrategy<Vec3> {
 /// A ray differential: origin differentials from `differential_vec3`, direction differentials
 /// ordinary or pixel-sized.
 pub(super) fn ray_diff() -> BoxedStrategy<RayDiff> {
-    let direction = || prop_oneof![small_vec3(), small_vec3().prop_map(|v| v * 1.0e-4)];
+    let direction = || one_of![small_vec3(), small_vec3().prop_map(|v| v * 1.0e-4)];
     (differential_vec3(), differential_vec3(), direction(), direction())
         .prop_map(|(a, b, c, d)| RayDiff::new(a, b, c, d))
         .boxed()
@@ -79,7 +86,7 @@ pub(super) fn ray_diff() -> BoxedStrategy<RayDiff> {
 
 /// `(du, dv)` derivatives: ordinary, tiny or huge.
 pub(super) fn derivatives2() -> BoxedStrategy<Derivatives2> {
-    let component = || prop_oneof![3 => -10.0f32..10.0, 1 => scalar()];
+    let component = || one_of![3 => uniform(-10.0, 10.0), 1 => scalar()];
     (
         vec2_of(component(), component()),
         vec2_of(component(), component()),
@@ -97,7 +104,7 @@ pub(super) fn derivatives3() -> BoxedStrategy<Derivatives3> {
 
 /// A hit's barycentrics `(w, u, v)`, inside the triangle or not, summing to 1 up to rounding.
 fn hit_barycentrics() -> BoxedStrategy<Vec3> {
-    (-1.0f32..2.0, -1.0f32..2.0)
+    (uniform(-1.0, 2.0), uniform(-1.0, 2.0))
         .prop_map(|(u, v)| Vec3::new(1.0 - u - v, u, v))
         .boxed()
 }
@@ -107,9 +114,9 @@ fn hit_barycentrics() -> BoxedStrategy<Vec3> {
 fn world_to_object(max_exponent: f32) -> BoxedStrategy<Mat4> {
     (
         rotation(),
-        -3.0f32..3.0,
+        uniform(-3.0, 3.0),
         small_vec3(),
-        -9.0f32..max_exponent + 1.0,
+        uniform(-9.0, max_exponent + 1.0),
     )
         .prop_map(|(q, scale, t, e)| {
             Mat4::from_scale_rotation_translation(Vec3::splat(10f32.powf(scale)), q, t * 10f32.powf(e) / 10.0)
@@ -119,7 +126,7 @@ fn world_to_object(max_exponent: f32) -> BoxedStrategy<Mat4> {
 
 /// A world ray origin up to `10^max_exponent`.
 fn world_origin(max_exponent: f32) -> BoxedStrategy<Vec3> {
-    (small_vec3(), -12.0f32..max_exponent - 1.0)
+    (small_vec3(), uniform(-12.0, max_exponent - 1.0))
         .prop_map(|(v, e)| v * 10f32.powf(e))
         .boxed()
 }
@@ -137,7 +144,7 @@ pub(super) fn plane_intersections() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec3, Ve
 
 /// A unit direction or a moderately scaled one (functions that take non-normalized directions).
 pub(super) fn any_direction() -> BoxedStrategy<Vec3> {
-    prop_oneof![3 => unit_vec3(), 1 => small_vec3()].boxed()
+    one_of![3 => unit_vec3(), 1 => small_vec3()].boxed()
 }
 
 /// A G-buffer pixel: unit eye direction, distance, unit normal.
@@ -206,9 +213,9 @@ pub(super) fn matrices() -> BoxedStrategy<Matrices> {
 /// A triangle and a unit direction: random, or meeting the triangle's plane at a cosine from
 /// head-on to grazing.
 pub(super) fn triangle_and_direction() -> BoxedStrategy<([Vec3; 3], Vec3)> {
-    let cosine = prop_oneof![
-        3 => 0.0f32..1.0,
-        1 => (-6.0f32..-2.0).prop_map(|e| 10f32.powf(e)),
+    let cosine = one_of![
+        3 => uniform(0.0, 1.0),
+        1 => uniform(-6.0, -2.0).prop_map(|e| 10f32.powf(e)),
         1 => Just(0.0f32),
         1 => Just(1.0f32),
     ];
