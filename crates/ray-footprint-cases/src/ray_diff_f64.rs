@@ -162,3 +162,12 @@ mod tests {
         assert_eq!(offset.to_array(), super::OFFSET);
     }
 }
+
+/// The module's records, in the module's order.
+pub(crate) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        intersect_triangle_plane_f64,
+        barycentric_offsets_f64,
+        barycentric_deltas_f64
+    ]
+}

@@ -405,3 +405,17 @@ pub fn environment_lod() -> Record<impl Args + Perturb, impl Value> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        world_footprint,
+        triangle_world_area2,
+        triangle_uv_area2,
+        texel_density,
+        triangle_base_lod,
+        texture_lod,
+        texture_gradient,
+        environment_lod
+    ]
+}

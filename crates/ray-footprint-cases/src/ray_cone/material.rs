@@ -138,3 +138,8 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
         same("roughness 2", "as roughness 1", (2.0,), (1.0,)),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![refract_ray_cone, roughness_spread_angle]
+}
