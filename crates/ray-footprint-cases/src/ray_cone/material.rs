@@ -124,6 +124,7 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
     .enclosure(|&(r,)| vec![enclosure::roughness_spread_angle(r)])
     .reference(reference::roughness_closed_form())
     .reference(reference::roughness_small())
+    .reference(reference::roughness_monotone())
     .fuzz(|d| (d.scalar(),))
     .range(0.0, 142.0, "roughness spread")
     .degenerate(vec![
