@@ -6,8 +6,8 @@
 
 use ray_footprint::shaders::{Module, SLANG_INCLUDE_DIR};
 use shader_proptest::compile::{compile_slang, Stage, Target};
+use shader_proptest::spirv;
 use std::path::Path;
-use std::process::Command;
 
 /// A public function of a module: return type, name, parameter types.
 struct Function {
@@ -89,24 +89,6 @@ fn preambles(module: Module) -> [(&'static str, String); 2] {
     ]
 }
 
-/// Runs `spirv-val` on `words` for Vulkan 1.1.
-fn spirv_val(words: &[u32]) -> Result<(), String> {
-    let path = std::env::temp_dir().join(format!("ray-footprint-slang-{}.spv", std::process::id()));
-    let bytes: Vec<u8> = words.iter().flat_map(|word| word.to_le_bytes()).collect();
-    std::fs::write(&path, bytes).map_err(|e| format!("writing {}: {e}", path.display()))?;
-    let output = Command::new("spirv-val")
-        .args(["--target-env", "vulkan1.1"])
-        .arg(&path)
-        .output();
-    let _ = std::fs::remove_file(&path);
-    let output = output.map_err(|e| format!("cannot run spirv-val ({e}); scripts/setup.sh installs it"))?;
-    if output.status.success() {
-        Ok(())
-    } else {
-        Err(String::from_utf8_lossy(&output.stderr).into_owned())
-    }
-}
-
 #[test]
 fn every_function_compiles_to_valid_spirv_through_import_and_include() {
     for &module in Module::ALL {
@@ -121,7 +103,8 @@ fn every_function_compiles_to_valid_spirv_through_import_and_include() {
                 &[Path::new(SLANG_INCLUDE_DIR)],
             )
             .unwrap_or_else(|error| panic!("{} ({how}): {error}\n--- kernel ---\n{kernel}", module.stem()));
-            spirv_val(&spirv).unwrap_or_else(|log| panic!("{} ({how}): {log}", module.stem()));
+            spirv::validate(&spirv, Target::Vulkan1_1)
+                .unwrap_or_else(|e| panic!("{} ({how}): {e}", module.stem()));
             println!(
                 "{}: {count} functions through {how}: {} SPIR-V words, spirv-val accepts them",
                 module.stem(),

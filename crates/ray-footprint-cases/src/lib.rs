@@ -17,6 +17,14 @@
 //!
 //! Not published: the product (`ray-footprint`) is the shader modules and the Rust mirror.
 
+/// `records![function, ...]`: the records the named functions make, boxed, in the order given;
+/// each section of a module lists its own functions with it.
+macro_rules! records {
+    ($($function:ident),+ $(,)?) => {
+        vec![$(Box::new($function()) as Box<dyn $crate::Function>,)+]
+    };
+}
+
 pub mod agreement;
 pub mod degenerate;
 pub mod exact;
@@ -36,39 +44,19 @@ pub use record::{Function, IllConditioned, Promises, Record};
 use ray_footprint::shaders::Module;
 use std::sync::OnceLock;
 
-/// `every_record![module: function, ...; ...]`: the records the functions of the modules make,
-/// boxed, in the order given.
-macro_rules! every_record {
-    ($($module:ident: $($function:ident),+;)+) => {
-        vec![$($(Box::new($module::$function()) as Box<dyn Function>,)+)+]
-    };
-}
-
-/// Every record, in module order (built once).
+/// Every record, in module order (built once): each module gathers its sections' records.
 pub fn records() -> &'static [Box<dyn Function>] {
     static RECORDS: OnceLock<Vec<Box<dyn Function>>> = OnceLock::new();
     RECORDS.get_or_init(|| {
-        every_record![
-            ray_cone: pack_ray_cone, unpack_ray_cone, pixel_spread_angle, pixel_spread_angle_small,
-                pixel_spread_angle_from_proj_inv, pinhole_ray_cone, pinhole_ray_cone_for_ray,
-                orthographic_ray_cone, thin_lens_ray_cone, width_at, propagate, normal_spread_angle,
-                normal_spread_angle_small, curvature_sign, surface_spread_angle, edge_curvature,
-                triangle_curvature, curvature_spread_angle, world_footprint, triangle_world_area2,
-                triangle_uv_area2, texel_density, triangle_base_lod, texture_lod, texture_gradient,
-                environment_lod, refract_ray_cone, roughness_spread_angle;
-            ray_diff: eye_ray_direction, normalized_derivative, eye_ray_diff,
-                eye_ray_direction_from_matrices, eye_ray_diff_from_matrices, pixel_directions, transfer,
-                barycentric_derivatives, barycentric_w_derivatives, texture_derivatives, texel_derivatives,
-                secondary_origin_derivatives, lod_isotropic, lod_box, sample_grad_gradients,
-                normal_derivatives, reflect_ray_diff, refract_ray_diff, gbuffer_ray_diff,
-                tangent_plane_offsets, planar_mapping_gradients, triplanar_weights, triplanar_gradients,
-                intersect_triangle_plane, barycentric_offsets, barycentric_deltas,
-                uv_gradients_from_offsets, cone_barycentric_deltas, anisotropic_cone_axes,
-                anisotropic_cone_gradients, ray_diff_from_cone, cone_from_ray_diff;
-            ray_diff_f64: intersect_triangle_plane_f64, barycentric_offsets_f64, barycentric_deltas_f64;
-            wireframe: unpack_wireframe_settings, edge_position, edge_thickness, stipple, edge_ramp,
-                line_width, process_wireframe;
+        [
+            ray_cone::records(),
+            ray_diff::records(),
+            ray_diff_f64::records(),
+            wireframe::records(),
         ]
+        .into_iter()
+        .flatten()
+        .collect()
     })
 }
 

@@ -7,6 +7,9 @@
 //! re-evaluations (one per shader function, in the module's order of operations) are in the
 //! `enclosure` submodule, the case strategies in `strategy`, the degenerate rows several records
 //! share in `rows`, the independent references in `reference`.
+//!
+//! Each section file lists its own records (its `records()`, in the module's order) and is
+//! re-exported whole, so a new function's record is an edit of its section file alone.
 
 mod camera;
 mod cones;
@@ -25,28 +28,17 @@ use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_diff::RayDiff;
 use ray_footprint::shaders::Module;
 
-pub use camera::{
-    eye_ray_diff, eye_ray_diff_from_matrices, eye_ray_direction, eye_ray_direction_from_matrices,
-    normalized_derivative, pixel_directions,
-};
-pub use cones::{
-    anisotropic_cone_axes, anisotropic_cone_gradients, cone_barycentric_deltas, cone_from_ray_diff,
-    ray_diff_from_cone,
-};
-pub use derivatives::{
-    barycentric_derivatives, barycentric_w_derivatives, lod_box, lod_isotropic, sample_grad_gradients,
-    secondary_origin_derivatives, texel_derivatives, texture_derivatives,
-};
+pub use camera::*;
+pub use cones::*;
+pub use derivatives::*;
 pub use enclosure::{direction_well_conditioned, WELL_CONDITIONED};
-pub use gbuffer::{gbuffer_ray_diff, tangent_plane_offsets};
-pub use mapping::{planar_mapping_gradients, triplanar_gradients, triplanar_weights};
-pub use reflection::{normal_derivatives, reflect_ray_diff, refract_ray_diff};
-pub use reintersection::{
-    barycentric_deltas, barycentric_offsets, intersect_triangle_plane, uv_gradients_from_offsets,
-};
+pub use gbuffer::*;
+pub use mapping::*;
+pub use reflection::*;
+pub use reintersection::*;
 pub(crate) use rows::{delta_rows, offset_rows, plane_intersection_rows, OFFSET};
 pub(crate) use strategy::offset_args;
-pub use transfer::transfer;
+pub use transfer::*;
 
 /// The arguments of the pinhole camera functions: pixel, image size, fov_y, right, up, view.
 pub type Camera = (Vec2, Vec2, f32, Vec3, Vec3, Vec3);
@@ -65,3 +57,20 @@ pub type ConeGradientArgs = (f32, Vec3, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
 
 /// The module of these records.
 const MODULE: Module = Module::RayDiff;
+
+/// The module's records, section by section in the module's order.
+pub(crate) fn records() -> Vec<Box<dyn crate::Function>> {
+    [
+        camera::records(),
+        transfer::records(),
+        derivatives::records(),
+        reflection::records(),
+        gbuffer::records(),
+        mapping::records(),
+        reintersection::records(),
+        cones::records(),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}

@@ -101,19 +101,24 @@ pub fn intersect_triangle_plane_f64() -> Record<impl Args + Perturb, impl Value>
     ))
 }
 
-/// `rf_barycentric_offsets_f64`.
-pub fn barycentric_offsets_f64() -> Record<impl Args + Perturb, impl Value> {
-    let max = rd64::F64_MAX_VALUE as f32;
-    Record::new(
-        MODULE,
-        "barycentric_offsets_f64",
-        |(m, o, p0, p1, p2, x, y, b)| rd64::barycentric_offsets_f64(m, o, p0, p1, p2, x, y, b),
-        well_conditioned_offset_args_f64,
-    )
-    .conditioned(
+/// The record of the f64 re-intersection `function` (its Rust `mirror`) on the offset arguments
+/// where both f64 intersections are well-conditioned ([`well_conditioned_offset_args_f64`]).
+fn reintersection_record<R: Value>(
+    function: &'static str,
+    mirror: fn(OffsetArgs) -> R,
+) -> Record<OffsetArgs, R> {
+    Record::new(MODULE, function, mirror, well_conditioned_offset_args_f64).conditioned(
         REINTERSECTION_ILL_CONDITIONED,
         enclosure::offsets_well_conditioned_f64,
     )
+}
+
+/// `rf_barycentric_offsets_f64`.
+pub fn barycentric_offsets_f64() -> Record<impl Args + Perturb, impl Value> {
+    let max = rd64::F64_MAX_VALUE as f32;
+    reintersection_record("barycentric_offsets_f64", |(m, o, p0, p1, p2, x, y, b)| {
+        rd64::barycentric_offsets_f64(m, o, p0, p1, p2, x, y, b)
+    })
     .enclosure(|a| {
         let (dx, dy) = enclosure::barycentric_offsets_f64(a);
         [dx.components(), dy.components()].concat()
@@ -129,16 +134,9 @@ pub fn barycentric_offsets_f64() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_barycentric_deltas_f64`.
 pub fn barycentric_deltas_f64() -> Record<impl Args + Perturb, impl Value> {
     let max = rd64::F64_MAX_VALUE as f32;
-    Record::new(
-        MODULE,
-        "barycentric_deltas_f64",
-        |(m, o, p0, p1, p2, x, y, b)| rd64::barycentric_deltas_f64(m, o, p0, p1, p2, x, y, b),
-        well_conditioned_offset_args_f64,
-    )
-    .conditioned(
-        REINTERSECTION_ILL_CONDITIONED,
-        enclosure::offsets_well_conditioned_f64,
-    )
+    reintersection_record("barycentric_deltas_f64", |(m, o, p0, p1, p2, x, y, b)| {
+        rd64::barycentric_deltas_f64(m, o, p0, p1, p2, x, y, b)
+    })
     .enclosure(|a| {
         let (dx, dy) = enclosure::barycentric_offsets_f64(a);
         (dx.abs() + dy.abs()).components()
@@ -150,6 +148,15 @@ pub fn barycentric_deltas_f64() -> Record<impl Args + Perturb, impl Value> {
         "(F64_MAX_VALUE, F64_MAX_VALUE, 1) in f32",
         vec![max, max, 1.0],
     ))
+}
+
+/// The module's records, in the module's order.
+pub(crate) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        intersect_triangle_plane_f64,
+        barycentric_offsets_f64,
+        barycentric_deltas_f64
+    ]
 }
 
 #[cfg(test)]

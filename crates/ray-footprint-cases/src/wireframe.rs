@@ -359,3 +359,16 @@ pub fn process_wireframe() -> Record<(WireframeSettings, Vec3, Vec3), f32> {
         ),
     ])
 }
+
+/// The module's records, in the module's order.
+pub(crate) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        unpack_wireframe_settings,
+        edge_position,
+        edge_thickness,
+        stipple,
+        edge_ramp,
+        line_width,
+        process_wireframe
+    ]
+}

@@ -35,7 +35,7 @@
 
 use ash::vk;
 use ray_footprint::shaders::Module;
-use ray_footprint_lab::cli::{options_or_exit, positive_count};
+use ray_footprint_lab::cli::{bench_options, count_at_least, options_or_exit};
 use ray_footprint_lab::timing::function::{inputs, signatures, timing_kernel, Callee, Signature};
 use ray_footprint_lab::timing::peers::{extract, Peer, PEERS};
 use ray_footprint_lab::timing::{
@@ -105,29 +105,19 @@ impl Options {
 const USAGE: &str =
     "usage: function_costs [--function NAME] [--module NAME] [--peers DIR] [--rounds N (>= 8)]";
 
-fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut options = Options {
         function: None,
         module: None,
         peers: std::env::var_os(PEERS_ENV).map(PathBuf::from),
         rounds: MIN_ROUNDS,
     };
-    while let Some(flag) = args.next() {
-        match flag.as_str() {
-            // cargo bench passes --bench to every benchmark.
-            "--bench" => continue,
-            "--help" | "-h" => return Err(String::new()),
-            _ => {}
-        }
-        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+    for (flag, value) in bench_options(args)? {
         match flag.as_str() {
             "--function" => options.function = Some(value),
             "--module" => options.module = Some(value),
             "--peers" => options.peers = Some(PathBuf::from(value)),
-            "--rounds" => match positive_count(&flag, &value)? {
-                rounds if rounds >= MIN_ROUNDS => options.rounds = rounds,
-                rounds => return Err(format!("--rounds must be at least {MIN_ROUNDS}, got {rounds}")),
-            },
+            "--rounds" => options.rounds = count_at_least(&flag, &value, MIN_ROUNDS)?,
             other => return Err(format!("unknown argument '{other}'")),
         }
     }

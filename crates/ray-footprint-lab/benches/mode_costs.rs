@@ -31,7 +31,7 @@
 //! --samples-per-axis N --rounds N --frames N --scene NAME --csv FILE]`
 
 use ray_footprint::wireframe::WireframeSettings;
-use ray_footprint_lab::cli::{options_or_exit, positive_count};
+use ray_footprint_lab::cli::{bench_options, count_at_least, options_or_exit, positive_count};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::RtPushConstants;
 use ray_footprint_lab::rt::{open_device, ColourPipeline, Error, Mode, Renderer};
@@ -84,7 +84,7 @@ const LAVAPIPE_DEFAULTS: Defaults = Defaults {
 const USAGE: &str = "usage: mode_costs [--width N --height N] [--samples-per-axis N] [--rounds N (>= 8)] \
                      [--frames N] [--scene NAME] [--csv FILE]";
 
-fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut options = Options {
         size: None,
         samples_per_axis: None,
@@ -94,24 +94,14 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
         csv: None,
     };
     let (mut width, mut height) = (None, None);
-    while let Some(flag) = args.next() {
-        match flag.as_str() {
-            // cargo bench passes --bench to every benchmark.
-            "--bench" => continue,
-            "--help" | "-h" => return Err(String::new()),
-            _ => {}
-        }
-        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+    for (flag, value) in bench_options(args)? {
         let count = || positive_count(&flag, &value);
         match flag.as_str() {
             "--width" => width = Some(count()? as u32),
             "--height" => height = Some(count()? as u32),
             "--samples-per-axis" => options.samples_per_axis = Some(count()? as u32),
             "--frames" => options.frames = Some(count()?),
-            "--rounds" => match count()? {
-                rounds if rounds >= MIN_ROUNDS => options.rounds = rounds,
-                rounds => return Err(format!("--rounds must be at least {MIN_ROUNDS}, got {rounds}")),
-            },
+            "--rounds" => options.rounds = count_at_least(&flag, &value, MIN_ROUNDS)?,
             "--scene" => {
                 options.scenes.retain(|scene| scene.name == value);
                 if options.scenes.is_empty() {

@@ -16,7 +16,7 @@
 //! run come from that cache (`shader_proptest::compile::SPIRV_CACHE_ENV`).
 
 use ray_footprint_cases::agreement::run_all_checks;
-use ray_footprint_lab::cli::{options_or_exit, positive_count};
+use ray_footprint_lab::cli::{bench_options, options_or_exit, positive_count};
 use shader_proptest::compile::SPIRV_CACHE_ENV;
 use shader_proptest::{Gpu, Outcome, Phase, PhaseTimes, RunConfig};
 use std::process::ExitCode;
@@ -30,16 +30,12 @@ struct Options {
     threads: Option<usize>,
 }
 
-fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut options = Options {
         cases: RunConfig::default().cases,
         threads: None,
     };
-    while let Some(flag) = args.next() {
-        if flag == "--bench" {
-            continue;
-        }
-        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+    for (flag, value) in bench_options(args)? {
         let number = positive_count(&flag, &value)?;
         match flag.as_str() {
             "--cases" => options.cases = number,

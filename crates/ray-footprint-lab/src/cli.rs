@@ -1,5 +1,6 @@
 //! What the lab's command-line programs (the `verify`, `gallery` and `quality` examples and the
-//! benches) share: answering `--help`, reporting a bad option, and reading a positive count.
+//! benches) share: answering `--help`, reporting a bad option, reading a benchmark's flags and a
+//! positive count.
 
 use std::process::exit;
 
@@ -22,5 +23,31 @@ pub fn positive_count(flag: &str, value: &str) -> Result<usize, String> {
     match value.parse::<usize>() {
         Ok(n) if n > 0 => Ok(n),
         _ => Err(format!("{flag} must be a positive integer, got '{value}'")),
+    }
+}
+
+/// The options of a benchmark's command line `args`, each a flag and its value, in order.
+/// `--bench`, which `cargo bench` passes to every benchmark, is skipped; `--help` or `-h` gives the
+/// empty message that asks for help ([`options_or_exit`]); a flag without a value, the message
+/// naming it.
+pub fn bench_options(mut args: impl Iterator<Item = String>) -> Result<Vec<(String, String)>, String> {
+    let mut options = Vec::new();
+    while let Some(flag) = args.next() {
+        match flag.as_str() {
+            "--bench" => continue,
+            "--help" | "-h" => return Err(String::new()),
+            _ => {}
+        }
+        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+        options.push((flag, value));
+    }
+    Ok(options)
+}
+
+/// `value` of the option `flag` as an integer of at least `min`, or the message that names both.
+pub fn count_at_least(flag: &str, value: &str, min: usize) -> Result<usize, String> {
+    match positive_count(flag, value)? {
+        count if count >= min => Ok(count),
+        count => Err(format!("{flag} must be at least {min}, got {count}")),
     }
 }

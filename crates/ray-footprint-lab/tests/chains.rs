@@ -7,6 +7,7 @@ use ray_footprint_lab::chains::{
     check_on_the_cpu, head_on_chain_with_one_saddle, in_plane_chain, Comparison, CHAIN_SHADER_DIR,
     HEAD_ON_CHAINS, IN_PLANE_CHAINS,
 };
+use shader_proptest::declarations::{declarations, Declaration};
 
 /// Random in-plane chains (pinhole, orthographic and thin-lens primaries; convex and concave
 /// spheres and saddles; hits from either side with the normals stored either way; foci crossed
@@ -35,19 +36,14 @@ fn head_on_chains_with_a_saddle_follow_the_mean_footprint() {
     assert!(stats.back_side_hits * 5 >= stats.chains);
 }
 
-/// The structs (`struct Name`) and the chain's functions (`chain_*`, `reflection_chain`) a source
-/// declares at the top level, in order. A function's name is the word before the first `(` of its
-/// declaration's line.
-fn chain_declarations(source: &str) -> Vec<String> {
-    let top_level = source.lines().filter(|line| !line.starts_with([' ', '/', '#']));
-    top_level
-        .filter_map(|line| {
-            let words: Vec<&str> = line.split_whitespace().collect();
-            if let Some(at) = words.iter().position(|word| *word == "struct") {
-                return words.get(at + 1).map(|name| format!("struct {name}"));
-            }
-            let name = line.split('(').next()?.split_whitespace().last()?;
-            (name.starts_with("chain_") || name == "reflection_chain").then(|| format!("fn {name}"))
+/// The structs and the chain's functions (`chain_*`, `reflection_chain`) a source declares at the
+/// top level, in order.
+fn chain_declarations(source: &str) -> Vec<Declaration<'_>> {
+    declarations(source)
+        .into_iter()
+        .filter(|declaration| match declaration {
+            Declaration::Struct(_) => true,
+            Declaration::Function(name) => name.starts_with("chain_") || *name == "reflection_chain",
         })
         .collect()
 }
@@ -60,9 +56,17 @@ fn chain_shaders_declare_the_mirrors_functions_in_order() {
         let path = std::path::Path::new(CHAIN_SHADER_DIR).join(file);
         std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
     };
-    let mut mirror = chain_declarations(&read("mirror.rs"));
-    assert_eq!(mirror.pop().as_deref(), Some("fn chain_shader"), "{mirror:?}");
-    assert!(mirror.contains(&"fn reflection_chain".to_string()), "{mirror:?}");
+    let mirror_source = read("mirror.rs");
+    let mut mirror = chain_declarations(&mirror_source);
+    assert_eq!(
+        mirror.pop(),
+        Some(Declaration::Function("chain_shader")),
+        "{mirror:?}"
+    );
+    assert!(
+        mirror.contains(&Declaration::Function("reflection_chain")),
+        "{mirror:?}"
+    );
     for language in ["wgsl", "glsl", "slang"] {
         let file = format!("reflection_chain.{language}");
         assert_eq!(chain_declarations(&read(&file)), mirror, "{file}");

@@ -23,7 +23,8 @@ pub enum Target {
 }
 
 impl Target {
-    fn glslang_env(self) -> &'static str {
+    /// The `--target-env` that glslang and SPIRV-Tools take for this target.
+    pub(crate) fn glslang_env(self) -> &'static str {
         match self {
             Target::Vulkan1_1 => "vulkan1.1",
             Target::Vulkan1_2 => "vulkan1.2",

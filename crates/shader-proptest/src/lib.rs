@@ -81,6 +81,7 @@ the compilers, the value descriptions, the tolerances and the layout reader.
 
 mod back;
 pub mod compile;
+pub mod declarations;
 #[cfg(feature = "gpu")]
 pub mod draw;
 pub mod interval;

@@ -1,7 +1,7 @@
 //! What a SPIR-V module costs: its instructions inside functions, its branches, and its calls of
 //! extended instructions (the `GLSL.std.450` set), read from the words; and `spirv-opt -O`
 //! (SPIRV-Tools), so that modules from different compilers are compared after the same
-//! optimisation.
+//! optimisation; and `spirv-val`, for modules that no device runs.
 //!
 //! ```no_run
 //! use shader_proptest::{spirv, Shader};
@@ -13,8 +13,9 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::compile::{tool_output, CompileError};
+use crate::compile::{tool_output, CompileError, Target};
 use std::fmt;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -196,15 +197,9 @@ pub(crate) fn literal_string(words: &[u32]) -> String {
 /// The module `words` after `spirv-opt -O` (SPIRV-Tools' size-neutral performance passes, which
 /// inline every function into the entry points). Needs `spirv-opt` on the `PATH`.
 pub fn optimize(words: &[u32]) -> Result<Vec<u32>, CompileError> {
-    static COUNTER: AtomicUsize = AtomicUsize::new(0);
-    let stem = std::env::temp_dir().join(format!(
-        "shader-proptest-opt-{}-{}",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
+    let stem = temporary_stem("opt");
     let (input, output) = (stem.with_extension("in.spv"), stem.with_extension("out.spv"));
-    std::fs::write(&input, to_bytes(words))
-        .map_err(|e| CompileError::NotRun(format!("writing {}: {e}", input.display())))?;
+    write_module(&input, words)?;
     let result = Command::new("spirv-opt")
         .arg("-O")
         .arg(&input)
@@ -220,6 +215,49 @@ pub fn optimize(words: &[u32]) -> Result<Vec<u32>, CompileError> {
         ))
     })?;
     tool_output("spirv-opt", &result, bytes, "spirv-opt -O: ", &input)
+}
+
+/// Whether `spirv-val` accepts the module `words` for `target`'s Vulkan version: `Failed` with its
+/// log where it rejects them. Needs `spirv-val` on the `PATH`.
+///
+/// ```no_run
+/// use shader_proptest::compile::Target;
+/// use shader_proptest::spirv;
+///
+/// # let words: Vec<u32> = Vec::new();
+/// spirv::validate(&words, Target::Vulkan1_1)?;
+/// # Ok::<(), shader_proptest::CompileError>(())
+/// ```
+pub fn validate(words: &[u32], target: Target) -> Result<(), CompileError> {
+    let input = temporary_stem("val").with_extension("spv");
+    write_module(&input, words)?;
+    let result = Command::new("spirv-val")
+        .args(["--target-env", target.glslang_env()])
+        .arg(&input)
+        .output();
+    let _ = std::fs::remove_file(&input);
+    let result = result.map_err(|e| {
+        CompileError::NotRun(format!(
+            "cannot run spirv-val (SPIRV-Tools, Debian package spirv-tools): {e}"
+        ))
+    })?;
+    tool_output("spirv-val", &result, Ok(Vec::new()), "spirv-val: ", &input).map(drop)
+}
+
+/// A path in the temporary directory that no other call of this process uses, for `job`'s files.
+fn temporary_stem(job: &str) -> PathBuf {
+    static COUNTER: AtomicUsize = AtomicUsize::new(0);
+    std::env::temp_dir().join(format!(
+        "shader-proptest-{job}-{}-{}",
+        std::process::id(),
+        COUNTER.fetch_add(1, Ordering::Relaxed)
+    ))
+}
+
+/// Writes the module `words` to `path` as a SPIR-V file.
+fn write_module(path: &Path, words: &[u32]) -> Result<(), CompileError> {
+    std::fs::write(path, to_bytes(words))
+        .map_err(|e| CompileError::NotRun(format!("writing {}: {e}", path.display())))
 }
 
 /// The little-endian bytes of `words`, as SPIR-V files hold them.
@@ -340,5 +378,26 @@ fn main() { data[0] = wave(data[0]); }";
         assert_eq!(after.transcendental_calls, 2);
         assert_eq!(after.extended_calls, 3);
         assert!(after.instructions < before.instructions);
+    }
+
+    /// `spirv-val` accepts naga's module of a WGSL kernel and rejects the hand-built module, which
+    /// declares no memory model.
+    #[test]
+    fn validate_accepts_a_compiled_kernel_and_rejects_a_module_without_memory_model() {
+        let source = "@group(0) @binding(0) var<storage, read_write> data: array<f32>;
+@compute @workgroup_size(1)
+fn main() { data[0] = 2.0 * data[0]; }";
+        let words = crate::compile::compile_wgsl(
+            source,
+            "double.wgsl",
+            crate::compile::base_capabilities(),
+            Target::Vulkan1_1,
+        )
+        .expect("valid WGSL");
+        validate(&words, Target::Vulkan1_1).unwrap_or_else(|e| panic!("{e}"));
+        match validate(&hand_built(), Target::Vulkan1_1) {
+            Err(CompileError::Failed { log, .. }) => assert!(log.starts_with("spirv-val: "), "{log}"),
+            other => panic!("spirv-val accepted a module without OpMemoryModel: {other:?}"),
+        }
     }
 }

@@ -362,3 +362,18 @@ pub fn thin_lens_ray_cone() -> Record<impl Args + Perturb, impl Value> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        pack_ray_cone,
+        unpack_ray_cone,
+        pixel_spread_angle,
+        pixel_spread_angle_small,
+        pixel_spread_angle_from_proj_inv,
+        pinhole_ray_cone,
+        pinhole_ray_cone_for_ray,
+        orthographic_ray_cone,
+        thin_lens_ray_cone
+    ]
+}

@@ -144,12 +144,37 @@ pub fn triangle_uv_area2() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
+/// A triangle's vertices and UVs, the arguments of `texel_density` and `triangle_base_lod`.
+type TriangleWithUvs = (Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
+
+/// A zero-area triangle (a repeated vertex) with the unit right triangle's UVs.
+const ZERO_AREA: TriangleWithUvs = (Vec3::ZERO, Vec3::X, Vec3::ZERO, Vec2::ZERO, Vec2::X, Vec2::Y);
+
+/// The unit right triangle with collinear UVs.
+const COLLINEAR_UVS: TriangleWithUvs = (
+    Vec3::ZERO,
+    Vec3::X,
+    Vec3::Y,
+    Vec2::ZERO,
+    Vec2::splat(0.5),
+    Vec2::ONE,
+);
+
+/// A zero-area triangle with collinear UVs.
+const ZERO_AREA_AND_COLLINEAR_UVS: TriangleWithUvs = (
+    Vec3::ZERO,
+    Vec3::X,
+    Vec3::ZERO,
+    Vec2::ZERO,
+    Vec2::splat(0.5),
+    Vec2::ONE,
+);
+
+/// The unit right triangle in both spaces.
+const UNIT_RIGHT_TRIANGLES: TriangleWithUvs = (Vec3::ZERO, Vec3::X, Vec3::Y, Vec2::ZERO, Vec2::X, Vec2::Y);
+
 /// `rf_texel_density`.
 pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
-    let x = Vec3::X;
-    let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
-    let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
-    let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
     Record::new(
         MODULE,
         "texel_density",
@@ -171,46 +196,20 @@ pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
         value(
             "zero-area triangle",
             "sqrt(uv_area2) / sqrt(MIN_MAGNITUDE)",
-            (Vec3::ZERO, x, Vec3::ZERO, unit_uv.0, unit_uv.1, unit_uv.2),
+            ZERO_AREA,
             vec![1.0 / MIN_MAGNITUDE.sqrt()],
         ),
-        value(
-            "collinear UVs",
-            "0",
-            (
-                unit_world.0,
-                unit_world.1,
-                unit_world.2,
-                collinear_uv.0,
-                collinear_uv.1,
-                collinear_uv.2,
-            ),
-            vec![0.0],
-        ),
+        value("collinear UVs", "0", COLLINEAR_UVS, vec![0.0]),
         value(
             "zero-area triangle and collinear UVs",
             "0 (0 / sqrt(MIN_MAGNITUDE))",
-            (
-                Vec3::ZERO,
-                x,
-                Vec3::ZERO,
-                collinear_uv.0,
-                collinear_uv.1,
-                collinear_uv.2,
-            ),
+            ZERO_AREA_AND_COLLINEAR_UVS,
             vec![0.0],
         ),
         value(
             "unit right triangle in both spaces",
             "1",
-            (
-                unit_world.0,
-                unit_world.1,
-                unit_world.2,
-                unit_uv.0,
-                unit_uv.1,
-                unit_uv.2,
-            ),
+            UNIT_RIGHT_TRIANGLES,
             vec![1.0],
         ),
     ])
@@ -218,10 +217,6 @@ pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
 
 /// `rf_triangle_base_lod`.
 pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
-    let x = Vec3::X;
-    let unit_world = (Vec3::ZERO, Vec3::X, Vec3::Y);
-    let unit_uv = (Vec2::ZERO, Vec2::X, Vec2::Y);
-    let collinear_uv = (Vec2::ZERO, Vec2::splat(0.5), Vec2::ONE);
     Record::new(
         MODULE,
         "triangle_base_lod",
@@ -245,33 +240,19 @@ pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
         value(
             "zero-area triangle",
             "0.5 (log2(uv_area2) - log2(MIN_MAGNITUDE))",
-            (Vec3::ZERO, x, Vec3::ZERO, unit_uv.0, unit_uv.1, unit_uv.2),
+            ZERO_AREA,
             vec![0.5 * (0.0 - MIN_MAGNITUDE.log2())],
         ),
         value(
             "collinear UVs",
             "0.5 (log2(MIN_MAGNITUDE) - log2(world_area2))",
-            (
-                unit_world.0,
-                unit_world.1,
-                unit_world.2,
-                collinear_uv.0,
-                collinear_uv.1,
-                collinear_uv.2,
-            ),
+            COLLINEAR_UVS,
             vec![0.5 * (MIN_MAGNITUDE.log2() - 0.0)],
         ),
         value(
             "zero-area triangle and collinear UVs",
             "0",
-            (
-                Vec3::ZERO,
-                x,
-                Vec3::ZERO,
-                collinear_uv.0,
-                collinear_uv.1,
-                collinear_uv.2,
-            ),
+            ZERO_AREA_AND_COLLINEAR_UVS,
             vec![0.0],
         ),
     ])
@@ -410,4 +391,18 @@ pub fn environment_lod() -> Record<impl Args + Perturb, impl Value> {
             vec![MIN_MAGNITUDE.log2()],
         ),
     ])
+}
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        world_footprint,
+        triangle_world_area2,
+        triangle_uv_area2,
+        texel_density,
+        triangle_base_lod,
+        texture_lod,
+        texture_gradient,
+        environment_lod
+    ]
 }

@@ -126,6 +126,7 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
     .enclosure(|&(r,)| vec![enclosure::roughness_spread_angle(r)])
     .reference(reference::roughness_closed_form())
     .reference(reference::roughness_small())
+    .reference(reference::roughness_monotone())
     .fuzz(|d| (d.scalar(),))
     .range(0.0, 142.0, "roughness spread")
     .degenerate(vec![
@@ -139,4 +140,9 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
         same("negative roughness", "as roughness 0", (-0.5,), (0.0,)),
         same("roughness 2", "as roughness 1", (2.0,), (1.0,)),
     ])
+}
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![refract_ray_cone, roughness_spread_angle]
 }

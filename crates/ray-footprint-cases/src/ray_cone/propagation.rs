@@ -419,3 +419,18 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
         value("zero width (at a focus)", "0", (0.5, 0.0, z, head_on), vec![0.0]),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        width_at,
+        propagate,
+        normal_spread_angle,
+        normal_spread_angle_small,
+        curvature_sign,
+        surface_spread_angle,
+        edge_curvature,
+        triangle_curvature,
+        curvature_spread_angle
+    ]
+}

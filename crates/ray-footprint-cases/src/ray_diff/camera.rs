@@ -172,3 +172,15 @@ pub fn pixel_directions() -> Record<Matrices, NeighbourDirections> {
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", vec![0.0; 6]))
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        eye_ray_direction,
+        normalized_derivative,
+        eye_ray_diff,
+        eye_ray_direction_from_matrices,
+        eye_ray_diff_from_matrices,
+        pixel_directions
+    ]
+}

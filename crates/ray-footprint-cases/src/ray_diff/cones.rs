@@ -242,3 +242,14 @@ pub fn cone_from_ray_diff() -> Record<(RayDiff, Vec3), Vec2> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        cone_barycentric_deltas,
+        anisotropic_cone_axes,
+        anisotropic_cone_gradients,
+        ray_diff_from_cone,
+        cone_from_ray_diff
+    ]
+}

@@ -348,3 +348,17 @@ pub fn sample_grad_gradients() -> Record<impl Args + Perturb, impl Value> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        barycentric_derivatives,
+        barycentric_w_derivatives,
+        texture_derivatives,
+        texel_derivatives,
+        secondary_origin_derivatives,
+        lod_isotropic,
+        lod_box,
+        sample_grad_gradients
+    ]
+}

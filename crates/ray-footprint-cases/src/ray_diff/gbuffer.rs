@@ -143,3 +143,8 @@ pub fn tangent_plane_offsets() -> Record<impl Args + Perturb, impl Value> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![gbuffer_ray_diff, tangent_plane_offsets]
+}

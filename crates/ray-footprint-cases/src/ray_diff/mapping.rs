@@ -153,3 +153,8 @@ pub fn triplanar_gradients() -> Record<impl Args + Perturb, impl Value> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![planar_mapping_gradients, triplanar_weights, triplanar_gradients]
+}

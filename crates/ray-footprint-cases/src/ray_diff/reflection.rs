@@ -152,3 +152,8 @@ pub fn refract_ray_diff() -> Record<impl Args + Perturb, impl Value> {
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![normal_derivatives, reflect_ray_diff, refract_ray_diff]
+}

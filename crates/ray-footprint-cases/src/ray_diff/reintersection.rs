@@ -152,3 +152,13 @@ pub fn uv_gradients_from_offsets() -> Record<(Derivatives3, Vec2, Vec2, Vec2), D
         ),
     ])
 }
+
+/// This section's records, in the module's order.
+pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    records![
+        intersect_triangle_plane,
+        barycentric_offsets,
+        barycentric_deltas,
+        uv_gradients_from_offsets
+    ]
+}

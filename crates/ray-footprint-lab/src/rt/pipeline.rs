@@ -381,8 +381,8 @@ fn compile_wgsl(source: &str) -> Result<Vec<u32>, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::io::Write;
-    use std::process::{Command, Stdio};
+    use shader_proptest::declarations::{declarations, Declaration};
+    use shader_proptest::spirv;
 
     /// `OpEntryPoint` and the execution model `ClosestHitKHR` (SPIR-V specification, 3.6 and 3.52).
     const OP_ENTRY_POINT: u32 = 15;
@@ -403,7 +403,7 @@ mod tests {
                 [CLOSEST_HIT_KHR],
                 "{closest_hit:?}: the entry points' execution models"
             );
-            validate(&words).unwrap_or_else(|log| panic!("{closest_hit:?}: spirv-val: {log}"));
+            spirv::validate(&words, Target::Vulkan1_2).unwrap_or_else(|e| panic!("{closest_hit:?}: {e}"));
         }
     }
 
@@ -418,33 +418,6 @@ mod tests {
             at += ((words[at] >> 16) as usize).max(1);
         }
         models
-    }
-
-    /// Runs `spirv-val --target-env vulkan1.2` on `words`: its log where it rejects them.
-    fn validate(words: &[u32]) -> Result<(), String> {
-        let mut child = Command::new("spirv-val")
-            .args(["--target-env", "vulkan1.2", "-"])
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| format!("cannot run spirv-val: {e}"))?;
-        let bytes: Vec<u8> = words.iter().flat_map(|word| word.to_le_bytes()).collect();
-        child
-            .stdin
-            .take()
-            .expect("a piped stdin")
-            .write_all(&bytes)
-            .map_err(|e| format!("writing to spirv-val: {e}"))?;
-        let output = child.wait_with_output().map_err(|e| format!("spirv-val: {e}"))?;
-        if output.status.success() {
-            return Ok(());
-        }
-        Err(format!(
-            "{}{}",
-            String::from_utf8_lossy(&output.stdout),
-            String::from_utf8_lossy(&output.stderr)
-        ))
     }
 
     /// The functions of `rt_shading.glsl` that only the ray generation and the miss shader call,
@@ -462,24 +435,12 @@ mod tests {
     /// less [`GLSL_ONLY`], so that the two can be read side by side.
     #[test]
     fn hlsl_shading_follows_the_glsl_shading() {
-        let glsl = declared_names(include_str!("shaders/rt_shading.glsl"));
-        let expected: Vec<&str> = glsl
+        let glsl = declarations(include_str!("shaders/rt_shading.glsl"));
+        let expected: Vec<Declaration> = glsl
             .into_iter()
-            .filter(|name| !GLSL_ONLY.contains(name))
+            .filter(|declaration| !GLSL_ONLY.contains(&declaration.name()))
             .collect();
-        assert_eq!(declared_names(include_str!("shaders/rt_shading.hlsl")), expected);
-    }
-
-    /// The names of the structs and functions declared at the top level of `source`: lines that
-    /// start with a letter, `struct Name {` or a function's `type name(`.
-    fn declared_names(source: &str) -> Vec<&str> {
-        source
-            .lines()
-            .filter(|line| line.starts_with(|c: char| c.is_ascii_alphabetic()))
-            .filter_map(|line| match line.strip_prefix("struct ") {
-                Some(rest) => rest.split_whitespace().next(),
-                None => line.split('(').next()?.split_whitespace().last(),
-            })
-            .collect()
+        assert!(expected.len() > GLSL_ONLY.len(), "{expected:?}");
+        assert_eq!(declarations(include_str!("shaders/rt_shading.hlsl")), expected);
     }
 }

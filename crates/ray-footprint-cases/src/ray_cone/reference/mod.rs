@@ -27,7 +27,7 @@ pub(super) use propagation::{
 };
 pub(super) use refraction::{
     refract_curved, refract_first_order, refract_flat, refract_index_one, refract_negated, refract_optix,
-    refract_total_internal_reflection, roughness_closed_form, roughness_small,
+    refract_total_internal_reflection, roughness_closed_form, roughness_monotone, roughness_small,
 };
 
 use glam::DVec2;

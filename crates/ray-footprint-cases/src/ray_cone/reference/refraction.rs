@@ -357,3 +357,17 @@ pub(in crate::ray_cone) fn roughness_small() -> Reference<(f32,), f32> {
         },
     )
 }
+
+/// `rf_roughness_spread_angle`: growth with roughness.
+pub(in crate::ray_cone) fn roughness_monotone() -> Reference<(f32,), f32> {
+    Reference::new(
+        Kind::Identity,
+        "the spread never shrinks as roughness grows: r < r' in [0, 1], at least 1e-3 apart, give spread(r) <= spread(r')",
+        || (0.0f32..0.999, 0.0f32..1.0).boxed(),
+        |&(r, share), roughness_spread_angle| {
+            let larger = (r + 1.0e-3 + share * (1.0 - 1.0e-3 - r)).min(1.0);
+            let shrink = roughness_spread_angle((r,)) - roughness_spread_angle((larger,));
+            Some(Deviation::new(f64::from(shrink.max(0.0)), 0.0))
+        },
+    )
+}
