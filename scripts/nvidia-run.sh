@@ -26,7 +26,7 @@
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh run OUT_DIR
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh costs OUT_DIR
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh seeds OUT_DIR SEED...
-#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh speed OUT_DIR
+#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh speed OUT_DIR [--batch N]
 #
 #    Both unpack the Vulkan loader and its GL/X libraries into / where the system has no loader,
 #    and the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under
@@ -52,7 +52,8 @@
 #    `seeds` runs the GPU test binary once per seed     -> gpu-tests-seed-SEED.log, seeds-summary.txt
 #    `speed` runs bench verification_speed on every processor with a SPIR-V cache
 #      (SHADER_PROPTEST_SPIRV_CACHE): one pass that fills a cache and warms the machine, then two
-#      rounds of a pass with an empty cache (cold) and one with the filled cache (warm)
+#      rounds of a pass with an empty cache (cold) and one with the filled cache (warm); flags
+#      after OUT_DIR go to verification_speed
 #                                            -> speed-ROUND-cold.log, speed-ROUND-warm.log, speed-summary.txt
 set -uo pipefail
 
@@ -255,7 +256,8 @@ seeds() {
 # verification_speed on every processor: a pass that fills a SPIR-V cache (and warms the clocks),
 # then rounds of an empty cache (cold) and the filled one (warm), interleaved.
 speed() {
-    local out=${1:?usage: nvidia-run.sh speed OUT_DIR}
+    local out=${1:?usage: nvidia-run.sh speed OUT_DIR [verification_speed flags]}
+    shift
     mkdir -p "$out"
     out=$(cd "$out" && pwd)
     prepare
@@ -263,14 +265,14 @@ speed() {
     threads=$(nproc)
     filled=$(mktemp -d)
     SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed, filling" "$out/speed-fill.log" \
-        "$bin/verification_speed" --threads "$threads"
+        "$bin/verification_speed" --threads "$threads" "$@"
     for round in 1 2; do
         cold=$(mktemp -d)
         SHADER_PROPTEST_SPIRV_CACHE=$cold step "speed $round, cold cache" "$out/speed-$round-cold.log" \
-            "$bin/verification_speed" --threads "$threads"
+            "$bin/verification_speed" --threads "$threads" "$@"
         rm -rf "$cold"
         SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed $round, warm cache" "$out/speed-$round-warm.log" \
-            "$bin/verification_speed" --threads "$threads"
+            "$bin/verification_speed" --threads "$threads" "$@"
     done
     rm -rf "$filled"
     {
@@ -330,7 +332,7 @@ case "${1:-}" in
     seeds) shift && seeds "$@" ;;
     speed) shift && speed "$@" ;;
     *)
-        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED... | speed OUT_DIR" >&2
+        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED... | speed OUT_DIR [FLAGS]" >&2
         exit 2
         ;;
 esac

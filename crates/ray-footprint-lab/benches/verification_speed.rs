@@ -9,10 +9,10 @@
 //! (above 100% where threads overlap) and its nanoseconds per case; the two waits are the
 //! dispatching thread's.
 //!
-//! `cargo bench -p ray-footprint-lab --bench verification_speed [-- --cases N] [--threads N]`
+//! `cargo bench -p ray-footprint-lab --bench verification_speed [-- --cases N] [--batch N] [--threads N]`
 //!
-//! `--cases` sets the cases per check and language (100,000, as `verify`); `--threads` measures
-//! one thread count only. With `SHADER_PROPTEST_SPIRV_CACHE` set, kernels compiled by an earlier
+//! `--cases` sets the cases per check and language (100,000, as `verify`); `--batch` the cases per
+//! batch (`RunConfig::batch`, 8,192); `--threads` measures one thread count only. With `SHADER_PROPTEST_SPIRV_CACHE` set, kernels compiled by an earlier
 //! run come from that cache (`shader_proptest::compile::SPIRV_CACHE_ENV`).
 
 use ray_footprint_cases::agreement::run_all_checks;
@@ -27,18 +27,21 @@ const SEED: u64 = 1;
 
 struct Options {
     cases: usize,
+    batch: usize,
     threads: Option<usize>,
 }
 
 fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut options = Options {
         cases: RunConfig::default().cases,
+        batch: RunConfig::default().batch,
         threads: None,
     };
     for (flag, value) in bench_options(args)? {
         let number = positive_count(&flag, &value)?;
         match flag.as_str() {
             "--cases" => options.cases = number,
+            "--batch" => options.batch = number,
             "--threads" => options.threads = Some(number),
             other => return Err(format!("unknown argument '{other}'")),
         }
@@ -126,7 +129,7 @@ fn print_phases(threads: usize, totals: &Pass, wall: Duration) {
 fn main() -> ExitCode {
     let options = options_or_exit(
         parse_args(std::env::args().skip(1)),
-        "usage: verification_speed [--cases N] [--threads N]",
+        "usage: verification_speed [--cases N] [--batch N] [--threads N]",
     );
     let gpu = match Gpu::new() {
         Ok(gpu) => gpu,
@@ -138,10 +141,11 @@ fn main() -> ExitCode {
     let processors = std::thread::available_parallelism().map_or(1, usize::from);
     let cache = std::env::var(SPIRV_CACHE_ENV).unwrap_or_default();
     println!(
-        "device: {} ({}); {processors} processors; {} cases per check and language; SPIR-V cache: {}",
+        "device: {} ({}); {processors} processors; {} cases per check and language in batches of {}; SPIR-V cache: {}",
         gpu.name(),
         gpu.driver(),
         options.cases,
+        options.batch,
         if cache.is_empty() { "off" } else { &cache }
     );
     println!("| threads | checks run | not run | cases | seconds | verified evaluations/s |");
@@ -154,6 +158,7 @@ fn main() -> ExitCode {
     for threads in counts {
         let config = RunConfig {
             cases: options.cases,
+            batch: options.batch,
             threads,
             seed: Some(SEED),
             ..RunConfig::default()
