@@ -53,7 +53,7 @@ pub fn records() -> &'static [Box<dyn Function>] {
                 pixel_spread_angle_from_proj_inv, pinhole_ray_cone, pinhole_ray_cone_for_ray,
                 orthographic_ray_cone, thin_lens_ray_cone, width_at, propagate, normal_spread_angle,
                 normal_spread_angle_small, curvature_sign, surface_spread_angle, edge_curvature,
-                triangle_curvature, curvature_spread_angle, world_footprint, triangle_world_area2,
+                triangle_curvature, triangle_shape_operator, normal_curvature, curvature_spread_angle, world_footprint, triangle_world_area2,
                 triangle_uv_area2, texel_density, triangle_base_lod, texture_lod, texture_gradient,
                 environment_lod, refract_ray_cone, roughness_spread_angle;
             ray_diff: eye_ray_direction, normalized_derivative, eye_ray_diff,
