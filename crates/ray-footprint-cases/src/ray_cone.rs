@@ -34,7 +34,9 @@ pub use propagation::{
     curvature_sign, curvature_spread_angle, edge_curvature, normal_spread_angle, normal_spread_angle_small,
     propagate, surface_spread_angle, triangle_curvature, width_at,
 };
-pub use shape::{normal_curvature, triangle_shape_operator, NormalCurvatureArgs, ShapeOperatorArgs};
+pub use shape::{
+    hit_curvature_error, normal_curvature, triangle_shape_operator, NormalCurvatureArgs, ShapeOperatorArgs,
+};
 
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);

@@ -29,6 +29,15 @@ fn unit_corners() -> (Vec3, Vec3, Vec3) {
     (Vec3::ZERO, Vec3::X, Vec3::Y)
 }
 
+/// Tolerance of `rf_normal_curvature(p, rf_triangle_shape_operator(p, n), direction)`, a hit's
+/// signed curvature in its plane of incidence, against the mirror: the width of the two enclosures
+/// chained.
+pub fn hit_curvature_error(p: [Vec3; 3], n: [Vec3; 3], direction: Vec3) -> f32 {
+    let p = p.map(interval3);
+    let shape_operator = enclosure::triangle_shape_operator(p, n.map(interval3));
+    enclosure::normal_curvature(p, shape_operator, interval3(direction)).tolerance()
+}
+
 /// `rf_triangle_shape_operator`.
 pub fn triangle_shape_operator() -> Record<ShapeOperatorArgs, Vec3> {
     let (p0, p1, p2) = unit_corners();
