@@ -566,7 +566,8 @@ fn facing_cos(normal: Vec3, direction: Vec3) -> f32 {
 /// (`|dn| < MIN_COS` becomes `+-MIN_COS`; `dn = 0`, of either sign, becomes `+MIN_COS`, as if the ray
 /// met the side the normal points to).
 ///
-/// - `curvature` is estimated from the mesh's stored normals ([`triangle_curvature`]), and
+/// - `curvature` is estimated from the mesh's stored normals ([`triangle_curvature`], or, signed
+///   and in the plane of incidence, [`normal_curvature`] along `direction`), and
 ///   `normal` is the shading normal interpolated from the *same* stored normals, not turned towards
 ///   the ray: flipping the normals flips the sign of both `curvature` and `dn`, so `beta` does not
 ///   depend on which way the mesh's normals point, and a hit on either side of a surface is right.
