@@ -427,6 +427,121 @@ pub fn triangle_curvature(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3, n2: 
     (edge_curvature(p0, p1, n0, n1) + edge_curvature(p1, p2, n1, n2) + edge_curvature(p2, p0, n2, n0)) / 3.0
 }
 
+/// `axis / max(|axis|, MIN_MAGNITUDE)`: unit length, or shorter when `|axis| < MIN_MAGNITUDE`
+/// (zero stays zero).
+fn clamped_unit(axis: Vec3) -> Vec3 {
+    axis / axis.length().max(MIN_MAGNITUDE)
+}
+
+/// First axis of a triangle's shape frame: `u = (p1 - p0) / |p1 - p0|` ([`clamped_unit`]).
+fn shape_frame_u(p0: Vec3, p1: Vec3) -> Vec3 {
+    clamped_unit(p1 - p0)
+}
+
+/// Second axis of a triangle's shape frame: `v = face × u`, with the face normal
+/// `face = unit(u × unit(p2 - p0))` (counter-clockwise winding). `(u, v, face)` is right-handed.
+/// The edges are made unit length before the cross product so that nothing overflows for
+/// coordinates up to 1e18. A zero-area triangle whose edges are exactly parallel has `v = 0`.
+fn shape_frame_v(p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
+    let u = shape_frame_u(p0, p1);
+    let face = clamped_unit(u.cross(clamped_unit(p2 - p0)));
+    face.cross(u)
+}
+
+/// A triangle's shape operator (second fundamental form) `II = [[e, f], [f, g]]`, returned as
+/// `(e, f, g)`, fitted to its vertex normals by least squares (Rusinkiewicz, "Estimating Curvatures
+/// and Their Derivatives on Triangle Meshes", 3DPVT 2004, Sec. 3, the per-face least-squares fit).
+///
+/// The frame is the triangle's own: `u = unit(p1 - p0)`, `v = face × u` with the face normal of the
+/// counter-clockwise winding `p0, p1, p2`. For each edge `p_j - p_i` with components `(a, b)` in
+/// `(u, v)` and normal change `(du, dv) = ((n_j - n_i).u, (n_j - n_i).v)`, the fit asks
+/// `II [a, b] = [du, dv]`: six equations in three unknowns. With the sums over the three edges
+/// `A = Σa²`, `B = Σb²`, `C = Σab` (divided by `A + B`, so that they are dimensionless and
+/// `A + B = 1`), `r = (Σa du, Σ(b du + a dv), Σb dv)` (divided by the same), the normal equations
+/// `[[A, C, 0], [C, 1, C], [0, C, B]] (e, f, g) = r` are solved in closed form by cofactors over the
+/// determinant `AB - C²` (which is `12 area² / (A + B)²` before the division: 1/4 for an equilateral
+/// triangle, 0 for a degenerate one).
+///
+/// Sign: as [`edge_curvature`], positive where the surface bends away from the side its normals
+/// point to (a sphere of radius R with outward normals has `II = I / R`); flipping the normals
+/// flips `II`. The fit is exact wherever the normals change linearly along the surface (spheres,
+/// cylinders), and approaches a smooth surface's shape operator as the triangle shrinks.
+///
+/// Clamps: `A + B` and the determinant are kept at least `MIN_MAGNITUDE`; a zero-area triangle whose
+/// edges are exactly parallel (or coincident vertices) gives `(0, 0, 0)`, a flat one. A nearly
+/// degenerate sliver is ill-conditioned: its error grows as the inverse of the determinant.
+///
+/// One shape operator serves every ray that meets the triangle: compute it once per hit (or store
+/// it per triangle, 12 bytes) and ask [`normal_curvature`] for each direction.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::triangle_shape_operator;
+///
+/// // A triangle of a sphere of radius 2 with its outward normals p / 2: II = I / 2 in any frame.
+/// let (p0, p1, p2) = (Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.0, 0.0, 2.0));
+/// let ii = triangle_shape_operator(p0, p1, p2, p0 / 2.0, p1 / 2.0, p2 / 2.0);
+/// assert!((ii - Vec3::new(0.5, 0.0, 0.5)).abs().max_element() < 1e-6);
+/// ```
+pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3, n2: Vec3) -> Vec3 {
+    let u = shape_frame_u(p0, p1);
+    let v = shape_frame_v(p0, p1, p2);
+    let (e01, e12, e20) = (p1 - p0, p2 - p1, p0 - p2);
+    let (t01, t12, t20) = (n1 - n0, n2 - n1, n0 - n2);
+    let a = Vec3::new(e01.dot(u), e12.dot(u), e20.dot(u));
+    let b = Vec3::new(e01.dot(v), e12.dot(v), e20.dot(v));
+    let du = Vec3::new(t01.dot(u), t12.dot(u), t20.dot(u));
+    let dv = Vec3::new(t01.dot(v), t12.dot(v), t20.dot(v));
+    let scale = (a.dot(a) + b.dot(b)).max(MIN_MAGNITUDE);
+    let (aa, bb, ab) = (a.dot(a) / scale, b.dot(b) / scale, a.dot(b) / scale);
+    let r = Vec3::new(a.dot(du), b.dot(du) + a.dot(dv), b.dot(dv)) / scale;
+    let determinant = (aa * bb - ab * ab).max(MIN_MAGNITUDE);
+    let e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
+    let f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
+    let g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
+    Vec3::new(e, f, g) / determinant
+}
+
+/// Normal curvature of a triangle along `direction`: `k = II(d, d) / |d|²` with `d = (a, b)` the
+/// direction's components in the triangle's frame `(u, v)` (its projection into the triangle's
+/// plane) and `II = (e, f, g)` from [`triangle_shape_operator`] of the same corners (Euler's
+/// formula; Rusinkiewicz 2004, Sec. 3):
+/// `k = (e a² + 2 f a b + g b² + MIN_MAGNITUDE (e + g) / 2) / (a² + b² + MIN_MAGNITUDE)`.
+///
+/// Signed as [`edge_curvature`]: positive where the surface bends away from the side the normals
+/// point to, so a saddle gives opposite signs along its two principal directions. The
+/// `MIN_MAGNITUDE` terms change nothing measurable for a direction with any component in the
+/// plane, and make a direction along the face normal (or a zero direction), which has no plane of
+/// incidence, give the mean curvature `(e + g) / 2`. `direction` need not be unit length.
+///
+/// It takes the corners rather than the frame so that the frame stays private to this module and
+/// one call per ray needs nothing but what a hit has.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::{normal_curvature, triangle_shape_operator};
+///
+/// // A triangle of a cylinder of radius 2 around the z axis, normals (x, y, 0) / 2: curvature 1/2
+/// // around the cylinder, 0 along its axis.
+/// let (p0, p1, p2) = (Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0), Vec3::new(2.0, 0.0, 1.0));
+/// let flat = |p: Vec3| Vec3::new(p.x, p.y, 0.0) / 2.0;
+/// let ii = triangle_shape_operator(p0, p1, p2, flat(p0), flat(p1), flat(p2));
+/// assert!(normal_curvature(p0, p1, p2, ii, Vec3::Z).abs() < 1e-6);
+/// // Across, in the plane of the triangle: along the chord p0 -> p1, (1 - 0) / 2.
+/// assert!((normal_curvature(p0, p1, p2, ii, p1 - p0) - 0.5).abs() < 1e-6);
+/// ```
+pub fn normal_curvature(p0: Vec3, p1: Vec3, p2: Vec3, shape_operator: Vec3, direction: Vec3) -> f32 {
+    let a = direction.dot(shape_frame_u(p0, p1));
+    let b = direction.dot(shape_frame_v(p0, p1, p2));
+    let (e, f, g) = (shape_operator.x, shape_operator.y, shape_operator.z);
+    let mean = 0.5 * (e + g);
+    (e * a * a + 2.0 * f * a * b + g * b * b + MIN_MAGNITUDE * mean) / (a * a + b * b + MIN_MAGNITUDE)
+}
+
 /// The cosine of incidence seen from the side `normal` points to, `-dot(normal, direction)`,
 /// kept at least `MIN_COS` away from 0 with its sign: positive when the ray meets the side the
 /// normal points to. A cosine of exactly 0, `+0` or `-0`, becomes `+MIN_COS`.
@@ -451,7 +566,8 @@ fn facing_cos(normal: Vec3, direction: Vec3) -> f32 {
 /// (`|dn| < MIN_COS` becomes `+-MIN_COS`; `dn = 0`, of either sign, becomes `+MIN_COS`, as if the ray
 /// met the side the normal points to).
 ///
-/// - `curvature` is estimated from the mesh's stored normals ([`triangle_curvature`]), and
+/// - `curvature` is estimated from the mesh's stored normals ([`triangle_curvature`], or, signed
+///   and in the plane of incidence, [`normal_curvature`] along `direction`), and
 ///   `normal` is the shading normal interpolated from the *same* stored normals, not turned towards
 ///   the ray: flipping the normals flips the sign of both `curvature` and `dn`, so `beta` does not
 ///   depend on which way the mesh's normals point, and a hit on either side of a surface is right.

@@ -157,6 +157,66 @@ float rf_triangle_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2
         + rf_edge_curvature(p2, p0, n2, n0)) / 3.0;
 }
 
+// axis / max(|axis|, RF_MIN_MAGNITUDE): unit length, shorter below RF_MIN_MAGNITUDE (0 stays 0).
+vec3 rf_clamped_unit(vec3 axis) {
+    return axis / max(length(axis), RF_MIN_MAGNITUDE);
+}
+
+// First axis of a triangle's shape frame: u = unit(p1 - p0).
+vec3 rf_shape_frame_u(vec3 p0, vec3 p1) {
+    return rf_clamped_unit(p1 - p0);
+}
+
+// Second axis of a triangle's shape frame: v = face x u, face = unit(u x unit(p2 - p0)).
+vec3 rf_shape_frame_v(vec3 p0, vec3 p1, vec3 p2) {
+    vec3 u = rf_shape_frame_u(p0, p1);
+    vec3 face = rf_clamped_unit(cross(u, rf_clamped_unit(p2 - p0)));
+    return cross(face, u);
+}
+
+// A triangle's shape operator II = [[e, f], [f, g]] as (e, f, g) in the frame (u, v), fitted to
+// the vertex normals by least squares (Rusinkiewicz 2004, Sec. 3): per edge II (a, b) = (du, dv);
+// normal equations over A + B, solved by cofactors; A + B and the determinant clamped to
+// RF_MIN_MAGNITUDE. Positive where the surface bends away from the normals; (0, 0, 0) for a zero-area
+// triangle with parallel edges.
+vec3 rf_triangle_shape_operator(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2) {
+    vec3 u = rf_shape_frame_u(p0, p1);
+    vec3 v = rf_shape_frame_v(p0, p1, p2);
+    vec3 e01 = p1 - p0;
+    vec3 e12 = p2 - p1;
+    vec3 e20 = p0 - p2;
+    vec3 t01 = n1 - n0;
+    vec3 t12 = n2 - n1;
+    vec3 t20 = n0 - n2;
+    vec3 a = vec3(dot(e01, u), dot(e12, u), dot(e20, u));
+    vec3 b = vec3(dot(e01, v), dot(e12, v), dot(e20, v));
+    vec3 du = vec3(dot(t01, u), dot(t12, u), dot(t20, u));
+    vec3 dv = vec3(dot(t01, v), dot(t12, v), dot(t20, v));
+    float scale = max(dot(a, a) + dot(b, b), RF_MIN_MAGNITUDE);
+    float aa = dot(a, a) / scale;
+    float bb = dot(b, b) / scale;
+    float ab = dot(a, b) / scale;
+    vec3 r = vec3(dot(a, du), dot(b, du) + dot(a, dv), dot(b, dv)) / scale;
+    float determinant = max(aa * bb - ab * ab, RF_MIN_MAGNITUDE);
+    float e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
+    float f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
+    float g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
+    return vec3(e, f, g) / determinant;
+}
+
+// Normal curvature along direction projected into the triangle's plane (Euler's formula):
+// (e a^2 + 2 f a b + g b^2 + min (e + g) / 2) / (a^2 + b^2 + min); along the face normal, the mean.
+float rf_normal_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 shape_operator, vec3 direction) {
+    float a = dot(direction, rf_shape_frame_u(p0, p1));
+    float b = dot(direction, rf_shape_frame_v(p0, p1, p2));
+    float e = shape_operator.x;
+    float f = shape_operator.y;
+    float g = shape_operator.z;
+    float mean = 0.5 * (e + g);
+    return (e * a * a + 2.0 * f * a * b + g * b * b + RF_MIN_MAGNITUDE * mean)
+        / (a * a + b * b + RF_MIN_MAGNITUDE);
+}
+
 // -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
 // +RF_MIN_COS. mix with a bool selector is OpSelect: no branch.
 float rf_facing_cos(vec3 normal, vec3 direction) {

@@ -156,6 +156,79 @@ fn rf_triangle_curvature(
         + rf_edge_curvature(p2, p0, n2, n0)) / 3.0;
 }
 
+// axis / max(|axis|, RF_MIN_MAGNITUDE): unit length, shorter below RF_MIN_MAGNITUDE (0 stays 0).
+fn rf_clamped_unit(axis: vec3<f32>) -> vec3<f32> {
+    return axis / max(length(axis), RF_MIN_MAGNITUDE);
+}
+
+// First axis of a triangle's shape frame: u = unit(p1 - p0).
+fn rf_shape_frame_u(p0: vec3<f32>, p1: vec3<f32>) -> vec3<f32> {
+    return rf_clamped_unit(p1 - p0);
+}
+
+// Second axis of a triangle's shape frame: v = face x u, face = unit(u x unit(p2 - p0)).
+fn rf_shape_frame_v(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>) -> vec3<f32> {
+    let u = rf_shape_frame_u(p0, p1);
+    let face = rf_clamped_unit(cross(u, rf_clamped_unit(p2 - p0)));
+    return cross(face, u);
+}
+
+// A triangle's shape operator II = [[e, f], [f, g]] as (e, f, g) in the frame (u, v), fitted to
+// the vertex normals by least squares (Rusinkiewicz 2004, Sec. 3): per edge II (a, b) = (du, dv);
+// normal equations over A + B, solved by cofactors; A + B and the determinant clamped to
+// RF_MIN_MAGNITUDE. Positive where the surface bends away from the normals; (0, 0, 0) for a zero-area
+// triangle with parallel edges.
+fn rf_triangle_shape_operator(
+    p0: vec3<f32>,
+    p1: vec3<f32>,
+    p2: vec3<f32>,
+    n0: vec3<f32>,
+    n1: vec3<f32>,
+    n2: vec3<f32>,
+) -> vec3<f32> {
+    let u = rf_shape_frame_u(p0, p1);
+    let v = rf_shape_frame_v(p0, p1, p2);
+    let e01 = p1 - p0;
+    let e12 = p2 - p1;
+    let e20 = p0 - p2;
+    let t01 = n1 - n0;
+    let t12 = n2 - n1;
+    let t20 = n0 - n2;
+    let a = vec3<f32>(dot(e01, u), dot(e12, u), dot(e20, u));
+    let b = vec3<f32>(dot(e01, v), dot(e12, v), dot(e20, v));
+    let du = vec3<f32>(dot(t01, u), dot(t12, u), dot(t20, u));
+    let dv = vec3<f32>(dot(t01, v), dot(t12, v), dot(t20, v));
+    let scale = max(dot(a, a) + dot(b, b), RF_MIN_MAGNITUDE);
+    let aa = dot(a, a) / scale;
+    let bb = dot(b, b) / scale;
+    let ab = dot(a, b) / scale;
+    let r = vec3<f32>(dot(a, du), dot(b, du) + dot(a, dv), dot(b, dv)) / scale;
+    let determinant = max(aa * bb - ab * ab, RF_MIN_MAGNITUDE);
+    let e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
+    let f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
+    let g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
+    return vec3<f32>(e, f, g) / determinant;
+}
+
+// Normal curvature along direction projected into the triangle's plane (Euler's formula):
+// (e a^2 + 2 f a b + g b^2 + min (e + g) / 2) / (a^2 + b^2 + min); along the face normal, the mean.
+fn rf_normal_curvature(
+    p0: vec3<f32>,
+    p1: vec3<f32>,
+    p2: vec3<f32>,
+    shape_operator: vec3<f32>,
+    direction: vec3<f32>,
+) -> f32 {
+    let a = dot(direction, rf_shape_frame_u(p0, p1));
+    let b = dot(direction, rf_shape_frame_v(p0, p1, p2));
+    let e = shape_operator.x;
+    let f = shape_operator.y;
+    let g = shape_operator.z;
+    let mean = 0.5 * (e + g);
+    return (e * a * a + 2.0 * f * a * b + g * b * b + RF_MIN_MAGNITUDE * mean)
+        / (a * a + b * b + RF_MIN_MAGNITUDE);
+}
+
 // -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
 // +RF_MIN_COS.
 fn rf_facing_cos(normal: vec3<f32>, direction: vec3<f32>) -> f32 {

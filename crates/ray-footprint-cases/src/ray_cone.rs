@@ -16,6 +16,7 @@ mod lod;
 mod material;
 mod propagation;
 mod reference;
+mod shape;
 mod strategy;
 
 use glam::{Vec2, Vec3};
@@ -27,6 +28,7 @@ pub use camera::*;
 pub use lod::*;
 pub use material::*;
 pub use propagation::*;
+pub use shape::*;
 
 /// Arguments of `rf_texture_lod`: base LOD, width, texture size, normal, direction.
 pub type TextureLodArgs = (f32, f32, Vec2, Vec3, Vec3);

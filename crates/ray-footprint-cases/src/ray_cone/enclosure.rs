@@ -2,14 +2,17 @@
 //! roughness): each function here re-evaluates the shader function of its name, or a step of one,
 //! in interval arithmetic ([`shader_proptest::interval`]) in the same order of operations as
 //! `src/ray_cone.rs`, and its width is the record's tolerance. Also here: whether a refraction's decisions are certain, so that
-//! the check keeps to cases whose enclosure says something.
+//! the check keeps to cases whose enclosure says something. The shape operator's least-squares fit
+//! and the normal curvature along a direction are here too, with their inputs as intervals so
+//! that a reference can enclose an exact value with its f32 rounding.
 
 use super::RefractArgs;
+use crate::ray_diff::WELL_CONDITIONED;
 use glam::Vec3;
 use ray_footprint::ray_cone::{
     RayCone, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_COS, MIN_MAGNITUDE, MIN_ROUGHNESS_DENOMINATOR,
 };
-use shader_proptest::interval::{interval3, select, Interval, Interval2, IntervalVec};
+use shader_proptest::interval::{interval3, select, Interval, Interval2, Interval3, IntervalVec};
 
 /// `(sin, cos)` of an interval.
 fn angle_sin_cos(angle: Interval) -> Interval2 {
@@ -178,4 +181,86 @@ pub(super) fn roughness_spread_angle(roughness: f32) -> Interval {
     let variance =
         Interval::c(0.5) * alpha2 / (Interval::c(1.0) - alpha2).max_c(f64::from(MIN_ROUGHNESS_DENOMINATOR));
     Interval::c(2.0) * variance.sqrt()
+}
+
+/// `axis / max(|axis|, MIN_MAGNITUDE)`, as `clamped_unit`.
+fn clamped_unit(axis: Interval3) -> Interval3 {
+    axis / axis.dot(axis).sqrt().max_c(f64::from(MIN_MAGNITUDE))
+}
+
+/// The triangle's shape frame `(u, v)`, as `shape_frame_u` and `shape_frame_v`.
+fn shape_frame(p: [Interval3; 3]) -> (Interval3, Interval3) {
+    let u = clamped_unit(p[1] - p[0]);
+    let face = clamped_unit(u.cross(clamped_unit(p[2] - p[0])));
+    (u, face.cross(u))
+}
+
+/// The normal equations of `triangle_shape_operator` after the division by `A + B`:
+/// `(A, B, C)` and the right-hand side `r`.
+fn shape_normal_equations(p: [Interval3; 3], n: [Interval3; 3]) -> ([Interval; 3], Interval3) {
+    let (u, v) = shape_frame(p);
+    let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
+    let turns = [n[1] - n[0], n[2] - n[1], n[0] - n[2]];
+    let along = |vectors: [Interval3; 3], axis: Interval3| IntervalVec(vectors.map(|x| x.dot(axis)));
+    let (a, b) = (along(edges, u), along(edges, v));
+    let (du, dv) = (along(turns, u), along(turns, v));
+    let scale = (a.dot(a) + b.dot(b)).max_c(f64::from(MIN_MAGNITUDE));
+    let squares = [a.dot(a) / scale, b.dot(b) / scale, a.dot(b) / scale];
+    let r = IntervalVec([a.dot(du), b.dot(du) + a.dot(dv), b.dot(dv)]) / scale;
+    (squares, r)
+}
+
+/// The determinant `AB - C²` of `triangle_shape_operator`'s normal equations, before its clamp.
+fn shape_determinant([aa, bb, ab]: [Interval; 3]) -> Interval {
+    aa * bb - ab.abs() * ab.abs()
+}
+
+/// `rf_triangle_shape_operator` of corners `p` and normals `n` given as intervals (an f32
+/// input is an exact interval; a reference's may hold an exact value and its rounding too).
+pub(super) fn triangle_shape_operator(p: [Interval3; 3], n: [Interval3; 3]) -> Interval3 {
+    let ([aa, bb, ab], r) = shape_normal_equations(p, n);
+    let [r0, r1, r2] = r.0;
+    let ab2 = ab.abs() * ab.abs();
+    let determinant = shape_determinant([aa, bb, ab]).max_c(f64::from(MIN_MAGNITUDE));
+    let e = (bb - ab2) * r0 - bb * ab * r1 + ab2 * r2;
+    let f = aa * bb * r1 - bb * ab * r0 - aa * ab * r2;
+    let g = (aa - ab2) * r2 - aa * ab * r1 + ab2 * r0;
+    IntervalVec([e, f, g]) / determinant
+}
+
+/// Whether the determinant of `triangle_shape_operator`'s normal equations is known to
+/// [`WELL_CONDITIONED`] (a triangle that is not a sliver within rounding) and the triangle's
+/// squared edges sum above `MIN_MAGNITUDE` (edges longer than about 1e-10).
+pub(super) fn shape_well_conditioned(p: [Vec3; 3]) -> bool {
+    let p = p.map(interval3);
+    let ([aa, bb, ab], _) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
+    let determinant = shape_determinant([aa, bb, ab]);
+    let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
+    let squares = edges.iter().fold(Interval::c(0.0), |sum, &e| sum + e.dot(e));
+    determinant.relative_width() <= WELL_CONDITIONED && squares.lo > f64::from(MIN_MAGNITUDE)
+}
+
+/// `rf_normal_curvature` with every argument an interval.
+pub(super) fn normal_curvature(
+    p: [Interval3; 3],
+    shape_operator: Interval3,
+    direction: Interval3,
+) -> Interval {
+    let (u, v) = shape_frame(p);
+    let (a, b) = (direction.dot(u), direction.dot(v));
+    let [e, f, g] = shape_operator.0;
+    let min = Interval::exact(MIN_MAGNITUDE);
+    let mean = Interval::c(0.5) * (e + g);
+    let (a2, b2) = (a.abs() * a.abs(), b.abs() * b.abs());
+    (e * a * a + Interval::c(2.0) * f * a * b + g * b * b + min * mean) / (a2 + b2 + min)
+}
+
+/// Whether `rf_normal_curvature`'s frame and the direction's squared length in the triangle's
+/// plane are known to [`WELL_CONDITIONED`].
+pub(super) fn projection_well_conditioned(p: [Vec3; 3], direction: Vec3) -> bool {
+    let (u, v) = shape_frame(p.map(interval3));
+    let d = interval3(direction);
+    let (a, b) = (d.dot(u), d.dot(v));
+    let in_plane = a.abs() * a.abs() + b.abs() * b.abs();
+    shape_well_conditioned(p) && in_plane.relative_width() <= WELL_CONDITIONED
 }

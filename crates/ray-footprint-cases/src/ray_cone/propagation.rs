@@ -420,8 +420,10 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// This section's records, in the module's order.
+/// This section's records, in the module's order; the shape operator's two, between
+/// `triangle_curvature` and `curvature_spread_angle` in the module, are declared in `shape.rs`.
 pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
+    use super::shape::{normal_curvature, triangle_shape_operator};
     records![
         width_at,
         propagate,
@@ -431,6 +433,8 @@ pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
         surface_spread_angle,
         edge_curvature,
         triangle_curvature,
+        triangle_shape_operator,
+        normal_curvature,
         curvature_spread_angle
     ]
 }

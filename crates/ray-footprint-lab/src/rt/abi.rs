@@ -114,7 +114,8 @@ pub struct RtPixelRecord {
     pub lod: f32,
     /// `rf_texture_gradient(footprint * texel_density, tex_grad_scale)`.
     pub gradient: f32,
-    /// `rf_triangle_curvature` from the vertex normals.
+    /// `rf_normal_curvature` along the ray's direction of `rf_triangle_shape_operator` from the
+    /// vertex normals: the signed curvature in the plane of incidence.
     pub curvature: f32,
     /// `rf_curvature_spread_angle(curvature, width, normal, direction)`.
     pub curvature_spread: f32,

@@ -21,7 +21,8 @@ pub enum Mode {
     Mip0 = 0,
     /// Isotropic ray-cone LOD (RTG Eq. 34); reflections treat the sphere as a planar mirror.
     Cone = 1,
-    /// Ray-cone LOD; reflections widen the cone by the triangle curvature (JCGT 2021).
+    /// Ray-cone LOD; reflections widen (or narrow) the cone by the triangle's signed normal
+    /// curvature in the plane of incidence (JCGT 2021's spread; Rusinkiewicz 2004's shape operator).
     ConeCurvature = 2,
     /// `textureGrad` with the ray-cone gradient times `tex_grad_scale` (0: mip 0, 1: matching, >1: blurred).
     TexGradScale = 3,

@@ -19,7 +19,7 @@ use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, R
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_cases as suite;
-use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, triangle_curvature_error};
+use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, hit_curvature_error};
 use ray_footprint_lab::rt::abi::{
     self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
 };
@@ -850,9 +850,11 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let gradient = rc::texture_gradient(r.footprint * r.texel_density, push.cone.tex_grad_scale);
     stats.compare("gradient", r.gradient, gradient, f32::MIN_POSITIVE, r);
 
-    // triangle_curvature: the three edges' errors, two additions and the division by 3.
-    let curvature = rc::triangle_curvature(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
-    let curvature_error = triangle_curvature_error(p, normals);
+    // The signed curvature in the plane of incidence: normal_curvature along the ray of
+    // triangle_shape_operator, within the two enclosures chained.
+    let shape_operator = rc::triangle_shape_operator(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
+    let curvature = rc::normal_curvature(p[0], p[1], p[2], shape_operator, d);
+    let curvature_error = hit_curvature_error(p, normals, d);
     stats.compare("curvature", r.curvature, curvature, curvature_error, r);
 
     // curvature_spread_angle: the suite's own tolerance, on the shader's curvature, width and

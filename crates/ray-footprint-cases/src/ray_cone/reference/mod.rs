@@ -11,6 +11,7 @@ mod camera;
 mod lod;
 mod propagation;
 mod refraction;
+mod shape;
 
 pub(super) use camera::{
     orthographic_ray_cone, pack_ray_cone, pinhole_ray_cone, pinhole_ray_cone_for_ray, pixel_spread_angle,
@@ -29,6 +30,7 @@ pub(super) use refraction::{
     refract_curved, refract_first_order, refract_flat, refract_index_one, refract_negated, refract_optix,
     refract_total_internal_reflection, roughness_closed_form, roughness_monotone, roughness_small,
 };
+pub(super) use shape::{normal_curvature_euler, shape_operator_linear_normals, shape_operator_quadric};
 
 use glam::DVec2;
 

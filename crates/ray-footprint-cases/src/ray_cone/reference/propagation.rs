@@ -377,19 +377,19 @@ pub(in crate::ray_cone) fn surface_spread_angle() -> Reference<(f32, f32, f32, f
 /// Points and unit normals of a sphere or a cylinder, the normals stored outward or inward, and
 /// the exact normal curvature of each chord.
 #[derive(Clone, Debug)]
-struct Curved {
-    points: Vec<DVec3>,
-    normals: Vec<DVec3>,
+pub(super) struct Curved {
+    pub(super) points: Vec<DVec3>,
+    pub(super) normals: Vec<DVec3>,
     /// Unit axis of a cylinder, `None` for a sphere.
-    axis: Option<DVec3>,
-    radius: f64,
+    pub(super) axis: Option<DVec3>,
+    pub(super) radius: f64,
     /// 1 for outward normals, -1 for inward ones.
-    orientation: f64,
+    pub(super) orientation: f64,
 }
 
 impl Curved {
     /// `count` points of a sphere or cylinder of radius `10^[-2, 2]` around a centre within 10.
-    fn strategy(count: usize) -> BoxedStrategy<Curved> {
+    pub(super) fn strategy(count: usize) -> BoxedStrategy<Curved> {
         let place = (unit(), -1.0f64..1.0);
         (
             any::<bool>(),

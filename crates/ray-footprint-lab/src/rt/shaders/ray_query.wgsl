@@ -15,7 +15,8 @@
 const RT_MODE_MIP0: u32 = 0u;
 // Isotropic ray-cone LOD (RTG Eq. 34); reflections treat the sphere as a planar mirror.
 const RT_MODE_CONE: u32 = 1u;
-// Ray-cone LOD; reflections widen the cone by the triangle curvature (JCGT 2021).
+// Ray-cone LOD; reflections widen (or narrow) the cone by the triangle's signed normal curvature in
+// the plane of incidence (JCGT 2021's spread; Rusinkiewicz 2004's shape operator).
 const RT_MODE_CONE_CURVATURE: u32 = 2u;
 // textureGrad with the ray-cone gradient times tex_grad_scale (0: mip 0, 1: matching, >1: blurred).
 const RT_MODE_TEX_GRAD_SCALE: u32 = 3u;
@@ -196,7 +197,8 @@ struct RtPixelRecord {
     lod: f32,
     // rf_texture_gradient(footprint * texel_density, tex_grad_scale).
     gradient: f32,
-    // rf_triangle_curvature from the vertex normals.
+    // rf_normal_curvature along the ray's direction of rf_triangle_shape_operator from the vertex
+    // normals: the signed curvature in the plane of incidence.
     curvature: f32,
     // rf_curvature_spread_angle(curvature, width, normal, direction).
     curvature_spread: f32,
@@ -300,7 +302,8 @@ fn rt_measure(tri: RtTriangle, material: u32, parameter: f32, barycentrics: vec2
     let base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
     let lod = rf_texture_lod(base_lod, width, vec2<f32>(pc.texture_size), normal, direction);
     let gradient = rf_texture_gradient(footprint * density, pc.cone.tex_grad_scale);
-    let curvature = rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+    let shape_operator = rf_triangle_shape_operator(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+    let curvature = rf_normal_curvature(tri.p[0], tri.p[1], tri.p[2], shape_operator, direction);
     let spread = rf_curvature_spread_angle(curvature, width, normal, direction);
     let roughness_spread = select(0.0, rf_roughness_spread_angle(parameter), material == RT_MATERIAL_MIRROR);
     var record = RtPixelRecord();

@@ -17,7 +17,8 @@
 static const uint RT_MODE_MIP0 = 0u;
 // Isotropic ray-cone LOD (RTG Eq. 34); reflections treat the sphere as a planar mirror.
 static const uint RT_MODE_CONE = 1u;
-// Ray-cone LOD; reflections widen the cone by the triangle curvature (JCGT 2021).
+// Ray-cone LOD; reflections widen (or narrow) the cone by the triangle's signed normal curvature in
+// the plane of incidence (JCGT 2021's spread; Rusinkiewicz 2004's shape operator).
 static const uint RT_MODE_CONE_CURVATURE = 2u;
 // textureGrad with the ray-cone gradient times tex_grad_scale (0: mip 0, 1: matching, >1: blurred).
 static const uint RT_MODE_TEX_GRAD_SCALE = 3u;
@@ -198,7 +199,8 @@ struct RtPixelRecord {
     float lod;
     // rf_texture_gradient(footprint * texel_density, tex_grad_scale).
     float gradient;
-    // rf_triangle_curvature from the vertex normals.
+    // rf_normal_curvature along the ray's direction of rf_triangle_shape_operator from the vertex
+    // normals: the signed curvature in the plane of incidence.
     float curvature;
     // rf_curvature_spread_angle(curvature, width, normal, direction).
     float curvature_spread;

@@ -130,10 +130,13 @@ float rt_cone_gradient(RtHit hit, RfRayCone cone) {
     return rf_texture_gradient(rt_footprint(hit, cone) * density, pc.cone.tex_grad_scale);
 }
 
-// The hit triangle's curvature from its vertex normals (JCGT 2021).
+// The hit triangle's normal curvature in the plane of incidence, with its sign: the shape operator
+// fitted to its vertex normals (Rusinkiewicz 2004, Sec. 3) along the ray's direction projected into
+// its plane (on a saddle, positive one way and negative the other).
 float rt_curvature(RtHit hit) {
     RtTriangle tri = hit.tri;
-    return rf_triangle_curvature(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+    float3 shape_operator = rf_triangle_shape_operator(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
+    return rf_normal_curvature(tri.p[0], tri.p[1], tri.p[2], shape_operator, hit.direction);
 }
 
 // The spread angle a reflection off the hit reached by `cone` gets from the curvature (JCGT 2021).
