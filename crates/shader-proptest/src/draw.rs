@@ -1,6 +1,6 @@
 //! Strategies that draw a case with fewer random words and allocations than proptest's own: a float
 //! in a range from one word ([`uniform`]), and a weighted choice that builds the chosen strategy's
-//! value only ([`one_of!`]).
+//! value only ([`one_of!`](crate::one_of)).
 //!
 //! Generating cases is most of a check's work on a fast device (the harness README's "Where the
 //! time goes"), and two of proptest's strategies cost most of it:
@@ -10,7 +10,7 @@
 //!   20 ns.
 //! - `prop_oneof!` builds, beside the chosen strategy's value, a deferred value of every other arm,
 //!   each holding a copy of the test runner with a generator of its own, so that shrinking can move
-//!   to an earlier arm; about 600 ns for five arms of floats. [`one_of!`] draws one word, builds
+//!   to an earlier arm; about 600 ns for five arms of floats. [`one_of!`](crate::one_of) draws one word, builds
 //!   the chosen arm's value and nothing else, about 130 ns.
 //!
 //! Both read their words from the runner's generator, so a batch's cases depend on its seed only
@@ -70,7 +70,7 @@ pub fn uniform(low: f32, high: f32) -> Map<proptest::num::u32::Any, impl Fn(u32)
     })
 }
 
-/// A weighted choice among strategies of one value type ([`one_of!`] builds it): one 32-bit word
+/// A weighted choice among strategies of one value type ([`one_of!`](crate::one_of) builds it): one 32-bit word
 /// picks an arm with probability proportional to its weight, and only that arm draws a value.
 pub struct OneOf<T> {
     arms: Vec<(u32, BoxedStrategy<T>)>,
