@@ -438,12 +438,11 @@ fn shape_frame_u(p0: Vec3, p1: Vec3) -> Vec3 {
     clamped_unit(p1 - p0)
 }
 
-/// Second axis of a triangle's shape frame: `v = face × u`, with the face normal
-/// `face = unit(u × unit(p2 - p0))` (counter-clockwise winding). `(u, v, face)` is right-handed.
+/// Second axis of a triangle's shape frame, given its first, `u` ([`shape_frame_u`]): `v = face × u`,
+/// with the face normal `face = unit(u × unit(p2 - p0))` (counter-clockwise winding). `(u, v, face)` is right-handed.
 /// The edges are made unit length before the cross product so that nothing overflows for
 /// coordinates up to 1e18. A zero-area triangle whose edges are exactly parallel has `v = 0`.
-fn shape_frame_v(p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
-    let u = shape_frame_u(p0, p1);
+fn shape_frame_v(u: Vec3, p0: Vec3, p2: Vec3) -> Vec3 {
     let face = clamped_unit(u.cross(clamped_unit(p2 - p0)));
     face.cross(u)
 }
@@ -487,7 +486,7 @@ fn shape_frame_v(p0: Vec3, p1: Vec3, p2: Vec3) -> Vec3 {
 /// ```
 pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3, n2: Vec3) -> Vec3 {
     let u = shape_frame_u(p0, p1);
-    let v = shape_frame_v(p0, p1, p2);
+    let v = shape_frame_v(u, p0, p2);
     let (e01, e12, e20) = (p1 - p0, p2 - p1, p0 - p2);
     let (t01, t12, t20) = (n1 - n0, n2 - n1, n0 - n2);
     let a = Vec3::new(e01.dot(u), e12.dot(u), e20.dot(u));
@@ -535,8 +534,9 @@ pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3,
 /// assert!((normal_curvature(p0, p1, p2, ii, p1 - p0) - 0.5).abs() < 1e-6);
 /// ```
 pub fn normal_curvature(p0: Vec3, p1: Vec3, p2: Vec3, shape_operator: Vec3, direction: Vec3) -> f32 {
-    let a = direction.dot(shape_frame_u(p0, p1));
-    let b = direction.dot(shape_frame_v(p0, p1, p2));
+    let u = shape_frame_u(p0, p1);
+    let a = direction.dot(u);
+    let b = direction.dot(shape_frame_v(u, p0, p2));
     let (e, f, g) = (shape_operator.x, shape_operator.y, shape_operator.z);
     let mean = 0.5 * (e + g);
     (e * a * a + 2.0 * f * a * b + g * b * b + MIN_MAGNITUDE * mean) / (a * a + b * b + MIN_MAGNITUDE)

@@ -167,9 +167,8 @@ vec3 rf_shape_frame_u(vec3 p0, vec3 p1) {
     return rf_clamped_unit(p1 - p0);
 }
 
-// Second axis of a triangle's shape frame: v = face x u, face = unit(u x unit(p2 - p0)).
-vec3 rf_shape_frame_v(vec3 p0, vec3 p1, vec3 p2) {
-    vec3 u = rf_shape_frame_u(p0, p1);
+// Second axis of a triangle's shape frame, given its first u: v = face x u, face = unit(u x unit(p2 - p0)).
+vec3 rf_shape_frame_v(vec3 u, vec3 p0, vec3 p2) {
     vec3 face = rf_clamped_unit(cross(u, rf_clamped_unit(p2 - p0)));
     return cross(face, u);
 }
@@ -181,7 +180,7 @@ vec3 rf_shape_frame_v(vec3 p0, vec3 p1, vec3 p2) {
 // triangle with parallel edges.
 vec3 rf_triangle_shape_operator(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2) {
     vec3 u = rf_shape_frame_u(p0, p1);
-    vec3 v = rf_shape_frame_v(p0, p1, p2);
+    vec3 v = rf_shape_frame_v(u, p0, p2);
     vec3 e01 = p1 - p0;
     vec3 e12 = p2 - p1;
     vec3 e20 = p0 - p2;
@@ -207,8 +206,9 @@ vec3 rf_triangle_shape_operator(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec
 // Normal curvature along direction projected into the triangle's plane (Euler's formula):
 // (e a^2 + 2 f a b + g b^2 + min (e + g) / 2) / (a^2 + b^2 + min); along the face normal, the mean.
 float rf_normal_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 shape_operator, vec3 direction) {
-    float a = dot(direction, rf_shape_frame_u(p0, p1));
-    float b = dot(direction, rf_shape_frame_v(p0, p1, p2));
+    vec3 u = rf_shape_frame_u(p0, p1);
+    float a = dot(direction, u);
+    float b = dot(direction, rf_shape_frame_v(u, p0, p2));
     float e = shape_operator.x;
     float f = shape_operator.y;
     float g = shape_operator.z;

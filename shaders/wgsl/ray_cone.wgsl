@@ -166,9 +166,8 @@ fn rf_shape_frame_u(p0: vec3<f32>, p1: vec3<f32>) -> vec3<f32> {
     return rf_clamped_unit(p1 - p0);
 }
 
-// Second axis of a triangle's shape frame: v = face x u, face = unit(u x unit(p2 - p0)).
-fn rf_shape_frame_v(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>) -> vec3<f32> {
-    let u = rf_shape_frame_u(p0, p1);
+// Second axis of a triangle's shape frame, given its first u: v = face x u, face = unit(u x unit(p2 - p0)).
+fn rf_shape_frame_v(u: vec3<f32>, p0: vec3<f32>, p2: vec3<f32>) -> vec3<f32> {
     let face = rf_clamped_unit(cross(u, rf_clamped_unit(p2 - p0)));
     return cross(face, u);
 }
@@ -187,7 +186,7 @@ fn rf_triangle_shape_operator(
     n2: vec3<f32>,
 ) -> vec3<f32> {
     let u = rf_shape_frame_u(p0, p1);
-    let v = rf_shape_frame_v(p0, p1, p2);
+    let v = rf_shape_frame_v(u, p0, p2);
     let e01 = p1 - p0;
     let e12 = p2 - p1;
     let e20 = p0 - p2;
@@ -219,8 +218,9 @@ fn rf_normal_curvature(
     shape_operator: vec3<f32>,
     direction: vec3<f32>,
 ) -> f32 {
-    let a = dot(direction, rf_shape_frame_u(p0, p1));
-    let b = dot(direction, rf_shape_frame_v(p0, p1, p2));
+    let u = rf_shape_frame_u(p0, p1);
+    let a = dot(direction, u);
+    let b = dot(direction, rf_shape_frame_v(u, p0, p2));
     let e = shape_operator.x;
     let f = shape_operator.y;
     let g = shape_operator.z;

@@ -320,10 +320,9 @@ fn run_compiler(
     include_dirs: &[&Path],
     arguments: impl FnOnce(&mut Command, &Path, &Path),
 ) -> Result<Vec<u32>, CompileError> {
-    let Some(dir) = cache::directory() else {
-        return compile_in_temporary_directory(command, source, extension, arguments);
-    };
-    let Some(key) = cache::key(&command, extension, source, include_dirs) else {
+    let cache = cache::directory()
+        .and_then(|dir| Some((cache::key(&command, extension, source, include_dirs)?, dir)));
+    let Some((key, dir)) = cache else {
         return compile_in_temporary_directory(command, source, extension, arguments);
     };
     if let Some(words) = cache::lookup(&dir, &key) {
