@@ -18,19 +18,17 @@
 //!   cone gradients, and it shades in the chosen [`Mode`] with the shading code of
 //!   `rt_shading.glsl` that the colour-only pipelines ([`ColourPipeline`]) share;
 //! - Slang (`shaders/closest_hit.slang`, compiled with slangc with the library's Slang directory
-//!   on the search path): the recording closest-hit stage in Slang, `import`-ing `ray_cone`,
-//!   `ray_diff` and `wireframe` and compiling the same `rt_shading.glsl` through Slang's GLSL
-//!   compatibility (`import glsl;`), so that every library call in it is a call of the Slang
-//!   modules; the same bindings, push constants and payload, declared in Slang, in place of the
-//!   GLSL closest hit in the recording pipeline with the GLSL ray generation and miss
-//!   ([`Renderer::with_closest_hit`] and [`ClosestHit::Slang`]);
-//! - HLSL (`shaders/closest_hit.hlsl`, compiled with slangc reading HLSL, with the library's HLSL
-//!   directory on the include path; glslang's HLSL front end has no ray-tracing stages): the same
-//!   recording closest hit, `#include`-ing `ray_cone.hlsl`, `ray_diff.hlsl` and `wireframe.hlsl`
-//!   and shading with `rt_shading.hlsl`, the HLSL twin of `rt_shading.glsl` (its functions that a
-//!   closest hit uses, in the same order); the same bindings, push constants and payload, declared
-//!   with `[[vk::binding]]` and `[[vk::push_constant]]`, the combined image samplers as slangc's
-//!   `Sampler2D` (HLSL has no such type) ([`ClosestHit::Hlsl`]);
+//!   on the search path) and HLSL (`shaders/closest_hit.hlsl`, compiled with slangc reading HLSL,
+//!   with the library's HLSL directory on the include path; glslang's HLSL front end has no
+//!   ray-tracing stages): the recording closest-hit stage, the one first `import`-ing `ray_cone`,
+//!   `ray_diff` and `wireframe`, the other `#include`-ing `ray_cone.hlsl`, `ray_diff.hlsl` and
+//!   `wireframe.hlsl`, and both then the closest hit of `rt_closest_hit.hlsl`: the same bindings,
+//!   push constants and payload as the GLSL stages, declared with `[[vk::binding]]` and
+//!   `[[vk::push_constant]]` (the combined image samplers as slangc's `Sampler2D`), and the same
+//!   `rt_shading.glsl` compiled through slangc's GLSL compatibility (`import glsl;`), so that every
+//!   library call in it is a call of the Slang or of the HLSL modules. Each takes the GLSL closest
+//!   hit's place in the recording pipeline, with the GLSL ray generation and miss
+//!   ([`Renderer::with_closest_hit`], [`ClosestHit::Slang`] and [`ClosestHit::Hlsl`]);
 //! - WGSL (`shaders/ray_query.wgsl`, compiled with naga): a compute shader tracing the primary rays
 //!   with a ray query over the same acceleration structures and measuring the same values with
 //!   `ray_cone.wgsl`, `ray_diff.wgsl` and `wireframe.wgsl`.

@@ -381,7 +381,6 @@ fn compile_wgsl(source: &str) -> Result<Vec<u32>, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use shader_proptest::declarations::{declarations, Declaration};
     use shader_proptest::spirv;
 
     /// `OpEntryPoint` and the execution model `ClosestHitKHR` (SPIR-V specification, 3.6 and 3.52).
@@ -418,29 +417,5 @@ mod tests {
             at += ((words[at] >> 16) as usize).max(1);
         }
         models
-    }
-
-    /// The functions of `rt_shading.glsl` that only the ray generation and the miss shader call,
-    /// which `rt_shading.hlsl` (for a closest hit) leaves out.
-    const GLSL_ONLY: [&str; 6] = [
-        "rt_primary_direction",
-        "rt_display",
-        "rt_primary_cone",
-        "rt_eye_diff",
-        "rt_miss_record",
-        "rt_sky",
-    ];
-
-    /// `rt_shading.hlsl` declares the structs and functions of `rt_shading.glsl` in the same order,
-    /// less [`GLSL_ONLY`], so that the two can be read side by side.
-    #[test]
-    fn hlsl_shading_follows_the_glsl_shading() {
-        let glsl = declarations(include_str!("shaders/rt_shading.glsl"));
-        let expected: Vec<Declaration> = glsl
-            .into_iter()
-            .filter(|declaration| !GLSL_ONLY.contains(&declaration.name()))
-            .collect();
-        assert!(expected.len() > GLSL_ONLY.len(), "{expected:?}");
-        assert_eq!(declarations(include_str!("shaders/rt_shading.hlsl")), expected);
     }
 }
