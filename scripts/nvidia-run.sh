@@ -59,6 +59,7 @@ set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 PACK="$ROOT/.nvidia"
+BIN="$BIN"
 # Installed into / where the system has no Vulkan loader (the driver's ICD loads them from there).
 LOADER_DEBS=(libvulkan1 libglvnd0 libegl1 libgl1 libglx0 libgles2 libx11-6 libxcb1 libxau6 libxdmcp6
     libbsd0 libmd0 libffi8 libwayland-client0)
@@ -89,7 +90,7 @@ pack() {
     built=$(cargo build --release -p ray-footprint-lab --all-features --examples --tests --benches \
         --message-format=json | executables)
     rm -rf "$PACK"
-    mkdir -p "$PACK/bin" "$PACK/debs"
+    mkdir -p "$BIN" "$PACK/debs"
     local target name
     for target in example:verify example:gallery example:quality example:cost_quality test:gpu \
         bench:mode_costs bench:function_costs bench:verification_speed; do
@@ -98,8 +99,8 @@ pack() {
         local path
         path=$(printf '%s\n' "$built" | awk -v t="$target" '$1 == t { print $2 }' | tail -n 1)
         [ -n "$path" ] || { say "no executable for $target"; exit 1; }
-        cp "$path" "$PACK/bin/$name"
-        strip "$PACK/bin/$name"
+        cp "$path" "$BIN/$name"
+        strip "$BIN/$name"
     done
     say "downloading ${DEBS[*]}"
     local lists=/tmp/nvidia-run-apt-lists
@@ -181,32 +182,35 @@ step() {
     STEPS+=("$(printf '%-22s exit %3d  %4d s' "$name" "$status" $((SECONDS - started)))")
 }
 
+# Makes the output directory $1 and prints its absolute path.
+output_dir() {
+    mkdir -p "$1" && cd "$1" && pwd
+}
+
 # Unpacks, sets the environment, and checks that the binaries are there.
 prepare() {
     install_packages
     setup_environment
-    [ -d "$PACK/bin" ] || { say "no binaries in $PACK/bin: run 'scripts/nvidia-run.sh pack' on the build machine"; exit 2; }
+    [ -d "$BIN" ] || { say "no binaries in $BIN: run 'scripts/nvidia-run.sh pack' on the build machine"; exit 2; }
     cd "$ROOT"
 }
 
 run() {
-    local out=${1:?usage: nvidia-run.sh run OUT_DIR}
-    mkdir -p "$out"
-    out=$(cd "$out" && pwd)
+    local out
+    out=$(output_dir "${1:?usage: nvidia-run.sh run OUT_DIR}")
     prepare
-    local bin="$PACK/bin"
     local wgsl_test=rt::wgsl_ray_query_agrees_with_the_mirror
     local gallery_dir
     gallery_dir=$(mktemp -d)
-    step verify "$out/verify.log" "$bin/verify"
+    step verify "$out/verify.log" "$BIN/verify"
     # One test at a time: on the H100 (driver 580) 16 tests at once, each with its own device and
     # validation layer, had not finished after 200 s; one at a time they take seconds each.
-    step "gpu tests" "$out/gpu-tests.log" "$bin/gpu-tests" --test-threads 1 --skip "$wgsl_test"
-    step "wgsl ray-query test" "$out/wgsl.tmp" "$bin/gpu-tests" "$wgsl_test" --exact --nocapture
-    step gallery "$out/gallery.log" "$bin/gallery" --out "$gallery_dir"
+    step "gpu tests" "$out/gpu-tests.log" "$BIN/gpu-tests" --test-threads 1 --skip "$wgsl_test"
+    step "wgsl ray-query test" "$out/wgsl.tmp" "$BIN/gpu-tests" "$wgsl_test" --exact --nocapture
+    step gallery "$out/gallery.log" "$BIN/gallery" --out "$gallery_dir"
     cp "$gallery_dir/ground_modes.png" "$out/" 2>/dev/null
-    step quality "$out/quality.log" "$bin/quality" --out "$gallery_dir/quality"
-    step "verification speed" "$out/verification_speed.log" "$bin/verification_speed"
+    step quality "$out/quality.log" "$BIN/quality" --out "$gallery_dir/quality"
+    step "verification speed" "$out/verification_speed.log" "$BIN/verification_speed"
     rm -rf "$gallery_dir"
     { printf '\n--- %s ---\n' "$wgsl_test"; cat "$out/wgsl.tmp"; } >>"$out/gpu-tests.log"
     rm -f "$out/wgsl.tmp"
@@ -214,17 +218,15 @@ run() {
 }
 
 costs() {
-    local out=${1:?usage: nvidia-run.sh costs OUT_DIR}
-    mkdir -p "$out"
-    out=$(cd "$out" && pwd)
+    local out
+    out=$(output_dir "${1:?usage: nvidia-run.sh costs OUT_DIR}")
     prepare
-    local bin="$PACK/bin"
     local quality_dir
     quality_dir=$(mktemp -d)
-    step "mode costs" "$out/mode_costs.log" "$bin/mode_costs" --csv "$out/mode_costs.csv"
-    step "function costs" "$out/function_costs.log" "$bin/function_costs"
-    step quality "$out/quality.log" "$bin/quality" --out "$quality_dir"
-    step "cost against quality" "$out/cost_quality.log" "$bin/cost_quality" --quality "$quality_dir/table.csv" \
+    step "mode costs" "$out/mode_costs.log" "$BIN/mode_costs" --csv "$out/mode_costs.csv"
+    step "function costs" "$out/function_costs.log" "$BIN/function_costs"
+    step quality "$out/quality.log" "$BIN/quality" --out "$quality_dir"
+    step "cost against quality" "$out/cost_quality.log" "$BIN/cost_quality" --quality "$quality_dir/table.csv" \
         --costs "$out/mode_costs.csv" --out "$out/cost_quality.png"
     rm -rf "$quality_dir"
     costs_summary "$out" | tee "$out/costs-summary.txt"
@@ -233,16 +235,15 @@ costs() {
 # The GPU test binary once per seed (SHADER_PROPTEST_SEED), one test at a time: a randomized suite
 # must pass under every seed. One log per seed, and a line per seed in seeds-summary.txt.
 seeds() {
-    local out=${1:?usage: nvidia-run.sh seeds OUT_DIR SEED...}
+    local out
+    out=$(output_dir "${1:?usage: nvidia-run.sh seeds OUT_DIR SEED...}")
     shift
     [ $# -gt 0 ] || { echo "usage: nvidia-run.sh seeds OUT_DIR SEED..." >&2; exit 2; }
-    mkdir -p "$out"
-    out=$(cd "$out" && pwd)
     prepare
     local seed
     for seed in "$@"; do
         SHADER_PROPTEST_SEED=$seed step "gpu tests seed $seed" "$out/gpu-tests-seed-$seed.log" \
-            "$PACK/bin/gpu-tests" --test-threads 1 --skip rt::wgsl_ray_query_agrees_with_the_mirror
+            "$BIN/gpu-tests" --test-threads 1 --skip rt::wgsl_ray_query_agrees_with_the_mirror
     done
     {
         printf '%s\n' "${STEPS[@]}"
@@ -256,23 +257,21 @@ seeds() {
 # verification_speed on every processor: a pass that fills a SPIR-V cache (and warms the clocks),
 # then rounds of an empty cache (cold) and the filled one (warm), interleaved.
 speed() {
-    local out=${1:?usage: nvidia-run.sh speed OUT_DIR [verification_speed flags]}
+    local out threads filled round cold
+    out=$(output_dir "${1:?usage: nvidia-run.sh speed OUT_DIR [verification_speed flags]}")
     shift
-    mkdir -p "$out"
-    out=$(cd "$out" && pwd)
     prepare
-    local bin="$PACK/bin" threads filled round cold
     threads=$(nproc)
     filled=$(mktemp -d)
     SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed, filling" "$out/speed-fill.log" \
-        "$bin/verification_speed" --threads "$threads" "$@"
+        "$BIN/verification_speed" --threads "$threads" "$@"
     for round in 1 2; do
         cold=$(mktemp -d)
         SHADER_PROPTEST_SPIRV_CACHE=$cold step "speed $round, cold cache" "$out/speed-$round-cold.log" \
-            "$bin/verification_speed" --threads "$threads" "$@"
+            "$BIN/verification_speed" --threads "$threads" "$@"
         rm -rf "$cold"
         SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed $round, warm cache" "$out/speed-$round-warm.log" \
-            "$bin/verification_speed" --threads "$threads" "$@"
+            "$BIN/verification_speed" --threads "$threads" "$@"
     done
     rm -rf "$filled"
     {
