@@ -213,17 +213,8 @@ impl<'g> Renderer<'g> {
             })?,
         };
         let target = self.target(push, uniforms, Records::PerPixel)?;
-        let started = Instant::now();
-        target.owner.submit(|device, command_buffer| {
+        target.render(push, |device, command_buffer| {
             self.record(device, command_buffer, target.set, push, (path, pipeline))
-        })?;
-        let trace_time = started.elapsed();
-        Ok(Frame {
-            width: push.width,
-            height: push.height,
-            pixels: target.owner.read(&target.colours, target.pixels)?,
-            records: target.owner.read(&target.records, target.pixels)?,
-            trace_time,
         })
     }
 
@@ -234,7 +225,7 @@ impl<'g> Renderer<'g> {
         &self,
         push: &RtPushConstants,
         uniforms: &RtUniforms,
-        records: Records,
+        records_kind: Records,
     ) -> Result<Target<'g>, Error> {
         if push.width == 0 || push.height == 0 {
             return Err(Error::EmptyFrame {
@@ -244,7 +235,7 @@ impl<'g> Renderer<'g> {
         }
         let pixels = push.width as usize * push.height as usize;
         let record_bytes = std::mem::size_of::<RtPixelRecord>();
-        let (record_count, largest_pixel_bytes) = match records {
+        let (record_count, largest_pixel_bytes) = match records_kind {
             Records::PerPixel => (pixels, record_bytes),
             Records::StandIn => (1, 4),
         };
@@ -266,12 +257,14 @@ impl<'g> Renderer<'g> {
             16,
         )?;
         let set = self.descriptor_set(&mut owner, [&records, &colours, &uniforms])?;
+        let written_records = if records_kind == Records::PerPixel { pixels } else { 0 };
         Ok(Target {
             owner,
             records,
             colours,
             set,
             pixels,
+            written_records,
         })
     }
 
@@ -386,6 +379,30 @@ struct Target<'g> {
     colours: Buffer,
     set: vk::DescriptorSet,
     pixels: usize,
+    /// The records the shaders write: one per pixel, or none.
+    written_records: usize,
+}
+
+impl Target<'_> {
+    /// Submits what `record` records into a command buffer and reads the frame back: its colours,
+    /// and its pixel records where the shaders write them; `trace_time` is the wall time from
+    /// submission to completion.
+    fn render(
+        &self,
+        push: &RtPushConstants,
+        record: impl FnOnce(&ash::Device, vk::CommandBuffer),
+    ) -> Result<Frame, Error> {
+        let started = Instant::now();
+        self.owner.submit(record)?;
+        let trace_time = started.elapsed();
+        Ok(Frame {
+            width: push.width,
+            height: push.height,
+            pixels: self.owner.read(&self.colours, self.pixels)?,
+            records: self.owner.read(&self.records, self.written_records)?,
+            trace_time,
+        })
+    }
 }
 
 /// Largest anisotropy the renderer asks for: 16 samples along the footprint's long axis.

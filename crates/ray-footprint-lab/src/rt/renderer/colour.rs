@@ -14,7 +14,7 @@ use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use shader_proptest::layout::{glsl_layout, GlslPacking};
 use shader_proptest::{barrier_shader_writes_to_host, Owner};
 use std::path::Path;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// One mode's colour-only ray-tracing pipeline over a [`Renderer`]'s scene.
 pub struct ColourPipeline<'r, 'g> {
@@ -64,19 +64,10 @@ impl ColourPipeline<'_, '_> {
     /// submission to completion.
     pub fn render(&self, push: &RtPushConstants, uniforms: &RtUniforms) -> Result<Frame, Error> {
         let target = self.renderer.target(push, uniforms, Records::StandIn)?;
-        let started = Instant::now();
-        target.owner.submit(|device, command_buffer| {
+        target.render(push, |device, command_buffer| {
             self.trace(device, command_buffer, &target, push);
             // SAFETY: recording into a command buffer in the recording state.
             unsafe { barrier_shader_writes_to_host(device, command_buffer, self.owner.shader_stages()) };
-        })?;
-        let trace_time = started.elapsed();
-        Ok(Frame {
-            width: push.width,
-            height: push.height,
-            pixels: target.owner.read(&target.colours, target.pixels)?,
-            records: Vec::new(),
-            trace_time,
         })
     }
 
