@@ -1,6 +1,6 @@
-//! A chain as the shader follows it: the f32 inputs, the Rust mirror of `reflection_chain.wgsl`,
-//! `reflection_chain.glsl` and `reflection_chain.slang` (same functions, same order, same order of
-//! operations), and that shader in each of these languages.
+//! A chain as the shader follows it: the f32 inputs, the Rust mirror of `reflection_chain.wgsl` and
+//! `reflection_chain.glsl` (same functions, same order, same order of operations), and that shader
+//! in WGSL, GLSL and Slang.
 
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone::{self as rc, RayCone};
@@ -17,8 +17,7 @@ pub const CHAIN_THIN_LENS: u32 = 2;
 /// Most mirrors in a chain; a chain has one leg more.
 pub const CHAIN_MAX_BOUNCES: u32 = 4;
 
-/// The directory of `reflection_chain.glsl` and `reflection_chain.slang`, for glslang's include
-/// path and slangc's search path.
+/// The directory of `reflection_chain.glsl`, for glslang's include path and slangc's search path.
 pub const CHAIN_SHADER_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/chains");
 
 /// The camera of a chain's primary ray, through the centre pixel of a square image
@@ -273,10 +272,10 @@ pub fn reflection_chain(
     }
 }
 
-/// The chain shader in `language`: the WGSL ray-cone and ray-differential modules followed by
-/// `reflection_chain.wgsl`; `reflection_chain.glsl`, which includes the GLSL modules; or the Slang
-/// module `reflection_chain.slang`, which imports the Slang modules. `Err` for either HLSL
-/// compiler: the chain shader is not written in HLSL.
+/// The chain shader in `language`: the ray-cone and ray-differential modules of `language`
+/// followed by the chain: the WGSL modules and `reflection_chain.wgsl`; the GLSL modules and
+/// `reflection_chain.glsl`; or the Slang modules and `reflection_chain.glsl` through slangc's GLSL
+/// compatibility. `Err` for either HLSL compiler: the chain shader is not written in HLSL.
 pub fn chain_shader(language: Language) -> Result<Shader, String> {
     let modules = [Module::RayCone, Module::RayDiff];
     Ok(match language {
@@ -289,10 +288,14 @@ pub fn chain_shader(language: Language) -> Result<Shader, String> {
             let capabilities = modules[0].naga_capabilities() | modules[1].naga_capabilities();
             Shader::wgsl(source).capabilities(capabilities)
         }
-        Language::Glsl => Shader::glsl("#include \"reflection_chain.glsl\"")
+        Language::Glsl => Shader::glsl(
+            "#include \"ray_cone.glsl\"\n#include \"ray_diff.glsl\"\n#include \"reflection_chain.glsl\"",
+        )
             .include_dir(GLSL_INCLUDE_DIR)
             .include_dir(CHAIN_SHADER_DIR),
-        Language::Slang => Shader::slang("import reflection_chain;")
+        Language::Slang => Shader::slang(
+            "import glsl;\nimport ray_cone;\nimport ray_diff;\n#include \"reflection_chain.glsl\"",
+        )
             .include_dir(SLANG_INCLUDE_DIR)
             .include_dir(CHAIN_SHADER_DIR),
         Language::HlslGlslang | Language::HlslSlangc => {

@@ -2,22 +2,22 @@
 // ray of a camera, up to four curved mirrors, then a plane across the last ray. After every leg it
 // records the cone's width and the differential's footprint along the two pixel axes.
 //
-// GLSL 460 (no main), with the ray-footprint include directory on the include path. Twin of
-// reflection_chain.wgsl and of the Rust mirror in mirror.rs: same functions, same order, same
-// order of operations.
+// GLSL 460 (no main), included after the library modules that define its rf_ calls: in GLSL after
+// ray_cone.glsl and ray_diff.glsl; in Slang after `import glsl; import ray_cone; import ray_diff;`,
+// which slangc compiles through its GLSL compatibility, so that every rf_ call is a call of the
+// Slang modules. Its constants are macros because slangc refuses a global const without static.
+// Twin of reflection_chain.wgsl and of the Rust mirror in mirror.rs: same functions, same order,
+// same order of operations.
 
 #ifndef RAY_FOOTPRINT_LAB_REFLECTION_CHAIN_GLSL
 #define RAY_FOOTPRINT_LAB_REFLECTION_CHAIN_GLSL
 
-#include "ray_cone.glsl"
-#include "ray_diff.glsl"
-
 // ChainCamera.kind: a pinhole camera, an orthographic one, a thin lens.
-const uint CHAIN_PINHOLE = 0u;
-const uint CHAIN_ORTHOGRAPHIC = 1u;
-const uint CHAIN_THIN_LENS = 2u;
+#define CHAIN_PINHOLE 0u
+#define CHAIN_ORTHOGRAPHIC 1u
+#define CHAIN_THIN_LENS 2u
 // Most mirrors in a chain; a chain has one leg more.
-const uint CHAIN_MAX_BOUNCES = 4u;
+#define CHAIN_MAX_BOUNCES 4u
 
 // The camera of the primary ray through the centre pixel of a square image image_height pixels
 // tall, looking down -z; a pixel step right moves along +x, a step down along -y.
