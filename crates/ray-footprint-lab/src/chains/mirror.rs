@@ -291,13 +291,13 @@ pub fn chain_shader(language: Language) -> Result<Shader, String> {
         Language::Glsl => Shader::glsl(
             "#include \"ray_cone.glsl\"\n#include \"ray_diff.glsl\"\n#include \"reflection_chain.glsl\"",
         )
-            .include_dir(GLSL_INCLUDE_DIR)
-            .include_dir(CHAIN_SHADER_DIR),
+        .include_dir(GLSL_INCLUDE_DIR)
+        .include_dir(CHAIN_SHADER_DIR),
         Language::Slang => Shader::slang(
             "import glsl;\nimport ray_cone;\nimport ray_diff;\n#include \"reflection_chain.glsl\"",
         )
-            .include_dir(SLANG_INCLUDE_DIR)
-            .include_dir(CHAIN_SHADER_DIR),
+        .include_dir(SLANG_INCLUDE_DIR)
+        .include_dir(CHAIN_SHADER_DIR),
         Language::HlslGlslang | Language::HlslSlangc => {
             return Err("the chain shader is not written in HLSL".into())
         }

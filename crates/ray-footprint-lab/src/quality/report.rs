@@ -53,7 +53,10 @@ pub const IMPROVEMENTS: [(&str, &str, &str); 4] = [
 /// records, whatever the device's filtering).
 pub const GRAZING_SCENES: [&str; 2] = ["plane", "corners"];
 
-/// The goals: on the paraboloid, ray differentials (isotropic and anisotropic) at least
+/// The scenes of the saddle reflector: its two triangulations.
+pub const PARABOLOID_SCENES: [&str; 2] = ["paraboloid", "paraboloid_alternating"];
+
+/// The goals: on the paraboloid (either triangulation), ray differentials (isotropic and anisotropic) at least
 /// [`RAY_DIFF_MARGIN_DB`] and the cone with curvature at least [`CURVATURE_MARGIN_DB`] above mip 0
 /// in PSNR over the reflector; every [`IMPROVEMENTS`] pair, the mode above the method without
 /// what it adds in PSNR over the mask; on the [`GRAZING_SCENES`], the anisotropic cone's minor
@@ -69,7 +72,7 @@ pub fn goals(run: &LabRun) -> Vec<Goal> {
         if GRAZING_SCENES.contains(&scene.scene.name) {
             goals.extend(scene.footprints.map(|f| footprint_goal(scene.scene.name, f)));
         }
-        if scene.scene.name == "paraboloid" {
+        if PARABOLOID_SCENES.contains(&scene.scene.name) {
             let margins = [
                 ("ray_diff", RAY_DIFF_MARGIN_DB),
                 ("ray_diff_isotropic", RAY_DIFF_MARGIN_DB),

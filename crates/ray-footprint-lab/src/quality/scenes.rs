@@ -172,6 +172,18 @@ impl LabScene {
         }
     }
 
+    /// [`LabScene::paraboloid`] with the reflector's quads split along alternating diagonals
+    /// ([`Scene::paraboloid_alternating`]): the same surface, other triangles for the curvature
+    /// estimates to read; mask: the reflector.
+    pub fn paraboloid_alternating() -> LabScene {
+        LabScene {
+            name: "paraboloid_alternating",
+            description: "the same mirror, its quads split along alternating diagonals",
+            scene: Scene::paraboloid_alternating(),
+            ..LabScene::paraboloid()
+        }
+    }
+
     /// The gallery's mirror sphere close up, reflecting the ground plane to its horizon; mask:
     /// the sphere.
     pub fn sphere() -> LabScene {
@@ -246,6 +258,7 @@ impl LabScene {
             LabScene::plane(),
             LabScene::corners(),
             LabScene::paraboloid(),
+            LabScene::paraboloid_alternating(),
             LabScene::sphere(),
             LabScene::glass(),
             LabScene::rough(),

@@ -51,14 +51,19 @@ pub enum Mode {
     /// (`rf_anisotropic_cone_gradients`, JCGT 2021), times `tex_grad_scale`; reflections as
     /// `Cone`.
     ConeAnisotropic = 11,
+    /// Ray-cone LOD as `ConeCurvature`, with the OptiX Toolkit's curvature estimate in place of the
+    /// curvature in the plane of incidence: the triangle's edge curvature of least magnitude when
+    /// the three agree in sign, 0 when they do not (its `ray_cone.h`, `minTriangleCurvature`).
+    ConeMinCurvature = 12,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 12] = [
+    pub const ALL: [Mode; 13] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
+        Mode::ConeMinCurvature,
         Mode::TexGradScale,
         Mode::MipLevels,
         Mode::RayDiff,
@@ -90,6 +95,7 @@ impl Mode {
             Mode::ConeRefraction => "cone_refraction",
             Mode::ConeRoughness => "cone_roughness",
             Mode::ConeAnisotropic => "cone_anisotropic",
+            Mode::ConeMinCurvature => "cone_min_curvature",
         }
     }
 
@@ -108,6 +114,7 @@ impl Mode {
             Mode::ConeRefraction => "as cone_curvature, glass refracting the cone",
             Mode::ConeRoughness => "as cone_curvature, rough mirrors widening the reflected cone",
             Mode::ConeAnisotropic => "textureGrad with the cone's elliptical footprint",
+            Mode::ConeMinCurvature => "as cone_curvature, the OptiX Toolkit's least edge curvature",
         }
     }
 

@@ -257,7 +257,11 @@ impl<'g> Renderer<'g> {
             16,
         )?;
         let set = self.descriptor_set(&mut owner, [&records, &colours, &uniforms])?;
-        let written_records = if records_kind == Records::PerPixel { pixels } else { 0 };
+        let written_records = if records_kind == Records::PerPixel {
+            pixels
+        } else {
+            0
+        };
         Ok(Target {
             owner,
             records,

@@ -150,19 +150,36 @@ pub fn ground_plane(half_size: f32, repeat: f32) -> Mesh {
     }
 }
 
+/// Which diagonal splits each quad of a grid into its two triangles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Diagonals {
+    /// Every quad along the same diagonal, from the row's next vertex to the next row's vertex.
+    Parallel,
+    /// Neighbouring quads along crossing diagonals, as a checkerboard: a triangle's edges run
+    /// along both diagonal directions across the grid, not only one.
+    Alternating,
+}
+
 /// Triangles of a `rows` x `columns` grid of quads over `(rows + 1) * (columns + 1)` vertices,
-/// leaving out the triangles `skip` names (by row and whether it is the quad's first triangle).
-fn grid_indices(rows: u32, columns: u32, skip: impl Fn(u32, bool) -> bool) -> Vec<u32> {
+/// split along `diagonals`, leaving out the triangles `skip` names (by row and whether it is the
+/// quad's first triangle).
+fn grid_indices(rows: u32, columns: u32, diagonals: Diagonals, skip: impl Fn(u32, bool) -> bool) -> Vec<u32> {
     let mut indices = Vec::new();
     for row in 0..rows {
         for column in 0..columns {
             let a = row * (columns + 1) + column;
             let b = a + columns + 1;
+            let crossing = diagonals == Diagonals::Alternating && (row + column) % 2 == 1;
+            let [first, second] = if crossing {
+                [[a, b, b + 1], [a, b + 1, a + 1]]
+            } else {
+                [[a, b, a + 1], [a + 1, b, b + 1]]
+            };
             if !skip(row, true) {
-                indices.extend([a, b, a + 1]);
+                indices.extend(first);
             }
             if !skip(row, false) {
-                indices.extend([a + 1, b, b + 1]);
+                indices.extend(second);
             }
         }
     }
@@ -191,7 +208,7 @@ pub fn uv_sphere(centre: Vec3, radius: f32, rings: u32, segments: u32) -> Mesh {
     Mesh {
         name: "sphere",
         vertices,
-        indices: grid_indices(rings, segments, pole),
+        indices: grid_indices(rings, segments, Diagonals::Parallel, pole),
         material: Material::MIRROR,
     }
 }
@@ -219,16 +236,23 @@ pub fn torus(centre: Vec3, major: f32, minor: f32, rings: u32, segments: u32) ->
     Mesh {
         name: "torus",
         vertices,
-        indices: grid_indices(rings, segments, |_, _| false),
+        indices: grid_indices(rings, segments, Diagonals::Parallel, |_, _| false),
         material: Material::Textured,
     }
 }
 
 /// A mirror hyperbolic paraboloid, the saddle `y = centre.y + curvature * x * z` with x and z
 /// measured from the centre over a square of half side `half_size`: `quads` x `quads` quads (two
-/// triangles each) with exact vertex normals, proportional to `(-curvature * z, 1, -curvature * x)`.
-/// Its mean curvature is 0 at the centre and its Gaussian curvature negative everywhere (a saddle).
-pub fn hyperbolic_paraboloid(centre: Vec3, half_size: f32, curvature: f32, quads: u32) -> Mesh {
+/// triangles each, split along `diagonals`) with exact vertex normals, proportional to
+/// `(-curvature * z, 1, -curvature * x)`. Its mean curvature is 0 at the centre and its Gaussian
+/// curvature negative everywhere (a saddle).
+pub fn hyperbolic_paraboloid(
+    centre: Vec3,
+    half_size: f32,
+    curvature: f32,
+    quads: u32,
+    diagonals: Diagonals,
+) -> Mesh {
     let mut vertices = Vec::new();
     for row in 0..=quads {
         let z = half_size * (2.0 * row as f32 / quads as f32 - 1.0);
@@ -244,7 +268,7 @@ pub fn hyperbolic_paraboloid(centre: Vec3, half_size: f32, curvature: f32, quads
     Mesh {
         name: "hyperbolic paraboloid",
         vertices,
-        indices: grid_indices(quads, quads, |_, _| false),
+        indices: grid_indices(quads, quads, diagonals, |_, _| false),
         material: Material::MIRROR,
     }
 }
@@ -310,13 +334,26 @@ impl Scene {
     }
 
     /// The hyperbolic-paraboloid reflector of RTG ch. 20 (Fig. 20-10 and 20-11) in a textured
-    /// room: a 4 x 4 saddle (`y = 1.2 + 0.35 x z`, 128 x 128 quads, 32,768 triangles, exact
-    /// normals) in a 12 x 6 x 12 room whose texture repeats every 3 units.
+    /// room: a 4 x 4 saddle (`y = 1.2 + 0.35 x z`, 128 x 128 quads split along parallel
+    /// diagonals, 32,768 triangles, exact normals) in a 12 x 6 x 12 room whose texture repeats
+    /// every 3 units.
     pub fn paraboloid() -> Scene {
+        Scene::paraboloid_split(Diagonals::Parallel)
+    }
+
+    /// [`Scene::paraboloid`] with its quads split along alternating diagonals: the same surface
+    /// and normals at the vertices, other triangles, so that what a curvature estimate makes of
+    /// one triangulation shows apart from what the method does.
+    pub fn paraboloid_alternating() -> Scene {
+        Scene::paraboloid_split(Diagonals::Alternating)
+    }
+
+    /// The paraboloid scene with the reflector's quads split along `diagonals`.
+    fn paraboloid_split(diagonals: Diagonals) -> Scene {
         Scene {
             meshes: vec![
                 room(Vec3::new(-6.0, 0.0, -6.0), Vec3::new(6.0, 6.0, 6.0), 8.0),
-                hyperbolic_paraboloid(Vec3::new(0.0, 1.2, 0.0), 2.0, 0.35, 128),
+                hyperbolic_paraboloid(Vec3::new(0.0, 1.2, 0.0), 2.0, 0.35, 128, diagonals),
             ],
         }
     }
@@ -389,7 +426,59 @@ pub const ROUGHNESS: f32 = 0.3;
 
 #[cfg(test)]
 mod tests {
-    use super::Material;
+    use super::{hyperbolic_paraboloid, Diagonals, Material, Mesh};
+    use glam::Vec3;
+
+    /// The quads' diagonals of a grid mesh: each triangle's edge whose ends differ in both row and
+    /// column, as (lower index, higher index), sorted.
+    fn diagonals(mesh: &Mesh, columns: u32) -> Vec<(u32, u32)> {
+        let mut found: Vec<(u32, u32)> = mesh
+            .indices
+            .chunks(3)
+            .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+            .map(|(i, j)| (i.min(j), i.max(j)))
+            .filter(|&(i, j)| {
+                i / (columns + 1) != j / (columns + 1) && i % (columns + 1) != j % (columns + 1)
+            })
+            .collect();
+        found.sort_unstable();
+        found.dedup();
+        found
+    }
+
+    /// Both triangulations of the saddle cover the same quads with two triangles each, wound so
+    /// that every face normal points the way of its vertex normals (up); with parallel diagonals
+    /// every quad is split from its top-right to its bottom-left corner, with alternating ones
+    /// half of them the other way, as a checkerboard.
+    #[test]
+    fn the_paraboloid_splits_its_quads_along_the_chosen_diagonals() {
+        let quads = 4;
+        let centre = Vec3::new(0.0, 1.2, 0.0);
+        let parallel = hyperbolic_paraboloid(centre, 2.0, 0.35, quads, Diagonals::Parallel);
+        let alternating = hyperbolic_paraboloid(centre, 2.0, 0.35, quads, Diagonals::Alternating);
+        for mesh in [&parallel, &alternating] {
+            assert_eq!(mesh.indices.len(), (quads * quads * 6) as usize);
+            for t in mesh.indices.chunks(3) {
+                let [p0, p1, p2] = [t[0], t[1], t[2]].map(|i| mesh.vertices[i as usize].position);
+                let face = (p1 - p0).cross(p2 - p0);
+                let normal = mesh.vertices[t[0] as usize].normal;
+                assert!(
+                    face.dot(normal) > 0.0,
+                    "{t:?}: face {face}, vertex normal {normal}"
+                );
+            }
+        }
+        let rising = |&(i, j): &(u32, u32)| j - i == quads; // from (row, column + 1) to (row + 1, column)
+        let parallel_diagonals = diagonals(&parallel, quads);
+        let alternating_diagonals = diagonals(&alternating, quads);
+        assert_eq!(parallel_diagonals.len(), (quads * quads) as usize);
+        assert!(parallel_diagonals.iter().all(rising));
+        assert_eq!(alternating_diagonals.len(), (quads * quads) as usize);
+        assert_eq!(
+            alternating_diagonals.iter().filter(|d| rising(d)).count(),
+            (quads * quads / 2) as usize
+        );
+    }
 
     #[test]
     fn materials_out_of_range_name_the_field_and_value() {

@@ -44,6 +44,10 @@ const RT_MODE_CONE_ROUGHNESS: u32 = 10u;
 // textureGrad with the gradients of the cone's elliptical footprint (rf_anisotropic_cone_gradients,
 // JCGT 2021), times tex_grad_scale; reflections as Cone.
 const RT_MODE_CONE_ANISOTROPIC: u32 = 11u;
+// Ray-cone LOD as ConeCurvature, with the OptiX Toolkit's curvature estimate in place of the
+// curvature in the plane of incidence: the triangle's edge curvature of least magnitude when the
+// three agree in sign, 0 when they do not (its ray_cone.h, minTriangleCurvature).
+const RT_MODE_CONE_MIN_CURVATURE: u32 = 12u;
 
 // The material id (Material::id) of Material::Textured.
 const RT_MATERIAL_TEXTURED: u32 = 0u;

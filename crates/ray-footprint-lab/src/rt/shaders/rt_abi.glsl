@@ -46,6 +46,10 @@ const uint RT_MODE_CONE_ROUGHNESS = 10u;
 // textureGrad with the gradients of the cone's elliptical footprint (rf_anisotropic_cone_gradients,
 // JCGT 2021), times tex_grad_scale; reflections as Cone.
 const uint RT_MODE_CONE_ANISOTROPIC = 11u;
+// Ray-cone LOD as ConeCurvature, with the OptiX Toolkit's curvature estimate in place of the
+// curvature in the plane of incidence: the triangle's edge curvature of least magnitude when the
+// three agree in sign, 0 when they do not (its ray_cone.h, minTriangleCurvature).
+const uint RT_MODE_CONE_MIN_CURVATURE = 12u;
 
 // The material id (Material::id) of Material::Textured.
 const uint RT_MATERIAL_TEXTURED = 0u;

@@ -165,9 +165,33 @@ float rt_curvature(RtHit hit) {
     return rf_normal_curvature(tri.p[0], tri.p[1], tri.p[2], shape_operator, hit.direction);
 }
 
-// The spread angle a reflection off the hit reached by `cone` gets from the curvature (JCGT 2021).
-float rt_curvature_spread(RtHit hit, RfRayCone cone) {
-    return rf_curvature_spread_angle(rt_curvature(hit), rf_width_at(cone, hit.t), hit.normal, hit.direction);
+// The OptiX Toolkit's estimate of the hit triangle's curvature (ray_cone.h, minTriangleCurvature):
+// of the three edge curvatures (the change of the normal along the edge over its length), the one
+// of least magnitude when all three have one sign, else 0: a saddle's triangle, whose edges bend
+// both ways, reflects as a plane.
+float rt_least_edge_curvature(RtHit hit) {
+    RtTriangle tri = hit.tri;
+    float k01 = rf_edge_curvature(tri.p[0], tri.p[1], tri.n[0], tri.n[1]);
+    float k12 = rf_edge_curvature(tri.p[1], tri.p[2], tri.n[1], tri.n[2]);
+    float k20 = rf_edge_curvature(tri.p[2], tri.p[0], tri.n[2], tri.n[0]);
+    if (k01 > 0.0 && k12 > 0.0 && k20 > 0.0) {
+        return min(k01, min(k12, k20));
+    }
+    if (k01 < 0.0 && k12 < 0.0 && k20 < 0.0) {
+        return max(k01, max(k12, k20));
+    }
+    return 0.0;
+}
+
+// The curvature a reflection or refraction in `mode` takes: the least edge curvature in
+// RT_MODE_CONE_MIN_CURVATURE, the curvature in the plane of incidence in the others.
+float rt_mode_curvature(uint mode, RtHit hit) {
+    return mode == RT_MODE_CONE_MIN_CURVATURE ? rt_least_edge_curvature(hit) : rt_curvature(hit);
+}
+
+// The spread angle a reflection off the hit reached by `cone` gets from `curvature` (JCGT 2021).
+float rt_curvature_spread(RtHit hit, RfRayCone cone, float curvature) {
+    return rf_curvature_spread_angle(curvature, rf_width_at(cone, hit.t), hit.normal, hit.direction);
 }
 
 // The spread angle a mirror's roughness adds to a reflection, each way (JCGT 2021's mapping): 0 on
@@ -178,7 +202,8 @@ float rt_roughness_spread(RtHit hit) {
 
 // Whether `mode` widens reflected (and refracted) cones by the surface's curvature.
 bool rt_follows_curvature(uint mode) {
-    return mode == RT_MODE_CONE_CURVATURE || mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_CONE_ROUGHNESS;
+    return mode == RT_MODE_CONE_CURVATURE || mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_CONE_ROUGHNESS
+        || mode == RT_MODE_CONE_MIN_CURVATURE;
 }
 
 // The spread angle a reflection off the hit adds to `cone` in `mode`: the curvature's (JCGT 2021)
@@ -189,7 +214,7 @@ float rt_reflection_spread(uint mode, RtHit hit, RfRayCone cone) {
     if (!rt_follows_curvature(mode)) {
         return 0.0;
     }
-    float spread = rt_curvature_spread(hit, cone);
+    float spread = rt_curvature_spread(hit, cone, rt_mode_curvature(mode, hit));
     return mode == RT_MODE_CONE_ROUGHNESS ? spread + 2.0 * rt_roughness_spread(hit) : spread;
 }
 
@@ -488,7 +513,7 @@ RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
     float footprint = rt_footprint(hit, cone);
     float density = rf_texel_density(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
     float base_lod = rf_triangle_base_lod(tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1], tri.uv[2]);
-    float spread = rt_curvature_spread(hit, cone);
+    float spread = rt_curvature_spread(hit, cone, rt_curvature(hit));
     float roughness_spread = rt_roughness_spread(hit);
     bool glass = hit.material.kind == RT_MATERIAL_GLASS;
     float eta = glass ? rt_relative_index(hit) : 0.0;
