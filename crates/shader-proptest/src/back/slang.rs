@@ -13,6 +13,7 @@ use crate::reflect;
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::{DeclaredType, Signature};
+#[cfg(feature = "gpu")]
 use crate::value::ShaderType;
 use std::path::Path;
 

@@ -8,6 +8,7 @@ use crate::layout::{FieldLayout, GlslPacking, LayoutError, StructLayout};
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::{DeclaredType, Signature};
+#[cfg(feature = "gpu")]
 use crate::value::ShaderType;
 
 /// The WGSL back end.
