@@ -185,7 +185,7 @@ impl fmt::Display for Statistics {
 /// assert!(spirv::from_bytes(&bytes[..19]).is_err());
 /// ```
 pub fn from_bytes(bytes: &[u8]) -> Result<Vec<u32>, SpirvError> {
-    if bytes.len() % 4 != 0 {
+    if !bytes.len().is_multiple_of(4) {
         return Err(SpirvError::Length { bytes: bytes.len() });
     }
     let words: Vec<u32> = bytes

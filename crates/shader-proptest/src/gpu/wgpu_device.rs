@@ -222,7 +222,7 @@ impl Dispatch for WgpuKernel<'_> {
                 entries: &[
                     wgpu::BindGroupEntry {
                         binding: 0,
-                        resource: run.input.as_entire_binding(),
+                        resource: input.as_entire_binding(),
                     },
                     wgpu::BindGroupEntry {
                         binding: 1,
@@ -250,7 +250,7 @@ impl Dispatch for WgpuKernel<'_> {
         let view = slice
             .get_mapped_range()
             .map_err(|error| Error::Setup(format!("wgpu reading the results: {error}")))?;
-        let output = bytemuck::cast_slice(&view)[..output_words].to_vec();
+        let output = bytemuck::cast_slice(&view)[..run.output_words].to_vec();
         times.lap(Phase::ReadBack, &mut clock);
         Ok(output)
     }
