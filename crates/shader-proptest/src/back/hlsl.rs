@@ -6,10 +6,11 @@
 //!
 //! HLSL has no struct constructors: a kernel declares one function per struct it builds,
 //! `kernel_make_<Name>`, that returns an initializer list of its parameters. Matrix constructors
-//! take a matrix row by row and `m[r]` is row r ([`MatrixOrder::Rows`](super::MatrixOrder::Rows)), as in Slang. Buffers take
-//! the compiler's default layout for Vulkan, `std430` (storage buffers and push constants alike):
-//! HLSL has no way to choose another in the source, so an echo kernel ignores its packing, as WGSL's
-//! does.
+//! take a matrix row by row and `m[r]` is row r ([`super::MatrixOrder::Rows`]), as in Slang.
+//! Kernels are Slang's, written by [`super::slang::structured_call_kernel`] and
+//! [`super::slang::structured_echo_kernel`]. Buffers take the compiler's default layout for
+//! Vulkan, `std430` (storage buffers and push constants alike): HLSL has no way to choose another
+//! in the source, so an echo kernel ignores its packing, as WGSL's does.
 
 #[cfg(feature = "gpu")]
 use super::slang::slangc_declared_signatures;
