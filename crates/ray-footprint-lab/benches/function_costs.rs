@@ -42,7 +42,9 @@ use ray_footprint_lab::timing::{
     self, gpu_clocks, query_pool, read_queries, round_order, warm_up, write_timestamp, Spread, Timestamps,
 };
 use shader_proptest::spirv::{self, Statistics};
-use shader_proptest::{DeviceRequest, Error, Feature, Gpu, Language, Location, Owner, WORKGROUP_SIZE};
+use shader_proptest::{
+    barrier_shader_writes, DeviceRequest, Error, Feature, Gpu, Language, Location, Owner, WORKGROUP_SIZE,
+};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -156,14 +158,7 @@ struct Bench<'g> {
 impl<'g> Bench<'g> {
     fn new(gpu: &'g Gpu, load: Load) -> Result<Bench<'g>, Error> {
         let mut owner = Owner::new(gpu);
-        let bindings = [0, 1].map(|binding| {
-            vk::DescriptorSetLayoutBinding::default()
-                .binding(binding)
-                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                .descriptor_count(1)
-                .stage_flags(vk::ShaderStageFlags::COMPUTE)
-        });
-        let (set_layout, layout) = owner.layouts(&bindings, &[])?;
+        let (set_layout, layout) = owner.compute_storage_layouts(2, &[])?;
         Ok(Bench {
             gpu,
             owner,
@@ -224,29 +219,6 @@ impl<'g> Bench<'g> {
         Ok(set)
     }
 
-    /// Records a barrier: the next kernel writes the same results, so it waits for this one.
-    ///
-    /// # Safety
-    /// `command_buffer` must be recording.
-    unsafe fn barrier(&self, device: &ash::Device, command_buffer: vk::CommandBuffer) {
-        let written = vk::MemoryBarrier::default()
-            .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-            .dst_access_mask(vk::AccessFlags::SHADER_WRITE);
-        let stage = vk::PipelineStageFlags::COMPUTE_SHADER;
-        // SAFETY: the caller's command buffer is recording.
-        unsafe {
-            device.cmd_pipeline_barrier(
-                command_buffer,
-                stage,
-                stage,
-                vk::DependencyFlags::empty(),
-                &[written],
-                &[],
-                &[],
-            )
-        };
-    }
-
     /// One round over `row`'s kernels, in the round's order: each kernel's time in ns per
     /// evaluation, by column (`None` where the column has no kernel).
     fn round(&self, row: &Row, round: usize, timestamps: Timestamps) -> Result<[Option<f64>; 4], Error> {
@@ -260,6 +232,11 @@ impl<'g> Bench<'g> {
         let groups = (self.load.invocations as u32).div_ceil(WORKGROUP_SIZE);
         frame.submit(|device, command_buffer| {
             let bind_point = vk::PipelineBindPoint::COMPUTE;
+            // The next kernel writes the same results, so it waits for this one.
+            let (compute, written) = (
+                vk::PipelineStageFlags::COMPUTE_SHADER,
+                vk::AccessFlags::SHADER_WRITE,
+            );
             // SAFETY: recording into a command buffer in the recording state; every handle is
             // alive and every query reset before it is written.
             unsafe {
@@ -269,7 +246,7 @@ impl<'g> Bench<'g> {
                 if let Some(Ok(first)) = columns.first().map(|&column| &row.kernels[column]) {
                     device.cmd_bind_pipeline(command_buffer, bind_point, first.pipeline);
                     device.cmd_dispatch(command_buffer, groups, 1, 1);
-                    self.barrier(device, command_buffer);
+                    barrier_shader_writes(device, command_buffer, compute, (compute, written));
                 }
                 for (slot, &column) in columns.iter().enumerate() {
                     let Ok(kernel) = &row.kernels[column] else {
@@ -279,7 +256,7 @@ impl<'g> Bench<'g> {
                     device.cmd_bind_pipeline(command_buffer, bind_point, kernel.pipeline);
                     device.cmd_dispatch(command_buffer, groups, 1, 1);
                     write_timestamp(device, command_buffer, pool, 2 * slot as u32 + 1);
-                    self.barrier(device, command_buffer);
+                    barrier_shader_writes(device, command_buffer, compute, (compute, written));
                 }
             }
         })?;

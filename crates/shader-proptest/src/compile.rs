@@ -283,25 +283,8 @@ fn run_slangc(
             command.arg(input).arg("-o").arg(output);
         },
     )?;
-    source_language_unknown(&mut words);
+    crate::spirv::without_slang_source_language(&mut words);
     Ok(words)
-}
-
-/// `OpSource` and the value of its source-language operand that Slang writes.
-const OP_SOURCE: u32 = 3;
-const SOURCE_LANGUAGE_SLANG: u32 = 11;
-const SOURCE_LANGUAGE_UNKNOWN: u32 = 0;
-
-/// Sets the source language of every `OpSource` that names Slang to Unknown (see [`compile_slang`]).
-fn source_language_unknown(words: &mut [u32]) {
-    let mut at = 5; // after the header
-    while at < words.len() {
-        let count = (words[at] >> 16) as usize;
-        if words[at] & 0xffff == OP_SOURCE && words.get(at + 1) == Some(&SOURCE_LANGUAGE_SLANG) {
-            words[at + 1] = SOURCE_LANGUAGE_UNKNOWN;
-        }
-        at += count.max(1);
-    }
 }
 
 /// What glslang prints, exiting with success, where it translated part of a shader into nothing
@@ -380,19 +363,22 @@ pub(crate) fn tool_output(
     log_prefix: &str,
     input: &Path,
 ) -> Result<Vec<u32>, CompileError> {
-    if !run.status.success() {
-        return Err(CompileError::Failed {
-            log: format!(
-                "{log_prefix}{}{}",
-                String::from_utf8_lossy(&run.stdout),
-                String::from_utf8_lossy(&run.stderr)
-            ),
-            source_path: input.display().to_string(),
-        });
-    }
+    tool_succeeded(run, log_prefix, input)?;
     let bytes = written.map_err(|e| CompileError::NotRun(format!("reading {tool}'s output: {e}")))?;
-    Ok(bytes
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect())
+    crate::spirv::from_bytes(&bytes).map_err(|e| CompileError::NotRun(format!("{tool}'s output: {e}")))
+}
+
+/// `Failed`, with the tool's output after `log_prefix`, where the tool `run` on `input` failed.
+pub(crate) fn tool_succeeded(run: &Output, log_prefix: &str, input: &Path) -> Result<(), CompileError> {
+    if run.status.success() {
+        return Ok(());
+    }
+    Err(CompileError::Failed {
+        log: format!(
+            "{log_prefix}{}{}",
+            String::from_utf8_lossy(&run.stdout),
+            String::from_utf8_lossy(&run.stderr)
+        ),
+        source_path: input.display().to_string(),
+    })
 }

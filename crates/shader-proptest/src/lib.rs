@@ -111,9 +111,9 @@ pub use value::{Args, ShaderType, StructType, Value};
 pub use gpu::WgpuDevice;
 #[cfg(feature = "gpu")]
 pub use gpu::{
-    barrier_shader_writes_to_host, echo, evaluate, run_checks, vulkan, Buffer, Check, ComputeKernel,
-    DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner, Phase, PhaseTimes,
-    PreparedCheck, Report, RunConfig, DEVICE_ENV, MAX_VACUOUS, SEED_ENV,
+    barrier_shader_writes, barrier_shader_writes_to_host, echo, evaluate, run_checks, vulkan, Buffer, Check,
+    ComputeKernel, DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner,
+    Phase, PhaseTimes, PreparedCheck, Report, RunConfig, DEVICE_ENV, MAX_VACUOUS, SEED_ENV,
 };
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

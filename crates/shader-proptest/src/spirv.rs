@@ -13,7 +13,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::compile::{tool_output, CompileError, Target};
+use crate::compile::{tool_output, tool_succeeded, CompileError, Target};
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -23,6 +23,10 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 pub(crate) const MAGIC: u32 = 0x0723_0203;
 /// Words in the module header (magic, version, generator, bound, schema).
 const HEADER_WORDS: usize = 5;
+/// `OpSource`, and the source-language values Slang writes in it and the one written instead.
+const OP_SOURCE: u32 = 3;
+const SOURCE_LANGUAGE_SLANG: u32 = 11;
+const SOURCE_LANGUAGE_UNKNOWN: u32 = 0;
 
 /// Opcodes the statistics look at (SPIR-V specification, section 3.52).
 const OP_EXT_INST_IMPORT: u16 = 11;
@@ -87,6 +91,11 @@ pub enum SpirvError {
     },
     /// The first word is not the SPIR-V magic number.
     Magic(u32),
+    /// The module's bytes are not a whole number of words.
+    Length {
+        /// The module's length in bytes.
+        bytes: usize,
+    },
     /// An instruction's word count is zero or runs past the end of the module.
     Instruction {
         /// Where the instruction starts, in words.
@@ -103,6 +112,7 @@ impl fmt::Display for SpirvError {
                 write!(f, "a SPIR-V module of {words} words is shorter than its header")
             }
             SpirvError::Magic(word) => write!(f, "magic number {word:#010x} is not SPIR-V's {MAGIC:#010x}"),
+            SpirvError::Length { bytes } => write!(f, "{bytes} bytes are not a whole number of 4-byte words"),
             SpirvError::Instruction { offset, word_count } => write!(
                 f,
                 "the instruction at word {offset} has a word count of {word_count}, which does not fit the module"
@@ -163,14 +173,57 @@ impl fmt::Display for Statistics {
     }
 }
 
+/// The words of a SPIR-V module stored as bytes, each word little-endian (a compiler's output file,
+/// or one that `include_bytes!` embeds), once its header is checked.
+///
+/// ```
+/// use shader_proptest::spirv;
+///
+/// let header = [0x0723_0203u32, 0x0001_0300, 0, 1, 0];
+/// let bytes: Vec<u8> = header.iter().flat_map(|word| word.to_le_bytes()).collect();
+/// assert_eq!(spirv::from_bytes(&bytes), Ok(header.to_vec()));
+/// assert!(spirv::from_bytes(&bytes[..19]).is_err());
+/// ```
+pub fn from_bytes(bytes: &[u8]) -> Result<Vec<u32>, SpirvError> {
+    if !bytes.len().is_multiple_of(4) {
+        return Err(SpirvError::Length { bytes: bytes.len() });
+    }
+    let words: Vec<u32> = bytes
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect();
+    check_header(&words)?;
+    Ok(words)
+}
+
+/// Sets the source language of every `OpSource` instruction that names Slang to Unknown. SPIR-V
+/// tools older than Slang's enumerant (11), such as Debian 12's SPIRV-Tools 2023.1 and Vulkan
+/// validation layer 1.3.239, reject a module that names it; newer ones need no such change.
+/// Nothing else in the module changes. [`crate::compile::compile_slang`] does it to what slangc
+/// writes; a build script that runs slangc itself leaves it to the program that loads the module.
+pub fn without_slang_source_language(words: &mut [u32]) {
+    let mut at = HEADER_WORDS;
+    while at < words.len() {
+        let count = (words[at] >> 16) as usize;
+        if words[at] & 0xffff == OP_SOURCE && words.get(at + 1) == Some(&SOURCE_LANGUAGE_SLANG) {
+            words[at + 1] = SOURCE_LANGUAGE_UNKNOWN;
+        }
+        at += count.max(1);
+    }
+}
+
+/// An error where `words` are shorter than a header or do not start with the magic number.
+fn check_header(words: &[u32]) -> Result<(), SpirvError> {
+    match words.first() {
+        _ if words.len() < HEADER_WORDS => Err(SpirvError::Truncated { words: words.len() }),
+        Some(&word) if word != MAGIC => Err(SpirvError::Magic(word)),
+        _ => Ok(()),
+    }
+}
+
 /// The module's instructions after the header, each as its words (opcode word first).
 fn instructions(words: &[u32]) -> Result<Vec<&[u32]>, SpirvError> {
-    if words.len() < HEADER_WORDS {
-        return Err(SpirvError::Truncated { words: words.len() });
-    }
-    if words[0] != MAGIC {
-        return Err(SpirvError::Magic(words[0]));
-    }
+    check_header(words)?;
     let mut list = Vec::new();
     let mut offset = HEADER_WORDS;
     while offset < words.len() {
@@ -241,7 +294,7 @@ pub fn validate(words: &[u32], target: Target) -> Result<(), CompileError> {
             "cannot run spirv-val (SPIRV-Tools, Debian package spirv-tools): {e}"
         ))
     })?;
-    tool_output("spirv-val", &result, Ok(Vec::new()), "spirv-val: ", &input).map(drop)
+    tool_succeeded(&result, "spirv-val: ", &input)
 }
 
 /// A path in the temporary directory that no other call of this process uses, for `job`'s files.
@@ -352,6 +405,32 @@ mod tests {
             word_count: 0,
         };
         assert_eq!(Statistics::of(&empty), Err(zero_words));
+    }
+
+    /// Bytes of a module are its words, little-endian; bytes that are not whole words or not a
+    /// module's header are errors.
+    #[test]
+    fn bytes_are_read_as_little_endian_words() {
+        let module = hand_built();
+        let bytes: Vec<u8> = module.iter().flat_map(|word| word.to_le_bytes()).collect();
+        assert_eq!(bytes[..4], [0x03, 0x02, 0x23, 0x07]);
+        assert_eq!(from_bytes(&bytes), Ok(module));
+        assert_eq!(from_bytes(&bytes[..21]), Err(SpirvError::Length { bytes: 21 }));
+        assert_eq!(from_bytes(&bytes[..16]), Err(SpirvError::Truncated { words: 4 }));
+        assert_eq!(from_bytes(&bytes[4..24]), Err(SpirvError::Magic(0x0001_0300)));
+    }
+
+    /// Only the source-language operand of an `OpSource` that names Slang changes.
+    #[test]
+    fn slang_source_language_becomes_unknown() {
+        let mut module = vec![MAGIC, 0x0001_0300, 0, 20, 0];
+        module.extend(instruction(OP_SOURCE as u16, &[SOURCE_LANGUAGE_SLANG, 1]));
+        module.extend(instruction(OP_SOURCE as u16, &[2, 450]));
+        module.extend(instruction(OP_EXT_INST_IMPORT, &[SOURCE_LANGUAGE_SLANG]));
+        let mut expected = module.clone();
+        expected[6] = SOURCE_LANGUAGE_UNKNOWN;
+        without_slang_source_language(&mut module);
+        assert_eq!(module, expected);
     }
 
     /// naga's module of a function with one `sin` and one `sqrt` keeps both after `spirv-opt -O`,

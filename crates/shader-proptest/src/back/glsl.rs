@@ -2,7 +2,7 @@
 //! kernels put the [`Shader`]'s source (for example an `#include`) after `#version 460`, exactly
 //! as users do, and layouts are read from the SPIR-V glslang writes for a probe block.
 
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
+use super::{Backend, KernelCall, KernelEcho, MatrixOrder, Spelling};
 #[cfg(feature = "gpu")]
 use crate::compile::glslang;
 use crate::compile::{compile_glsl, CompileError, Stage, Target};
@@ -12,51 +12,29 @@ use crate::reflect;
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::Signature;
-use crate::value::ShaderType;
+
 use std::path::Path;
 
 /// The GLSL back end.
 pub(crate) struct Glsl;
+
+/// GLSL's names and casts.
+const SPELLING: Spelling = Spelling {
+    types: [
+        "float", "uint", "int", "bool", "vec2", "vec3", "vec4", "mat2", "mat3", "mat4",
+    ],
+    casts: ["int({})", "floatBitsToUint({})", "uint({})"],
+    bool_word: "({} ? 1u : 0u)",
+    matrix_order: MatrixOrder::Columns,
+};
 
 impl Backend for Glsl {
     fn name(&self) -> &'static str {
         "GLSL"
     }
 
-    fn type_name(&self, ty: ShaderType) -> &'static str {
-        match ty {
-            ShaderType::F32 => "float",
-            ShaderType::U32 => "uint",
-            ShaderType::I32 => "int",
-            ShaderType::Bool => "bool",
-            ShaderType::Vec2 => "vec2",
-            ShaderType::Vec3 => "vec3",
-            ShaderType::Vec4 => "vec4",
-            ShaderType::Mat2 => "mat2",
-            ShaderType::Mat3 => "mat3",
-            ShaderType::Mat4 => "mat4",
-            ShaderType::Struct(s) => s.name,
-        }
-    }
-
-    fn int_from_bits(&self, word: &str) -> String {
-        format!("int({word})")
-    }
-
-    fn float_bits(&self, value: &str) -> String {
-        format!("floatBitsToUint({value})")
-    }
-
-    fn int_bits(&self, value: &str) -> String {
-        format!("uint({value})")
-    }
-
-    fn bool_word(&self, value: &str) -> String {
-        format!("({value} ? 1u : 0u)")
-    }
-
-    fn matrix_order(&self) -> MatrixOrder {
-        MatrixOrder::Columns
+    fn spelling(&self) -> &'static Spelling {
+        &SPELLING
     }
 
     fn call_kernel(&self, source: &str, call: &KernelCall<'_>) -> String {

@@ -6,23 +6,23 @@
 //!
 //! HLSL has no struct constructors: a kernel declares one function per struct it builds,
 //! `kernel_make_<Name>`, that returns an initializer list of its parameters. Matrix constructors
-//! take a matrix row by row and `m[r]` is row r ([`MatrixOrder::Rows`]), as in Slang. Buffers take
-//! the compiler's default layout for Vulkan, `std430` (storage buffers and push constants alike):
-//! HLSL has no way to choose another in the source, so an echo kernel ignores its packing, as WGSL's
-//! does.
+//! take a matrix row by row and `m[r]` is row r ([`super::MatrixOrder::Rows`]), as in Slang.
+//! Kernels are Slang's, written by [`super::slang::structured_call_kernel`] and
+//! [`super::slang::structured_echo_kernel`]. Buffers take the compiler's default layout for
+//! Vulkan, `std430` (storage buffers and push constants alike): HLSL has no way to choose another
+//! in the source, so an echo kernel ignores its packing, as WGSL's does.
 
 #[cfg(feature = "gpu")]
 use super::slang::slangc_declared_signatures;
-use super::slang::Slang;
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
+use super::slang::{self, structured_call_kernel, structured_echo_kernel};
+use super::{Backend, KernelCall, KernelEcho, Spelling};
 use crate::compile::{compile_hlsl_with_glslang, compile_hlsl_with_slangc, CompileError, Stage, Target};
-use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
 use crate::reflect;
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::Signature;
-use crate::value::{ShaderType, StructType};
+use crate::value::StructType;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -47,28 +47,8 @@ impl Backend for Hlsl {
     }
 
     /// Types, bit casts and matrix order are spelled as in Slang, which reads HLSL's.
-    fn type_name(&self, ty: ShaderType) -> &'static str {
-        Slang.type_name(ty)
-    }
-
-    fn int_from_bits(&self, word: &str) -> String {
-        Slang.int_from_bits(word)
-    }
-
-    fn float_bits(&self, value: &str) -> String {
-        Slang.float_bits(value)
-    }
-
-    fn int_bits(&self, value: &str) -> String {
-        Slang.int_bits(value)
-    }
-
-    fn bool_word(&self, value: &str) -> String {
-        Slang.bool_word(value)
-    }
-
-    fn matrix_order(&self) -> MatrixOrder {
-        Slang.matrix_order()
+    fn spelling(&self) -> &'static Spelling {
+        &slang::SPELLING
     }
 
     /// A call of the struct's `kernel_make_` function, which [`Backend::call_kernel`] declares.
@@ -77,44 +57,18 @@ impl Backend for Hlsl {
     }
 
     fn call_kernel(&self, source: &str, call: &KernelCall<'_>) -> String {
-        format!(
-            "{source}
-
-[[vk::binding(0, 0)]] StructuredBuffer<uint> kernel_inputs;
-[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
-
-float kernel_f32(uint word) {{
-    return asfloat(kernel_inputs[word]);
-}}
-{makers}
-{main}",
-            makers = self.struct_makers(call.structs),
-            main = main(
-                "kernel_outputs",
-                &format!("buffer_length / {}u", call.out_words),
-                |index| call.typed_statements(index),
-            ),
-        )
+        structured_call_kernel(source, &self.struct_makers(call.structs), call)
     }
 
     /// The buffer and the push constants in `std430` whatever `packing` says (see the module
     /// documentation). The push constants are a constant buffer holding one struct member, which
     /// glslang can copy whole (it cannot copy a `ConstantBuffer<T>` into a `T`).
     fn echo_kernel(&self, source: &str, _packing: GlslPacking, echo: &KernelEcho<'_>) -> String {
-        format!(
-            "{source}
-
-[[vk::binding(0, 0)]] StructuredBuffer<{name}> echo_values;
-[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
-[[vk::push_constant]] cbuffer EchoPush {{
-    {name} echo_push;
-}};
-
-{main}",
-            name = echo.name,
-            main = main("echo_values", "buffer_length", |index| echo
-                .typed_statements(index)),
-        )
+        let push = format!(
+            "[[vk::push_constant]] cbuffer EchoPush {{\n    {} echo_push;\n}};",
+            echo.name
+        );
+        structured_echo_kernel(source, echo.name, &push, echo)
     }
 
     fn compile_kernel(&self, shader: &Shader, kernel: &str) -> Result<Vec<u32>, CompileError> {
@@ -203,26 +157,6 @@ impl Hlsl {
         }
         out
     }
-}
-
-/// An HLSL compute `main`: invocation `id.x` returns unless it is below `cases`, an expression that
-/// may use `buffer_length`, the element count of the structured buffer `buffer`; then runs
-/// `statements` of its index expression.
-fn main(buffer: &str, cases: &str, statements: impl FnOnce(&str) -> String) -> String {
-    let index = "id.x";
-    format!(
-        "[numthreads({WORKGROUP_SIZE}, 1, 1)]
-void main(uint3 id : SV_DispatchThreadID) {{
-    uint buffer_length;
-    uint buffer_stride;
-    {buffer}.GetDimensions(buffer_length, buffer_stride);
-    if ({index} >= {cases}) {{
-        return;
-    }}
-{}}}
-",
-        statements(index)
-    )
 }
 
 /// The error for a failed probe compile: errors at the probe buffer's line alone mean `name` is not

@@ -93,28 +93,77 @@ pub(crate) enum MatrixOrder {
     Rows,
 }
 
+/// Every [`ShaderType`] but a struct, in the order of [`Spelling::types`].
+const VALUE_TYPES: [ShaderType; 10] = [
+    ShaderType::F32,
+    ShaderType::U32,
+    ShaderType::I32,
+    ShaderType::Bool,
+    ShaderType::Vec2,
+    ShaderType::Vec3,
+    ShaderType::Vec4,
+    ShaderType::Mat2,
+    ShaderType::Mat3,
+    ShaderType::Mat4,
+];
+
+/// How a language spells what kernels need besides its [`Backend::call_kernel`] text: a type's
+/// name, and expressions as templates in which `{}` stands for the operand.
+pub(crate) struct Spelling {
+    /// The names of the [`VALUE_TYPES`], in their order: `"float"`, `"uint"`, ... in GLSL.
+    pub types: [&'static str; 10],
+    /// The bit casts: an `i32` from a `u32`, a `u32` from an `f32`, a `u32` from an `i32`
+    /// (`"int({})"`, `"floatBitsToUint({})"`, `"uint({})"` in GLSL).
+    pub casts: [&'static str; 3],
+    /// A `u32` that is 1 where a `bool` holds, else 0: `"({} ? 1u : 0u)"` in GLSL.
+    pub bool_word: &'static str,
+    /// How matrix constructors take their elements.
+    pub matrix_order: MatrixOrder,
+}
+
 /// One shading language as the harness writes, compiles and lays it out.
 pub(crate) trait Backend: Send + Sync {
     /// The language's name in reports: `"WGSL"`.
     fn name(&self) -> &'static str;
 
+    /// How the language spells value types, bit casts and matrices.
+    fn spelling(&self) -> &'static Spelling;
+
     /// The name of `ty` in the language (a struct's own name for a struct).
-    fn type_name(&self, ty: ShaderType) -> &'static str;
+    fn type_name(&self, ty: ShaderType) -> &'static str {
+        match VALUE_TYPES.iter().position(|&value| value == ty) {
+            Some(index) => self.spelling().types[index],
+            None => match ty {
+                ShaderType::Struct(s) => s.name,
+                _ => unreachable!("VALUE_TYPES lists every ShaderType but Struct"),
+            },
+        }
+    }
 
     /// An `i32` expression with the bits of the `u32` expression `word`.
-    fn int_from_bits(&self, word: &str) -> String;
+    fn int_from_bits(&self, word: &str) -> String {
+        self.spelling().casts[0].replace("{}", word)
+    }
 
     /// A `u32` expression with the bits of the `f32` expression `value`.
-    fn float_bits(&self, value: &str) -> String;
+    fn float_bits(&self, value: &str) -> String {
+        self.spelling().casts[1].replace("{}", value)
+    }
 
     /// A `u32` expression with the bits of the `i32` expression `value`.
-    fn int_bits(&self, value: &str) -> String;
+    fn int_bits(&self, value: &str) -> String {
+        self.spelling().casts[2].replace("{}", value)
+    }
 
     /// A `u32` expression that is 1 where the `bool` expression `value` holds, else 0.
-    fn bool_word(&self, value: &str) -> String;
+    fn bool_word(&self, value: &str) -> String {
+        self.spelling().bool_word.replace("{}", value)
+    }
 
     /// How matrix constructors take their elements.
-    fn matrix_order(&self) -> MatrixOrder;
+    fn matrix_order(&self) -> MatrixOrder {
+        self.spelling().matrix_order
+    }
 
     /// An expression of the struct `ty` from the expressions of its fields in declaration order:
     /// a constructor call `Name(...)` unless the language has none.

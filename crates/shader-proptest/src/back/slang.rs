@@ -5,7 +5,7 @@
 //! Slang's matrix constructors take a matrix row by row and `m[r]` is row r, so kernels build a
 //! matrix from its elements in row order and store `transpose(m)[c]` ([`MatrixOrder::Rows`]).
 
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
+use super::{Backend, KernelCall, KernelEcho, MatrixOrder, Spelling};
 use crate::compile::{compile_slang, CompileError, Stage, Target};
 use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
@@ -13,88 +13,41 @@ use crate::reflect;
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::{DeclaredType, Signature};
+#[cfg(feature = "gpu")]
 use crate::value::ShaderType;
 use std::path::Path;
 
 /// The Slang back end.
 pub(crate) struct Slang;
 
+/// Slang's names and casts, which are HLSL's.
+pub(super) const SPELLING: Spelling = Spelling {
+    types: [
+        "float", "uint", "int", "bool", "float2", "float3", "float4", "float2x2", "float3x3", "float4x4",
+    ],
+    casts: ["asint({})", "asuint({})", "asuint({})"],
+    bool_word: "({} ? 1u : 0u)",
+    matrix_order: MatrixOrder::Rows,
+};
+
 impl Backend for Slang {
     fn name(&self) -> &'static str {
         "Slang"
     }
 
-    fn type_name(&self, ty: ShaderType) -> &'static str {
-        match ty {
-            ShaderType::F32 => "float",
-            ShaderType::U32 => "uint",
-            ShaderType::I32 => "int",
-            ShaderType::Bool => "bool",
-            ShaderType::Vec2 => "float2",
-            ShaderType::Vec3 => "float3",
-            ShaderType::Vec4 => "float4",
-            ShaderType::Mat2 => "float2x2",
-            ShaderType::Mat3 => "float3x3",
-            ShaderType::Mat4 => "float4x4",
-            ShaderType::Struct(s) => s.name,
-        }
-    }
-
-    fn int_from_bits(&self, word: &str) -> String {
-        format!("asint({word})")
-    }
-
-    fn float_bits(&self, value: &str) -> String {
-        format!("asuint({value})")
-    }
-
-    fn int_bits(&self, value: &str) -> String {
-        format!("asuint({value})")
-    }
-
-    fn bool_word(&self, value: &str) -> String {
-        format!("({value} ? 1u : 0u)")
-    }
-
-    fn matrix_order(&self) -> MatrixOrder {
-        MatrixOrder::Rows
+    fn spelling(&self) -> &'static Spelling {
+        &SPELLING
     }
 
     fn call_kernel(&self, source: &str, call: &KernelCall<'_>) -> String {
-        format!(
-            "{source}
-
-[[vk::binding(0, 0)]] StructuredBuffer<uint> kernel_inputs;
-[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
-
-float kernel_f32(uint word) {{
-    return asfloat(kernel_inputs[word]);
-}}
-
-{main}",
-            main = main(
-                "kernel_outputs",
-                &format!("buffer_length / {}u", call.out_words),
-                |index| call.typed_statements(index),
-            ),
-        )
+        structured_call_kernel(source, "", call)
     }
 
     /// Both buffers take `packing`'s data layout.
     fn echo_kernel(&self, source: &str, packing: GlslPacking, echo: &KernelEcho<'_>) -> String {
-        format!(
-            "{source}
-
-[[vk::binding(0, 0)]] StructuredBuffer<{name}, {layout}> echo_values;
-[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
-[[vk::push_constant]] ConstantBuffer<{name}, {layout}> echo_push;
-
-{main}",
-            name = echo.name,
-            layout = packing.slang_layout(),
-            main = main("echo_values", "buffer_length", |index| echo
-                .typed_statements(index)),
-        )
+        let (name, layout) = (echo.name, packing.slang_layout());
+        let push = format!("[[vk::push_constant]] ConstantBuffer<{name}, {layout}> echo_push;");
+        structured_echo_kernel(source, &format!("{name}, {layout}"), &push, echo)
     }
 
     /// slangc, with the shader's search paths.
@@ -207,14 +160,57 @@ fn declared_type(spelled: &str) -> DeclaredType {
     }
 }
 
-/// A Slang compute `main`: invocation `id.x` returns unless it is below `cases`, an expression
-/// that may use `buffer_length`, the element count of the structured buffer `buffer`; then runs
-/// `statements` of its index expression.
+/// A call kernel of Slang or HLSL, which declare their buffers as structured buffers: `source`,
+/// the input and output words, `kernel_f32`, the functions `helpers` (which the call may use) and
+/// `main`.
+pub(super) fn structured_call_kernel(source: &str, helpers: &str, call: &KernelCall<'_>) -> String {
+    format!(
+        "{source}
+
+[[vk::binding(0, 0)]] StructuredBuffer<uint> kernel_inputs;
+[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
+
+float kernel_f32(uint word) {{
+    return asfloat(kernel_inputs[word]);
+}}
+{helpers}
+{main}",
+        main = main(
+            "kernel_outputs",
+            &format!("buffer_length / {}u", call.out_words),
+            |index| call.typed_statements(index),
+        ),
+    )
+}
+
+/// An echo kernel of Slang or HLSL: `source`, the values in a `StructuredBuffer<{element}>`, the
+/// output words, the declaration `push` of the push constants `echo_push`, and `main`.
+pub(super) fn structured_echo_kernel(
+    source: &str,
+    element: &str,
+    push: &str,
+    echo: &KernelEcho<'_>,
+) -> String {
+    format!(
+        "{source}
+
+[[vk::binding(0, 0)]] StructuredBuffer<{element}> echo_values;
+[[vk::binding(1, 0)]] RWStructuredBuffer<uint> kernel_outputs;
+{push}
+
+{main}",
+        main = main("echo_values", "buffer_length", |index| echo
+            .typed_statements(index)),
+    )
+}
+
+/// A compute `main` of Slang or HLSL (its stage given to the compiler): invocation `id.x` returns
+/// unless it is below `cases`, an expression that may use `buffer_length`, the element count of
+/// the structured buffer `buffer`; then runs `statements` of its index expression.
 fn main(buffer: &str, cases: &str, statements: impl FnOnce(&str) -> String) -> String {
     let index = "id.x";
     format!(
-        "[shader(\"compute\")]
-[numthreads({WORKGROUP_SIZE}, 1, 1)]
+        "[numthreads({WORKGROUP_SIZE}, 1, 1)]
 void main(uint3 id : SV_DispatchThreadID) {{
     uint buffer_length;
     uint buffer_stride;

@@ -1,57 +1,45 @@
 //! WGSL, compiled by naga: kernels are the module's text followed by the wrapper, and layouts are
 //! naga's (the WGSL rules for host-shareable memory, which storage buffers and push constants use).
 
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder};
+use super::{Backend, KernelCall, KernelEcho, MatrixOrder, Spelling};
 use crate::compile::{compile_wgsl, CompileError, Target};
 use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{FieldLayout, GlslPacking, LayoutError, StructLayout};
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
 use crate::signature::{DeclaredType, Signature};
+#[cfg(feature = "gpu")]
 use crate::value::ShaderType;
 
 /// The WGSL back end.
 pub(crate) struct Wgsl;
+
+/// WGSL's names and casts.
+const SPELLING: Spelling = Spelling {
+    types: [
+        "f32",
+        "u32",
+        "i32",
+        "bool",
+        "vec2<f32>",
+        "vec3<f32>",
+        "vec4<f32>",
+        "mat2x2<f32>",
+        "mat3x3<f32>",
+        "mat4x4<f32>",
+    ],
+    casts: ["bitcast<i32>({})", "bitcast<u32>({})", "bitcast<u32>({})"],
+    bool_word: "select(0u, 1u, {})",
+    matrix_order: MatrixOrder::Columns,
+};
 
 impl Backend for Wgsl {
     fn name(&self) -> &'static str {
         "WGSL"
     }
 
-    fn type_name(&self, ty: ShaderType) -> &'static str {
-        match ty {
-            ShaderType::F32 => "f32",
-            ShaderType::U32 => "u32",
-            ShaderType::I32 => "i32",
-            ShaderType::Bool => "bool",
-            ShaderType::Vec2 => "vec2<f32>",
-            ShaderType::Vec3 => "vec3<f32>",
-            ShaderType::Vec4 => "vec4<f32>",
-            ShaderType::Mat2 => "mat2x2<f32>",
-            ShaderType::Mat3 => "mat3x3<f32>",
-            ShaderType::Mat4 => "mat4x4<f32>",
-            ShaderType::Struct(s) => s.name,
-        }
-    }
-
-    fn int_from_bits(&self, word: &str) -> String {
-        format!("bitcast<i32>({word})")
-    }
-
-    fn float_bits(&self, value: &str) -> String {
-        format!("bitcast<u32>({value})")
-    }
-
-    fn int_bits(&self, value: &str) -> String {
-        format!("bitcast<u32>({value})")
-    }
-
-    fn bool_word(&self, value: &str) -> String {
-        format!("select(0u, 1u, {value})")
-    }
-
-    fn matrix_order(&self) -> MatrixOrder {
-        MatrixOrder::Columns
+    fn spelling(&self) -> &'static Spelling {
+        &SPELLING
     }
 
     fn call_kernel(&self, source: &str, call: &KernelCall<'_>) -> String {

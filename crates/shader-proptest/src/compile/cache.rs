@@ -123,12 +123,7 @@ pub(crate) fn lookup(dir: &Path, key: &[u8]) -> Option<Vec<u32>> {
     if bytes.get(8..words_at)? != key {
         return None;
     }
-    let words: Vec<u32> = bytes[words_at..]
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect();
-    let whole = (bytes.len() - words_at) % 4 == 0;
-    (whole && words.first() == Some(&crate::spirv::MAGIC)).then_some(words)
+    crate::spirv::from_bytes(&bytes[words_at..]).ok()
 }
 
 /// Keeps `words` for `key` in `dir`: written to a file of this process, then renamed, so that a
@@ -178,7 +173,7 @@ mod tests {
         };
         let key = key(&command(), "comp", "void main() {}", &[&include])
             .expect("glslangValidator answers --version (scripts/setup.sh installs it)");
-        let words = [crate::spirv::MAGIC, 0x0001_0300, 7, 9];
+        let words = [crate::spirv::MAGIC, 0x0001_0300, 7, 9, 0];
         store(&dir, &key, &words);
         assert_eq!(lookup(&dir, &key), Some(words.to_vec()));
         let other_source = super::key(&command(), "comp", "void main() { }", &[&include]).expect("a key");

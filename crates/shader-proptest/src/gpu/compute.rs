@@ -18,24 +18,42 @@ use std::time::Instant;
 /// through wgpu).
 pub(crate) trait Dispatch: Send + Sync {
     /// Runs one batch; a validation message fails it.
-    fn dispatch(
-        &self,
-        invocations: usize,
-        input: &[u32],
-        output_words: usize,
-        times: &mut PhaseTimes,
-    ) -> Result<Vec<u32>, Error>;
+    fn dispatch(&self, run: KernelRun<'_>, times: &mut PhaseTimes) -> Result<Vec<u32>, Error>;
+}
+
+/// One batch of a kernel: `invocations` invocations over the `input` words, returning the first
+/// `output_words` output words.
+#[derive(Clone, Copy)]
+pub(crate) struct KernelRun<'a> {
+    pub invocations: usize,
+    pub input: &'a [u32],
+    pub output_words: usize,
+}
+
+impl<'a> KernelRun<'a> {
+    /// `invocations` cases over `input`, each returning `words` words.
+    pub(crate) fn per_case(invocations: usize, input: &'a [u32], words: usize) -> KernelRun<'a> {
+        KernelRun {
+            invocations,
+            input,
+            output_words: invocations * words,
+        }
+    }
+
+    /// The workgroups of [`WORKGROUP_SIZE`] invocations that cover the batch; an error where they
+    /// are more than the device's `limit` per dispatch.
+    pub(crate) fn groups(&self, limit: u32) -> Result<u32, Error> {
+        let groups = self.invocations.div_ceil(WORKGROUP_SIZE as usize);
+        u32::try_from(groups)
+            .ok()
+            .filter(|&groups| groups <= limit)
+            .ok_or(Error::BatchTooLarge(self.invocations))
+    }
 }
 
 impl Dispatch for ComputeKernel<'_> {
-    fn dispatch(
-        &self,
-        invocations: usize,
-        input: &[u32],
-        output_words: usize,
-        times: &mut PhaseTimes,
-    ) -> Result<Vec<u32>, Error> {
-        self.dispatch_timed(invocations, input, output_words, &[], times)
+    fn dispatch(&self, run: KernelRun<'_>, times: &mut PhaseTimes) -> Result<Vec<u32>, Error> {
+        self.dispatch_timed(run, &[], times)
     }
 }
 
@@ -71,13 +89,6 @@ impl<'g> ComputeKernel<'g> {
     /// (0 for none).
     pub fn new(gpu: &'g Gpu, spirv: &[u32], push_constant_bytes: u32) -> Result<ComputeKernel<'g>, Error> {
         let mut owner = Owner::new(gpu);
-        let bindings = [0, 1].map(|binding| {
-            vk::DescriptorSetLayoutBinding::default()
-                .binding(binding)
-                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                .descriptor_count(1)
-                .stage_flags(vk::ShaderStageFlags::COMPUTE)
-        });
         let ranges = [vk::PushConstantRange::default()
             .stage_flags(vk::ShaderStageFlags::COMPUTE)
             .size(push_constant_bytes)];
@@ -86,7 +97,7 @@ impl<'g> ComputeKernel<'g> {
         } else {
             &ranges[..]
         };
-        let (set_layout, layout) = owner.layouts(&bindings, ranges)?;
+        let (set_layout, layout) = owner.compute_storage_layouts(2, ranges)?;
         let pipeline = owner.compute_pipeline(spirv, layout)?;
         Ok(ComputeKernel {
             owner,
@@ -118,27 +129,29 @@ impl<'g> ComputeKernel<'g> {
         output_words: usize,
         push_constants: &[u8],
     ) -> Result<Vec<u32>, Error> {
-        let mut times = PhaseTimes::default();
-        self.dispatch_timed(invocations, input, output_words, push_constants, &mut times)
+        let run = KernelRun {
+            invocations,
+            input,
+            output_words,
+        };
+        self.dispatch_timed(run, push_constants, &mut PhaseTimes::default())
     }
 
     /// [`ComputeKernel::dispatch_with_push_constants`], its upload, dispatch and read-back timed
     /// into `times`.
     fn dispatch_timed(
         &self,
-        invocations: usize,
-        input: &[u32],
-        output_words: usize,
+        run: KernelRun<'_>,
         push_constants: &[u8],
         times: &mut PhaseTimes,
     ) -> Result<Vec<u32>, Error> {
         let mut clock = Instant::now();
         let gpu = self.owner.gpu;
-        let groups = invocations.div_ceil(WORKGROUP_SIZE as usize);
-        if groups > gpu.properties().limits.max_compute_work_group_count[0] as usize {
-            return Err(Error::BatchTooLarge(invocations));
-        }
-        let (input_bytes, output_bytes) = ((input.len().max(1) * 4) as u64, (output_words.max(1) * 4) as u64);
+        let groups = run.groups(gpu.properties().limits.max_compute_work_group_count[0])?;
+        let (input_bytes, output_bytes) = (
+            (run.input.len().max(1) * 4) as u64,
+            (run.output_words.max(1) * 4) as u64,
+        );
         let mut io = self.io.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
         if !io.as_ref().is_some_and(|io| io.holds(input_bytes, output_bytes)) {
             // The old buffers go first, so that only one set is alive at a time.
@@ -146,7 +159,7 @@ impl<'g> ComputeKernel<'g> {
             *io = Some(self.kernel_io(input_bytes, output_bytes)?);
         }
         let io = io.as_ref().expect("made above");
-        io.owner.write(&io.input, bytemuck::cast_slice(input))?;
+        io.owner.write(&io.input, bytemuck::cast_slice(run.input))?;
         self.bind(
             io.set,
             [(io.input.buffer, input_bytes), (io.output.buffer, output_bytes)],
@@ -155,11 +168,10 @@ impl<'g> ComputeKernel<'g> {
         let used = push_constants.len().min(push.len());
         push[..used].copy_from_slice(&push_constants[..used]);
         times.lap(Phase::Upload, &mut clock);
-        io.owner.submit(|device, command_buffer| {
-            self.record(device, command_buffer, io.set, &push, groups as u32)
-        })?;
+        io.owner
+            .submit(|device, command_buffer| self.record(device, command_buffer, io.set, &push, groups))?;
         times.lap(Phase::Dispatch, &mut clock);
-        let output = io.owner.read(&io.output, output_words);
+        let output = io.owner.read(&io.output, run.output_words);
         times.lap(Phase::ReadBack, &mut clock);
         output
     }

@@ -19,7 +19,7 @@ pub use compute::ComputeKernel;
 pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
 pub use echo::echo;
 pub use phases::{Phase, PhaseTimes};
-pub use resources::{barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
+pub use resources::{barrier_shader_writes, barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
 pub use suite::run_checks;
 #[cfg(feature = "wgpu")]
 pub use wgpu_device::WgpuDevice;

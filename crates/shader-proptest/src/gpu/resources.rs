@@ -371,6 +371,25 @@ impl<'g> Owner<'g> {
 }
 
 impl Owner<'_> {
+    /// [`Owner::layouts`] of bindings 0 to `count - 1`, each one storage buffer of the compute
+    /// stage.
+    pub fn compute_storage_layouts(
+        &mut self,
+        count: u32,
+        push_constants: &[vk::PushConstantRange],
+    ) -> Result<(vk::DescriptorSetLayout, vk::PipelineLayout), Error> {
+        let bindings: Vec<_> = (0..count)
+            .map(|binding| {
+                vk::DescriptorSetLayoutBinding::default()
+                    .binding(binding)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .descriptor_count(1)
+                    .stage_flags(vk::ShaderStageFlags::COMPUTE)
+            })
+            .collect();
+        self.layouts(&bindings, push_constants)
+    }
+
     /// A descriptor-set layout of `bindings`, and a pipeline layout of it and `push_constants`.
     pub fn layouts(
         &mut self,
@@ -463,15 +482,32 @@ pub unsafe fn barrier_shader_writes_to_host(
     command_buffer: vk::CommandBuffer,
     writers: vk::PipelineStageFlags,
 ) {
+    let readers = (vk::PipelineStageFlags::HOST, vk::AccessFlags::HOST_READ);
+    // SAFETY: the caller's promise.
+    unsafe { barrier_shader_writes(device, command_buffer, writers, readers) }
+}
+
+/// Records a barrier after which the `readers` stages, with the accesses they name, see what the
+/// shaders of the `writers` stages wrote to memory: `(COMPUTE_SHADER, SHADER_WRITE)` for a
+/// compute shader that overwrites its predecessor's results.
+///
+/// # Safety
+/// `command_buffer` was allocated from `device` and is recording.
+pub unsafe fn barrier_shader_writes(
+    device: &ash::Device,
+    command_buffer: vk::CommandBuffer,
+    writers: vk::PipelineStageFlags,
+    readers: (vk::PipelineStageFlags, vk::AccessFlags),
+) {
     let written = vk::MemoryBarrier::default()
         .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-        .dst_access_mask(vk::AccessFlags::HOST_READ);
+        .dst_access_mask(readers.1);
     // SAFETY: the caller's promise.
     unsafe {
         device.cmd_pipeline_barrier(
             command_buffer,
             writers,
-            vk::PipelineStageFlags::HOST,
+            readers.0,
             vk::DependencyFlags::empty(),
             &[written],
             &[],

@@ -9,10 +9,9 @@
 //! backend; Metal and DX12 are enabled and untested here.
 
 use super::check::{FunctionCheck, PreparedCheck, Report, RunConfig};
-use super::compute::Dispatch;
+use super::compute::{Dispatch, KernelRun};
 use super::device::{Error, DEVICE_ENV};
 use super::phases::{Phase, PhaseTimes};
-use crate::kernel::WORKGROUP_SIZE;
 use crate::shader::{Feature, Shader};
 use crate::value::{Args, Value};
 use std::time::Instant;
@@ -199,25 +198,16 @@ impl<'g> WgpuKernel<'g> {
 }
 
 impl Dispatch for WgpuKernel<'_> {
-    fn dispatch(
-        &self,
-        invocations: usize,
-        input: &[u32],
-        output_words: usize,
-        times: &mut PhaseTimes,
-    ) -> Result<Vec<u32>, Error> {
+    fn dispatch(&self, run: KernelRun<'_>, times: &mut PhaseTimes) -> Result<Vec<u32>, Error> {
         let mut clock = Instant::now();
         let gpu = &self.device.device;
-        let groups = invocations.div_ceil(WORKGROUP_SIZE as usize) as u32;
-        if groups > gpu.limits().max_compute_workgroups_per_dimension {
-            return Err(Error::BatchTooLarge(invocations));
-        }
-        let bytes = (output_words.max(1) * 4) as u64;
+        let groups = run.groups(gpu.limits().max_compute_workgroups_per_dimension)?;
+        let bytes = (run.output_words.max(1) * 4) as u64;
         let readback = self.device.validated(|| {
-            let input = self.storage("kernel_inputs", input, wgpu::BufferUsages::empty());
+            let input = self.storage("kernel_inputs", run.input, wgpu::BufferUsages::empty());
             let output = self.storage(
                 "kernel_outputs",
-                &vec![0; output_words],
+                &vec![0; run.output_words],
                 wgpu::BufferUsages::COPY_SRC,
             );
             let readback = gpu.create_buffer(&wgpu::BufferDescriptor {
@@ -260,7 +250,7 @@ impl Dispatch for WgpuKernel<'_> {
         let view = slice
             .get_mapped_range()
             .map_err(|error| Error::Setup(format!("wgpu reading the results: {error}")))?;
-        let output = bytemuck::cast_slice(&view)[..output_words].to_vec();
+        let output = bytemuck::cast_slice(&view)[..run.output_words].to_vec();
         times.lap(Phase::ReadBack, &mut clock);
         Ok(output)
     }

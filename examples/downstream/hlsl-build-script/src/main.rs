@@ -7,7 +7,7 @@
 use glam::{Mat4, Vec2, Vec3};
 use ray_footprint::ray_diff;
 use ray_footprint::shaders::HLSL_INCLUDE_DIR;
-use shader_proptest::{ComputeKernel, Gpu};
+use shader_proptest::{spirv, ComputeKernel, Gpu};
 use std::process::ExitCode;
 
 const EYE_RAYS_SPIRV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/eye_rays.spv"));
@@ -56,10 +56,7 @@ fn run() -> Result<String, String> {
             "the build script got {exported}, the crate names {HLSL_INCLUDE_DIR}"
         ));
     }
-    let spirv: Vec<u32> = EYE_RAYS_SPIRV
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect();
+    let spirv = spirv::from_bytes(EYE_RAYS_SPIRV).map_err(|e| format!("eye_rays.spv: {e}"))?;
     let view =
         glam::camera::rh::view::look_at_mat4(Vec3::new(3.0, 2.0, 5.0), Vec3::new(0.0, 0.5, 0.0), Vec3::Y);
     let projection =

@@ -6,7 +6,7 @@
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone::{self, RayCone};
 use ray_footprint::shaders::SLANG_INCLUDE_DIR;
-use shader_proptest::{ComputeKernel, Gpu};
+use shader_proptest::{spirv, ComputeKernel, Gpu};
 use std::process::ExitCode;
 
 const FOOTPRINT_SPIRV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/footprint.spv"));
@@ -84,10 +84,10 @@ fn run() -> Result<String, String> {
             "the build script got {exported}, the crate names {SLANG_INCLUDE_DIR}"
         ));
     }
-    let spirv: Vec<u32> = FOOTPRINT_SPIRV
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect();
+    let mut spirv = spirv::from_bytes(FOOTPRINT_SPIRV).map_err(|e| format!("footprint.spv: {e}"))?;
+    // SPIR-V tools older than Slang's source-language enumerant, such as Debian 12's validation
+    // layer 1.3.239, reject a module that names it.
+    spirv::without_slang_source_language(&mut spirv);
     let gpu = Gpu::new().map_err(|e| format!("{e}; run scripts/setup.sh"))?;
     let kernel = ComputeKernel::new(&gpu, &spirv, 0).map_err(|e| e.to_string())?;
     let hits = hits();

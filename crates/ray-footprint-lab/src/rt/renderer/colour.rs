@@ -12,7 +12,7 @@ use crate::timing::{query_pool, read_queries, write_timestamp, Timestamps};
 use ash::vk;
 use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use shader_proptest::layout::{glsl_layout, GlslPacking};
-use shader_proptest::{barrier_shader_writes_to_host, Owner};
+use shader_proptest::{barrier_shader_writes, barrier_shader_writes_to_host, Owner};
 use std::path::Path;
 use std::time::Duration;
 
@@ -88,22 +88,13 @@ impl ColourPipeline<'_, '_> {
             push,
         );
         self.ray_tracing.trace(command_buffer, push.width, push.height);
-        let written = vk::MemoryBarrier::default()
-            .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-            .dst_access_mask(vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE);
         let stage = vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR;
+        let readers = (
+            stage,
+            vk::AccessFlags::SHADER_READ | vk::AccessFlags::SHADER_WRITE,
+        );
         // SAFETY: recording into a command buffer in the recording state.
-        unsafe {
-            device.cmd_pipeline_barrier(
-                command_buffer,
-                stage,
-                stage,
-                vk::DependencyFlags::empty(),
-                &[written],
-                &[],
-                &[],
-            )
-        };
+        unsafe { barrier_shader_writes(device, command_buffer, stage, readers) };
     }
 }
 

@@ -4,7 +4,7 @@
 use super::config::{batch_runner, RunConfig};
 use super::judge::{count_vacuous, Vacuous};
 use super::FunctionCheck;
-use crate::gpu::compute::Dispatch;
+use crate::gpu::compute::{Dispatch, KernelRun};
 use crate::gpu::device::Error;
 use crate::gpu::phases::{Phase, PhaseTimes};
 use crate::value::{Args, Value};
@@ -173,7 +173,8 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     ) -> Result<Option<Mismatch>, Error> {
         stats.times += batch.times;
         let count = batch.cases.len();
-        let output = pipeline.dispatch(count, &batch.input, count * R::TYPE.words(), &mut stats.times)?;
+        let run = KernelRun::per_case(count, &batch.input, R::TYPE.words());
+        let output = pipeline.dispatch(run, &mut stats.times)?;
         let comparing = Instant::now();
         let per_case = batch.expected.len() / count.max(1);
         let mut words = &output[..];

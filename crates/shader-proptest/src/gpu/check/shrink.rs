@@ -19,7 +19,7 @@
 use super::batches::{generate, Mismatch};
 use super::config::{batch_runner, RunConfig};
 use super::FunctionCheck;
-use crate::gpu::compute::Dispatch;
+use crate::gpu::compute::{Dispatch, KernelRun};
 use crate::gpu::device::Error;
 use crate::gpu::phases::PhaseTimes;
 use crate::value::{Args, Value};
@@ -158,7 +158,8 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     fn run_one(&self, pipeline: &dyn Dispatch, args: &A) -> Result<R, Error> {
         let mut input = Vec::new();
         args.write(&mut input);
-        let output = pipeline.dispatch(1, &input, R::TYPE.words(), &mut PhaseTimes::default())?;
+        let run = KernelRun::per_case(1, &input, R::TYPE.words());
+        let output = pipeline.dispatch(run, &mut PhaseTimes::default())?;
         Ok(R::read(&mut &output[..]))
     }
 }
@@ -516,12 +517,8 @@ impl<A: Args, R: Value> Shrinker<'_, A, R> {
         for chunk in cases.chunks(self.batch) {
             let mut input = Vec::new();
             chunk.iter().for_each(|args| args.write(&mut input));
-            let output = self.pipeline.dispatch(
-                chunk.len(),
-                &input,
-                chunk.len() * R::TYPE.words(),
-                &mut PhaseTimes::default(),
-            )?;
+            let run = KernelRun::per_case(chunk.len(), &input, R::TYPE.words());
+            let output = self.pipeline.dispatch(run, &mut PhaseTimes::default())?;
             self.dispatches += 1;
             let mut words = &output[..];
             for args in chunk {
@@ -552,14 +549,8 @@ mod tests {
     struct FirstComponent;
 
     impl Dispatch for FirstComponent {
-        fn dispatch(
-            &self,
-            invocations: usize,
-            input: &[u32],
-            _output_words: usize,
-            _times: &mut PhaseTimes,
-        ) -> Result<Vec<u32>, Error> {
-            Ok((0..invocations).map(|case| input[3 * case]).collect())
+        fn dispatch(&self, run: KernelRun<'_>, _times: &mut PhaseTimes) -> Result<Vec<u32>, Error> {
+            Ok((0..run.invocations).map(|case| run.input[3 * case]).collect())
         }
     }
 
