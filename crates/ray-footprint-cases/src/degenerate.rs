@@ -86,6 +86,17 @@ pub fn direction_at(cos: f32) -> Vec3 {
     Vec3::new((1.0 - cos * cos).sqrt(), 0.0, -cos)
 }
 
+/// A ray head-on to the rows' normal `+Z`.
+pub const HEAD_ON: Vec3 = Vec3::NEG_Z;
+
+/// A ray in the surface plane of the rows' normal `+Z` (`dot(n, d) = 0`).
+pub const IN_PLANE: Vec3 = Vec3::X;
+
+/// A ray grazing the surface plane of the rows' normal `+Z`: `dot(n, d) = -1e-6`.
+pub fn grazing() -> Vec3 {
+    direction_at(1.0e-6)
+}
+
 /// The inverse projection of a Vulkan perspective camera (fov_y 1, aspect 1.5, near 0.1, far 100).
 pub fn vulkan_inverse_projection() -> Mat4 {
     glam::camera::rh::proj::vulkan::perspective(1.0, 1.5, 0.1, 100.0).inverse()

@@ -25,7 +25,7 @@ mod strategy;
 mod transfer;
 
 use glam::{Mat4, Vec2, Vec3};
-use ray_footprint::ray_diff::RayDiff;
+use ray_footprint::ray_diff::{GBufferSample, RayDiff};
 use ray_footprint::shaders::Module;
 
 pub use camera::*;
@@ -51,6 +51,16 @@ pub type BarycentricArgs = (RayDiff, Vec3, f32, Vec3, Vec3, Vec3);
 
 /// The arguments of the re-intersection functions (here and in the f64 module).
 pub type OffsetArgs = (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
+
+/// The arguments of `gbuffer_ray_diff`: centre, right, left, below, above, depth epsilon.
+pub type GBufferArgs = (
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    GBufferSample,
+    f32,
+);
 
 /// The arguments of `anisotropic_cone_gradients`: width, direction, the triangle, its UVs.
 pub type ConeGradientArgs = (f32, Vec3, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);

@@ -7,9 +7,8 @@
 mod enclosure;
 mod reference;
 
-use crate::ray_diff::{
-    delta_rows, offset_args, offset_rows, plane_intersection_rows, OffsetArgs, OFFSET, WELL_CONDITIONED,
-};
+use crate::ray_diff::enclosure::{determinant, well_conditioned};
+use crate::ray_diff::{delta_rows, offset_args, offset_rows, plane_intersection_rows, OffsetArgs, OFFSET};
 use crate::record::Record;
 use crate::special::Perturb;
 use crate::strategy::{triangle, unit_vec3, vec3};
@@ -43,15 +42,14 @@ fn well_conditioned_offset_args_f64() -> BoxedStrategy<OffsetArgs> {
 }
 
 /// Whether the f64 determinant of `d` against the triangle `p0 p1 p2` is known to
-/// [`WELL_CONDITIONED`].
+/// [`WELL_CONDITIONED`](crate::ray_diff::WELL_CONDITIONED).
 fn determinant_well_conditioned_f64(&(_, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3)) -> bool {
-    let k = enclosure::determinant_f64(
+    well_conditioned(determinant(
         interval3_f64(d),
         interval3_f64(p0),
         interval3_f64(p1),
         interval3_f64(p2),
-    );
-    k.relative_width() <= WELL_CONDITIONED
+    ))
 }
 
 /// The arguments of `intersect_triangle_plane_f64`: an origin, a unit or any direction and a
@@ -81,9 +79,7 @@ pub fn intersect_triangle_plane_f64() -> Record<impl Args + Perturb, impl Value>
         let b = enclosure::plane_barycentrics_f64(
             interval3_f64(o),
             interval3_f64(d),
-            interval3_f64(p0),
-            interval3_f64(p1),
-            interval3_f64(p2),
+            [p0, p1, p2].map(interval3_f64),
         );
         b.map(Interval::to_f32).components()
     })

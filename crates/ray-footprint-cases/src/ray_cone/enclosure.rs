@@ -97,9 +97,43 @@ fn refracted_angle_between(sine_gap: Interval, upper: Interval2, lower: Interval
     Interval::atan2(sin_between, cos_between)
 }
 
+/// What the two boundary rays of a transmitted cone share: the central ray's incidence and
+/// transmitted `(sin, cos)`, the boundary rays' angle to it (`half spread + tilt`), the half
+/// spread and the normal tilt as `(sin, cos)`, the cone's width and the relative index.
+struct BoundaryInputs {
+    incidence: Interval2,
+    transmitted: Interval2,
+    local: Interval2,
+    half: Interval2,
+    tilt: Interval2,
+    width: f32,
+    index: f32,
+}
+
+/// One boundary ray of a transmitted cone after refraction: its incidence, its refracted
+/// `(sin, cos)`, and its offset from the central transmitted ray.
+struct BoundaryRay {
+    incidence: Interval2,
+    refracted: Interval2,
+    offset: Interval,
+}
+
+/// The boundary ray on `side` (+1 upper, -1 lower): the steps of `refract_ray_cone` that both
+/// boundary rays take (`boundary_incidence`, `refracted_sin_cos`, `boundary_hit`,
+/// `boundary_offset`).
+fn boundary_ray(inputs: &BoundaryInputs, side: f64) -> BoundaryRay {
+    let incidence = boundary_incidence(inputs.incidence, inputs.local, side);
+    let refracted = refracted_sin_cos(incidence, inputs.index);
+    let hit = boundary_hit(inputs.width, side, inputs.incidence, inputs.half);
+    BoundaryRay {
+        incidence,
+        refracted,
+        offset: boundary_offset(hit, side, refracted, inputs.tilt, inputs.transmitted),
+    }
+}
+
 /// The transmitted cone (its clamps cover the part of `eta sin i`'s interval above 1).
 fn transmitted_cone(cone: RayCone, incidence: Interval2, facing_spread: f32, index: f32) -> Vec<Interval> {
-    let transmitted = refracted_sin_cos(incidence, index);
     let limit = (Interval::c(f64::from(MAX_INCIDENCE_ANGLE))
         - Interval::atan2(incidence.0[0], incidence.0[1]))
     .max_c(0.0);
@@ -109,20 +143,20 @@ fn transmitted_cone(cone: RayCone, incidence: Interval2, facing_spread: f32, ind
     let signed_half = if cone.width < 0.0 { -0.5 } else { 0.5 };
     let tilt = Interval::c(signed_half)
         * Interval::exact(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD));
-    let local = angle_sin_cos(half_spread + tilt);
-    let upper_incidence = boundary_incidence(incidence, local, 1.0);
-    let lower_incidence = boundary_incidence(incidence, local, -1.0);
-    let upper = refracted_sin_cos(upper_incidence, index);
-    let lower = refracted_sin_cos(lower_incidence, index);
-    let sine_gap = refracted_sine_gap(index, incidence, local, upper_incidence, lower_incidence);
-    let half = angle_sin_cos(half_spread);
-    let tilt_sin_cos = angle_sin_cos(tilt);
-    let upper_hit = boundary_hit(cone.width, 1.0, incidence, half);
-    let lower_hit = boundary_hit(cone.width, -1.0, incidence, half);
+    let inputs = BoundaryInputs {
+        incidence,
+        transmitted: refracted_sin_cos(incidence, index),
+        local: angle_sin_cos(half_spread + tilt),
+        half: angle_sin_cos(half_spread),
+        tilt: angle_sin_cos(tilt),
+        width: cone.width,
+        index,
+    };
+    let (upper, lower) = (boundary_ray(&inputs, 1.0), boundary_ray(&inputs, -1.0));
+    let sine_gap = refracted_sine_gap(index, incidence, inputs.local, upper.incidence, lower.incidence);
     vec![
-        boundary_offset(upper_hit, 1.0, upper, tilt_sin_cos, transmitted)
-            - boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted),
-        refracted_angle_between(sine_gap, upper, lower) - Interval::c(2.0) * tilt,
+        upper.offset - lower.offset,
+        refracted_angle_between(sine_gap, upper.refracted, lower.refracted) - Interval::c(2.0) * tilt,
         Interval::c(0.0),
     ]
 }

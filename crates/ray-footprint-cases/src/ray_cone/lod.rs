@@ -3,7 +3,7 @@
 use super::bound::{area_corners, clamped_cos, uv_area2_error, width_at_error, world_area2_error};
 use super::strategy::{ray_cone, triangle_with_uvs};
 use super::{reference, TextureLodArgs, MODULE};
-use crate::degenerate::{cone, direction_at, mirror, same, value, INF, NAN};
+use crate::degenerate::{cone, grazing, mirror, same, value, HEAD_ON, INF, IN_PLANE, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
 use crate::strategy::{
@@ -19,9 +19,6 @@ use shader_proptest::{Args, Value};
 /// `rf_world_footprint`.
 pub fn world_footprint() -> Record<impl Args + Perturb, impl Value> {
     let z = Vec3::Z;
-    let head_on = Vec3::NEG_Z;
-    let in_plane = Vec3::X;
-    let grazing = direction_at(1.0e-6);
     Record::new(
         MODULE,
         "world_footprint",
@@ -47,31 +44,31 @@ pub fn world_footprint() -> Record<impl Args + Perturb, impl Value> {
         value(
             "ray in the surface plane (dot(n, d) = 0)",
             "|width + spread t| / MIN_COS",
-            (cone(0.0, 0.001), 10.0, z, in_plane),
+            (cone(0.0, 0.001), 10.0, z, IN_PLANE),
             vec![(0.0f32 + 0.001 * 10.0).abs() / MIN_COS],
         ),
         same(
             "grazing (|dot(n, d)| = 1e-6)",
             "as dot(n, d) = 0",
-            (cone(0.0, 0.001), 10.0, z, grazing),
-            (cone(0.0, 0.001), 10.0, z, in_plane),
+            (cone(0.0, 0.001), 10.0, z, grazing()),
+            (cone(0.0, 0.001), 10.0, z, IN_PLANE),
         ),
         value(
             "head-on (d = -n)",
             "|width + spread t|",
-            (cone(0.0, 0.001), 10.0, z, head_on),
+            (cone(0.0, 0.001), 10.0, z, HEAD_ON),
             vec![0.001 * 10.0],
         ),
         value(
             "t = 0",
             "|width| / |dot(n, d)|",
-            (cone(-0.5, 0.001), 0.0, z, head_on),
+            (cone(-0.5, 0.001), 0.0, z, HEAD_ON),
             vec![0.5],
         ),
         mirror(
             "NaN in (t)",
             "CPU: NaN",
-            (cone(0.0, 0.001), NAN, z, head_on),
+            (cone(0.0, 0.001), NAN, z, HEAD_ON),
             vec![NAN],
         ),
     ])
@@ -261,9 +258,6 @@ pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
 /// The check of `rf_texture_lod` (also measured by the harness benchmark).
 pub fn texture_lod() -> Record<TextureLodArgs, f32> {
     let z = Vec3::Z;
-    let head_on = Vec3::NEG_Z;
-    let in_plane = Vec3::X;
-    let grazing = direction_at(1.0e-6);
     Record::new(
         MODULE,
         "texture_lod",
@@ -305,31 +299,31 @@ pub fn texture_lod() -> Record<TextureLodArgs, f32> {
         value(
             "zero width",
             "base + log2(MIN_MAGNITUDE) + 0.5 (log2 W + log2 H) - log2 |dot|",
-            (0.0, 0.0, Vec2::splat(1024.0), z, head_on),
+            (0.0, 0.0, Vec2::splat(1024.0), z, HEAD_ON),
             vec![0.0 + MIN_MAGNITUDE.log2() + 0.5 * (10.0 + 10.0) - 0.0],
         ),
         same(
             "zero texture size",
             "as a 1 x 1 texture (W, H clamped to >= 1)",
-            (0.0, 1.0, Vec2::ZERO, z, head_on),
-            (0.0, 1.0, Vec2::ONE, z, head_on),
+            (0.0, 1.0, Vec2::ZERO, z, HEAD_ON),
+            (0.0, 1.0, Vec2::ONE, z, HEAD_ON),
         ),
         value(
             "ray in the surface plane (dot(n, d) = 0)",
             "base + log2 |width| + 0.5 (log2 W + log2 H) - log2(MIN_COS)",
-            (0.0, 1.0, Vec2::ONE, z, in_plane),
+            (0.0, 1.0, Vec2::ONE, z, IN_PLANE),
             vec![-MIN_COS.log2()],
         ),
         same(
             "grazing (|dot(n, d)| = 1e-6)",
             "as dot(n, d) = 0",
-            (0.0, 1.0, Vec2::ONE, z, grazing),
-            (0.0, 1.0, Vec2::ONE, z, in_plane),
+            (0.0, 1.0, Vec2::ONE, z, grazing()),
+            (0.0, 1.0, Vec2::ONE, z, IN_PLANE),
         ),
         mirror(
             "NaN in (width)",
             "CPU: as width 0 (Rust's `max` ignores NaN)",
-            (0.0, NAN, Vec2::splat(1024.0), z, head_on),
+            (0.0, NAN, Vec2::splat(1024.0), z, HEAD_ON),
             vec![MIN_MAGNITUDE.log2() + 10.0],
         ),
     ])

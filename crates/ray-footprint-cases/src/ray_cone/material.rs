@@ -3,7 +3,7 @@
 use super::enclosure::{self, refraction_decided};
 use super::strategy::{eta, ray_cone};
 use super::{reference, RefractArgs, MODULE};
-use crate::degenerate::{cone, direction_at, same, value};
+use crate::degenerate::{cone, grazing, same, value, HEAD_ON, IN_PLANE};
 use crate::record::Record;
 use crate::strategy::{angle, normal_and_direction, one_argument, scalar};
 use glam::Vec3;
@@ -18,9 +18,6 @@ use shader_proptest::one_of;
 /// the normal's side or total internal reflection is within rounding of changing).
 pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
     let z = Vec3::Z;
-    let head_on = Vec3::NEG_Z;
-    let in_plane = Vec3::X;
-    let grazing = direction_at(1.0e-6);
     let thirty_degrees = Vec3::new(0.5, 0.0, -0.866_025_4);
     Record::new(
         MODULE,
@@ -52,7 +49,7 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
         value(
             "normal incidence, flat, no spread (eta 1.5)",
             "(width, 0), not reflected",
-            (cone(0.5, 0.0), z, head_on, 0.0, 1.5),
+            (cone(0.5, 0.0), z, HEAD_ON, 0.0, 1.5),
             vec![0.5, 0.0, 0.0],
         ),
         value(
@@ -76,14 +73,14 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
         same(
             "grazing (|dot(n, d)| = 1e-6), eta 0.5",
             "as a direction in the surface plane: both boundary rays land at |cos| = MIN_COS",
-            (cone(0.01, 0.002), z, grazing, 0.0, 0.5),
-            (cone(0.01, 0.002), z, in_plane, 0.0, 0.5),
+            (cone(0.01, 0.002), z, grazing(), 0.0, 0.5),
+            (cone(0.01, 0.002), z, IN_PLANE, 0.0, 0.5),
         ),
         same(
             "spread wider than the surface allows (3.5 at normal incidence)",
             "as spread 2 MAX_INCIDENCE_ANGLE (both boundary rays graze)",
-            (cone(0.01, 3.5), z, head_on, 0.0, 1.5),
-            (cone(0.01, 2.0 * MAX_INCIDENCE_ANGLE), z, head_on, 0.0, 1.5),
+            (cone(0.01, 3.5), z, HEAD_ON, 0.0, 1.5),
+            (cone(0.01, 2.0 * MAX_INCIDENCE_ANGLE), z, HEAD_ON, 0.0, 1.5),
         ),
         same(
             "normal spread 10",
@@ -101,7 +98,7 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
             "zero direction",
             "as normal incidence (d = -n)",
             (cone(0.5, 0.01), z, Vec3::ZERO, 0.0, 1.5),
-            (cone(0.5, 0.01), z, head_on, 0.0, 1.5),
+            (cone(0.5, 0.01), z, HEAD_ON, 0.0, 1.5),
         ),
     ])
 }

@@ -5,7 +5,7 @@ use super::bound::{
 };
 use super::strategy::{off_the_plane, ray_cone};
 use super::{reference, MODULE};
-use crate::degenerate::{cone, direction_at, mirror, same, value, Row, INF, NAN};
+use crate::degenerate::{cone, direction_at, grazing, mirror, same, value, Row, HEAD_ON, INF, IN_PLANE, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
 use crate::strategy::{angle, distance, normal_and_direction, scalar, small_vec3, triangle, vec3};
@@ -345,9 +345,6 @@ pub fn triangle_curvature() -> Record<impl Args + Perturb, impl Value> {
 /// `rf_curvature_spread_angle`.
 pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
     let z = Vec3::Z;
-    let head_on = Vec3::NEG_Z;
-    let in_plane = Vec3::X;
-    let grazing = direction_at(1.0e-6);
     Record::new(
         MODULE,
         "curvature_spread_angle",
@@ -377,20 +374,20 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
         value(
             "ray in the surface plane (dot(n, d) = +0)",
             "2 k width / MIN_COS: dn = 0 counts as the normal's side",
-            (0.5, 0.01, z, in_plane),
+            (0.5, 0.01, z, IN_PLANE),
             vec![2.0 * 0.5 * 0.01 / MIN_COS],
         ),
         same(
             "ray in the surface plane (dot(n, d) = -0)",
             "as dot(n, d) = +0: either zero gives dn = +MIN_COS",
             (0.5, 0.01, z, Vec3::new(-1.0, -0.0, -0.0)),
-            (0.5, 0.01, z, in_plane),
+            (0.5, 0.01, z, IN_PLANE),
         ),
         same(
             "grazing on the normal's side (dot(n, d) = -1e-6)",
             "as dot(n, d) = 0 (dn clamped to MIN_COS)",
-            (0.5, 0.01, z, grazing),
-            (0.5, 0.01, z, in_plane),
+            (0.5, 0.01, z, grazing()),
+            (0.5, 0.01, z, IN_PLANE),
         ),
         value(
             "grazing behind the normal (dot(n, d) = +1e-6)",
@@ -401,7 +398,7 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
         value(
             "head-on (d = -n)",
             "2 k width",
-            (0.5, 0.01, z, head_on),
+            (0.5, 0.01, z, HEAD_ON),
             vec![2.0 * 0.5 * 0.01],
         ),
         value(
@@ -413,10 +410,10 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
         value(
             "negative width (past a focus)",
             "2 k width, negative: widens the inverted cone on a convex mirror",
-            (0.5, -0.01, z, head_on),
+            (0.5, -0.01, z, HEAD_ON),
             vec![-2.0 * 0.5 * 0.01],
         ),
-        value("zero width (at a focus)", "0", (0.5, 0.0, z, head_on), vec![0.0]),
+        value("zero width (at a focus)", "0", (0.5, 0.0, z, HEAD_ON), vec![0.0]),
     ])
 }
 

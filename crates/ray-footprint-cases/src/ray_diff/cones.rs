@@ -3,7 +3,7 @@
 use super::enclosure;
 use super::strategy::{ray_diff, triangle_and_direction};
 use super::{reference, ConeGradientArgs, MODULE};
-use crate::degenerate::{direction_at, parts, same, value};
+use crate::degenerate::{grazing, parts, same, value};
 use crate::record::Record;
 use crate::strategy::{
     angle, normal_and_direction, scalar, triangle, unit_vec3, uv_triangle, vec2_of, with_corners,
@@ -91,7 +91,7 @@ pub fn anisotropic_cone_axes() -> Record<(f32, Vec3, Vec3), Derivatives3> {
         value(
             "grazing (|dot(n, d)| = 1e-6)",
             "as the ray in the surface plane (|cos| clamped to DIFF_MIN_COS)",
-            (0.5, z, direction_at(1.0e-6)),
+            (0.5, z, grazing()),
             vec![0.5 / DIFF_MIN_COS, 0.0, 0.0, 0.0, 0.5, 0.0],
         ),
         value("zero width", "zero axes", (0.0, z, -z), vec![0.0; 6]),

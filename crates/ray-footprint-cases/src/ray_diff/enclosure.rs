@@ -6,7 +6,7 @@
 //! the conditioning tests that keep a check to inputs whose enclosure says something
 //! ([`WELL_CONDITIONED`]).
 
-use super::{BarycentricArgs, Camera, ConeGradientArgs, Matrices, OffsetArgs};
+use super::{BarycentricArgs, Camera, ConeGradientArgs, GBufferArgs, Matrices, OffsetArgs};
 use glam::{Mat4, Vec2, Vec3, Vec4Swizzles};
 use ray_footprint::ray_diff::{
     Derivatives2, Derivatives3, GBufferSample, RayDiff, DIFF_MAX_FOV_Y, DIFF_MAX_SHARPNESS, DIFF_MAX_VALUE,
@@ -361,15 +361,6 @@ fn gbuffer_steps(start: GBufferSample, end: GBufferSample) -> (Interval3, Interv
     )
 }
 
-type GBufferArgs = (
-    GBufferSample,
-    GBufferSample,
-    GBufferSample,
-    GBufferSample,
-    GBufferSample,
-    f32,
-);
-
 pub(super) fn gbuffer_ray_diff(&(center, right, left, below, above, epsilon): &GBufferArgs) -> Vec<Interval> {
     let pair = |forward, backward| {
         if use_backward(center, forward, backward, epsilon) {
@@ -412,7 +403,7 @@ fn scaled_length(v: Interval3) -> Interval {
 
 /// The determinant `k = dot(cross(e1, e2), direction)` of a ray against a triangle's plane (RTG
 /// Eq. 12-20): the divisor of every barycentric quotient.
-pub(super) fn determinant(direction: Interval3, p0: Interval3, p1: Interval3, p2: Interval3) -> Interval {
+pub(crate) fn determinant(direction: Interval3, p0: Interval3, p1: Interval3, p2: Interval3) -> Interval {
     (p1 - p0).cross(p2 - p0).dot(direction)
 }
 
@@ -425,7 +416,7 @@ pub const WELL_CONDITIONED: f64 = 1.0 / 1024.0;
 
 /// Whether a quotient by `k` is well-conditioned ([`WELL_CONDITIONED`]); an exact 0 is, since both
 /// sides then take the clamp.
-pub(super) fn well_conditioned(k: Interval) -> bool {
+pub(crate) fn well_conditioned(k: Interval) -> bool {
     k.relative_width() <= WELL_CONDITIONED
 }
 
@@ -459,13 +450,33 @@ pub(super) fn intersect_triangle_plane(
     p1: Interval3,
     p2: Interval3,
 ) -> Interval3 {
+    plane_barycentrics(origin, direction, [p0, p1, p2], barycentric_quotient)
+}
+
+/// The barycentrics `(1 - u - v, u, v)` of the ray's hit on the plane of the triangle `p`, in the
+/// arithmetic of the inputs (f32, or f64 for the `ray_diff_f64` module), in the order of
+/// operations of `intersect_triangle_plane` (RTG Eq. 13): `u = dot(e2 x d, s0) / k` and
+/// `v = dot(d x e1, s0) / k`, each divided by `quotient(numerator, k)`, the module's clamped
+/// division.
+pub(crate) fn plane_barycentrics(
+    origin: Interval3,
+    direction: Interval3,
+    [p0, p1, p2]: [Interval3; 3],
+    quotient: impl Fn(Interval, Interval) -> Interval,
+) -> Interval3 {
     let e1 = p1 - p0;
     let e2 = p2 - p0;
     let s0 = origin - p0;
     let k = determinant(direction, p0, p1, p2);
-    let u = barycentric_quotient(e2.cross(direction).dot(s0), k);
-    let v = barycentric_quotient(direction.cross(e1).dot(s0), k);
-    IntervalVec([Interval::c(1.0) - u - v, u, v])
+    let u = quotient(e2.cross(direction).dot(s0), k);
+    let v = quotient(direction.cross(e1).dot(s0), k);
+    // The exact 1 in the determinant's arithmetic.
+    let one = Interval {
+        lo: 1.0,
+        hi: 1.0,
+        p: k.p,
+    };
+    IntervalVec([one - u - v, u, v])
 }
 
 /// The object-space origin and the two neighbour directions of the re-intersection.

@@ -3,33 +3,23 @@
 //! units of 2^-52) and half an f32 ULP for each conversion back to f32; and whether both f64
 //! intersections of a case are well-conditioned.
 
-use crate::ray_diff::{direction_well_conditioned, OffsetArgs, WELL_CONDITIONED};
+use crate::ray_diff::enclosure::{determinant, plane_barycentrics, well_conditioned};
+use crate::ray_diff::{direction_well_conditioned, OffsetArgs};
 use ray_footprint::ray_diff_f64::{F64_MAX_VALUE, F64_MIN_MAGNITUDE};
-use shader_proptest::interval::{interval3_f64, mat_vec, Interval, Interval3, IntervalVec, F64};
+use shader_proptest::interval::{interval3_f64, mat_vec, Interval, Interval3, F64};
 
-/// The determinant of a ray against a triangle's plane, in f64.
-pub(super) fn determinant_f64(direction: Interval3, p0: Interval3, p1: Interval3, p2: Interval3) -> Interval {
-    (p1 - p0).cross(p2 - p0).dot(direction)
-}
-
+/// The barycentrics of the ray's hit on the plane of the triangle `p`, in f64: the quotients
+/// clamped away from 0 to `F64_MIN_MAGNITUDE` and to `+-F64_MAX_VALUE`.
 pub(super) fn plane_barycentrics_f64(
     origin: Interval3,
     direction: Interval3,
-    p0: Interval3,
-    p1: Interval3,
-    p2: Interval3,
+    p: [Interval3; 3],
 ) -> Interval3 {
-    let e1 = p1 - p0;
-    let e2 = p2 - p0;
-    let s0 = origin - p0;
-    let k = determinant_f64(direction, p0, p1, p2);
-    let quotient = |n: Interval| {
-        n.div_away(k, F64_MIN_MAGNITUDE)
+    plane_barycentrics(origin, direction, p, |numerator, k| {
+        numerator
+            .div_away(k, F64_MIN_MAGNITUDE)
             .clamp_c(-F64_MAX_VALUE, F64_MAX_VALUE)
-    };
-    let u = quotient(e2.cross(direction).dot(s0));
-    let v = quotient(direction.cross(e1).dot(s0));
-    IntervalVec([Interval::exact64(1.0) - u - v, u, v])
+    })
 }
 
 /// The object-space origin and neighbour directions, in f64.
@@ -49,17 +39,17 @@ pub(super) fn offsets_well_conditioned_f64(args: &OffsetArgs) -> bool {
     let &(_, _, p0, p1, p2, _, _, _) = args;
     let (_, object_x, object_y) = object_rays_f64(args);
     let (q0, q1, q2) = (interval3_f64(p0), interval3_f64(p1), interval3_f64(p2));
-    [object_x, object_y].iter().all(|&d| {
-        direction_well_conditioned(d) && determinant_f64(d, q0, q1, q2).relative_width() <= WELL_CONDITIONED
-    })
+    [object_x, object_y]
+        .iter()
+        .all(|&d| direction_well_conditioned(d) && well_conditioned(determinant(d, q0, q1, q2)))
 }
 
 pub(super) fn barycentric_offsets_f64(args: &OffsetArgs) -> (Interval3, Interval3) {
     let &(_, _, p0, p1, p2, _, _, hit) = args;
     let (object_origin, object_x, object_y) = object_rays_f64(args);
-    let (q0, q1, q2) = (interval3_f64(p0), interval3_f64(p1), interval3_f64(p2));
+    let triangle = [p0, p1, p2].map(interval3_f64);
     let offset = |d: Interval3| {
-        (plane_barycentrics_f64(object_origin, d, q0, q1, q2) - interval3_f64(hit)).map(Interval::to_f32)
+        (plane_barycentrics_f64(object_origin, d, triangle) - interval3_f64(hit)).map(Interval::to_f32)
     };
     (offset(object_x), offset(object_y))
 }

@@ -30,8 +30,8 @@ pub(super) fn intersect_triangle_plane_f64() -> Reference<(Vec3, Vec3, Vec3, Vec
                 return None;
             }
             let got = intersect_triangle_plane_f64((o, d, p0, p1, p2));
-            let [q0, q1, q2] = [p0, p1, p2].map(interval3_f64);
-            let rounding = enclosure::plane_barycentrics_f64(interval3_f64(o), interval3_f64(d), q0, q1, q2);
+            let triangle = [p0, p1, p2].map(interval3_f64);
+            let rounding = enclosure::plane_barycentrics_f64(interval3_f64(o), interval3_f64(d), triangle);
             let bounds = widths(&rounding.map(Interval::to_f32).components());
             Some(components(got, &expected.to_array(), |i| bounds[i] + 1.0e-9 * expected.abs().max_element()))
         },

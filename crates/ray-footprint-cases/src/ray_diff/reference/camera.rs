@@ -52,7 +52,7 @@ fn pinhole() -> BoxedStrategy<Camera> {
 /// The point with camera-space `z = -1` on the ray through the continuous pixel position `at`:
 /// the pixel's NDC (y up) unprojected through the f64 inverse of the OpenGL perspective matrix
 /// times the view matrix (the inverse of the basis `right, up, view`; eye at the origin).
-fn image_plane_point(&(_, size, fov, right, up, view): &Camera, at: DVec2) -> DVec3 {
+pub(super) fn image_plane_point(&(_, size, fov, right, up, view): &Camera, at: DVec2) -> DVec3 {
     let size = size.as_dvec2();
     let camera_to_world = DMat4::from_cols(
         right.as_dvec3().extend(0.0),

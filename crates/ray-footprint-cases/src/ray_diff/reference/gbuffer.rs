@@ -2,23 +2,13 @@
 //! occluded (a depth discontinuity), its exact hits and reflections; neighbour rays intersected
 //! with the tangent plane as a 3x3 system.
 
-use super::super::enclosure;
+use super::super::{enclosure, GBufferArgs};
 use super::{components, listed, widths};
 use crate::exact::{log_uniform, tangent, towards, unit};
 use crate::reference::{Kind, Reference, U};
 use glam::{DMat3, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_diff::{Derivatives3, GBufferSample, RayDiff};
-
-/// The arguments of `gbuffer_ray_diff`: centre, right, left, below, above, depth epsilon.
-type GBufferArgs = (
-    GBufferSample,
-    GBufferSample,
-    GBufferSample,
-    GBufferSample,
-    GBufferSample,
-    f32,
-);
 
 /// A plane seen by a pinhole camera at the origin: the eye directions of a pixel and its four
 /// neighbours (right, left, below, above), the plane's unit normal, and which neighbour (if any)
