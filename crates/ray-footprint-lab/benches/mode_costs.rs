@@ -2,7 +2,7 @@
 //! ([`ray_footprint_lab::timing`]).
 //!
 //! Workloads: the quality lab's scenes ([`LabScene::all`]: the ground plane at grazing angles and
-//! under a wide view, the mirror paraboloid in its room, the mirror sphere, the glass sphere that
+//! under a wide view, the mirror paraboloid in its room (both triangulations), the mirror sphere, the glass sphere that
 //! refracts rays through up to three bounces, the rough mirror reflecting about normals drawn from
 //! its GGX lobe, the torus under the wireframe), each with its texture and view, traced by every
 //! mode's colour-only pipeline (no per-pixel records; each mode computes only what it needs) at
