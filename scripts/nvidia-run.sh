@@ -59,7 +59,7 @@ set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 PACK="$ROOT/.nvidia"
-BIN="$BIN"
+BIN="$PACK/bin"
 # Installed into / where the system has no Vulkan loader (the driver's ICD loads them from there).
 LOADER_DEBS=(libvulkan1 libglvnd0 libegl1 libgl1 libglx0 libgles2 libx11-6 libxcb1 libxau6 libxdmcp6
     libbsd0 libmd0 libffi8 libwayland-client0)
