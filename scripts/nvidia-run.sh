@@ -27,6 +27,7 @@
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh costs OUT_DIR
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh seeds OUT_DIR SEED...
 #        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh speed OUT_DIR [--batch N]
+#        SHADER_PROPTEST_DEVICE=nvidia scripts/nvidia-run.sh quality OUT_DIR 240x160 360x240
 #
 #    Both unpack the Vulkan loader and its GL/X libraries into / where the system has no loader,
 #    and the validation layer, glslangValidator and spirv-opt under /opt/gl (nothing else under
@@ -55,6 +56,8 @@
 #      rounds of a pass with an empty cache (cold) and one with the filled cache (warm); flags
 #      after OUT_DIR go to verification_speed
 #                                            -> speed-ROUND-cold.log, speed-ROUND-warm.log, speed-summary.txt
+#    `quality` runs the quality lab (every scene and method) once per image size WIDTHxHEIGHT:
+#      a goal must hold at every size        -> quality-WxH.log, quality-WxH/table.md, quality-summary.txt
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -283,6 +286,28 @@ speed() {
     } | tee "$out/speed-summary.txt"
 }
 
+# The quality lab once per image size (WIDTHxHEIGHT), each run's table kept beside its log.
+quality() {
+    local out size
+    out=$(output_dir "${1:?usage: nvidia-run.sh quality OUT_DIR WIDTHxHEIGHT...}")
+    shift
+    [ $# -gt 0 ] || { echo "usage: nvidia-run.sh quality OUT_DIR WIDTHxHEIGHT..." >&2; exit 2; }
+    prepare
+    for size in "$@"; do
+        step "quality $size" "$out/quality-$size.log" "$BIN/quality" --width "${size%x*}" --height "${size#*x}" \
+            --out "$out/quality-$size"
+        rm -rf "$out/quality-$size/truth" "$out/quality-$size/images" "$out/quality-$size/crops" \
+            "$out/quality-$size/flip"
+    done
+    {
+        printf '%s\n' "${STEPS[@]}"
+        for size in "$@"; do
+            echo "$size: $(grep -m1 '^goals (' "$out/quality-$size.log")"
+            grep -F -- '- **MISSED**' "$out/quality-$size.log"
+        done
+    } | tee "$out/quality-summary.txt"
+}
+
 # The lines that say how each step went.
 summary() {
     local out=$1
@@ -330,8 +355,9 @@ case "${1:-}" in
     costs) shift && costs "$@" ;;
     seeds) shift && seeds "$@" ;;
     speed) shift && speed "$@" ;;
+    quality) shift && quality "$@" ;;
     *)
-        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED... | speed OUT_DIR [FLAGS]" >&2
+        echo "usage: scripts/nvidia-run.sh pack | run OUT_DIR | costs OUT_DIR | seeds OUT_DIR SEED... | speed OUT_DIR [FLAGS] | quality OUT_DIR WIDTHxHEIGHT..." >&2
         exit 2
         ;;
 esac
