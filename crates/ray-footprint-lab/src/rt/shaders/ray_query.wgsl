@@ -42,7 +42,15 @@ const RT_MODE_CONE_REFRACTION: u32 = 9u;
 // rf_roughness_spread_angle of its roughness (JCGT 2021).
 const RT_MODE_CONE_ROUGHNESS: u32 = 10u;
 // textureGrad with the gradients of the cone's elliptical footprint (rf_anisotropic_cone_gradients,
-// JCGT 2021), times tex_grad_scale; reflections as Cone.
+// JCGT 2021), times tex_grad_scale; reflections as Cone. The ellipse is the round cone cut by the
+// surface at the hit, so it cannot be carried through a curved mirror: a reflection off a surface
+// whose normal curvature differs with direction (a cylinder, a saddle) gives the beam widths and
+// spreads that differ across it, about axes of their own, which the cone's two numbers (8 bytes)
+// cannot hold. Across the ray the beam is W + t S (pixel offsets to offsets, and to turns, two 2 x
+// 2 maps) and a reflection adds the shape operator's turn of W to S; following the ellipse alone,
+// (W + t S)(W + t S)^T, needs W W^T, S S^T and the whole of W S^T, 10 numbers. Either way it takes
+// 8 or 10 numbers and the frame's angle about the ray (36 to 44 bytes): a ray differential in a
+// frame of its own, against Igehy's 12 numbers (48 bytes), not a cone.
 const RT_MODE_CONE_ANISOTROPIC: u32 = 11u;
 // Ray-cone LOD as ConeCurvature, with the OptiX Toolkit's curvature estimate in place of the
 // curvature in the plane of incidence: the triangle's edge curvature of least magnitude when the
