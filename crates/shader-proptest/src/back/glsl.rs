@@ -23,7 +23,9 @@ const SPELLING: Spelling = Spelling {
     types: [
         "float", "uint", "int", "bool", "vec2", "vec3", "vec4", "mat2", "mat3", "mat4",
     ],
-    casts: ["int({})", "floatBitsToUint({})", "uint({})"],
+    int_from_bits: "int({})",
+    float_bits: "floatBitsToUint({})",
+    int_bits: "uint({})",
     bool_word: "({} ? 1u : 0u)",
     matrix_order: MatrixOrder::Columns,
 };

@@ -112,9 +112,12 @@ const VALUE_TYPES: [ShaderType; 10] = [
 pub(crate) struct Spelling {
     /// The names of the [`VALUE_TYPES`], in their order: `"float"`, `"uint"`, ... in GLSL.
     pub types: [&'static str; 10],
-    /// The bit casts: an `i32` from a `u32`, a `u32` from an `f32`, a `u32` from an `i32`
-    /// (`"int({})"`, `"floatBitsToUint({})"`, `"uint({})"` in GLSL).
-    pub casts: [&'static str; 3],
+    /// An `i32` with the bits of a `u32`: `"int({})"` in GLSL.
+    pub int_from_bits: &'static str,
+    /// A `u32` with the bits of an `f32`: `"floatBitsToUint({})"` in GLSL.
+    pub float_bits: &'static str,
+    /// A `u32` with the bits of an `i32`: `"uint({})"` in GLSL.
+    pub int_bits: &'static str,
     /// A `u32` that is 1 where a `bool` holds, else 0: `"({} ? 1u : 0u)"` in GLSL.
     pub bool_word: &'static str,
     /// How matrix constructors take their elements.
@@ -142,17 +145,17 @@ pub(crate) trait Backend: Send + Sync {
 
     /// An `i32` expression with the bits of the `u32` expression `word`.
     fn int_from_bits(&self, word: &str) -> String {
-        self.spelling().casts[0].replace("{}", word)
+        self.spelling().int_from_bits.replace("{}", word)
     }
 
     /// A `u32` expression with the bits of the `f32` expression `value`.
     fn float_bits(&self, value: &str) -> String {
-        self.spelling().casts[1].replace("{}", value)
+        self.spelling().float_bits.replace("{}", value)
     }
 
     /// A `u32` expression with the bits of the `i32` expression `value`.
     fn int_bits(&self, value: &str) -> String {
-        self.spelling().casts[2].replace("{}", value)
+        self.spelling().int_bits.replace("{}", value)
     }
 
     /// A `u32` expression that is 1 where the `bool` expression `value` holds, else 0.

@@ -25,7 +25,9 @@ pub(super) const SPELLING: Spelling = Spelling {
     types: [
         "float", "uint", "int", "bool", "float2", "float3", "float4", "float2x2", "float3x3", "float4x4",
     ],
-    casts: ["asint({})", "asuint({})", "asuint({})"],
+    int_from_bits: "asint({})",
+    float_bits: "asuint({})",
+    int_bits: "asuint({})",
     bool_word: "({} ? 1u : 0u)",
     matrix_order: MatrixOrder::Rows,
 };

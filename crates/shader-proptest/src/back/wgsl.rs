@@ -28,7 +28,9 @@ const SPELLING: Spelling = Spelling {
         "mat3x3<f32>",
         "mat4x4<f32>",
     ],
-    casts: ["bitcast<i32>({})", "bitcast<u32>({})", "bitcast<u32>({})"],
+    int_from_bits: "bitcast<i32>({})",
+    float_bits: "bitcast<u32>({})",
+    int_bits: "bitcast<u32>({})",
     bool_word: "select(0u, 1u, {})",
     matrix_order: MatrixOrder::Columns,
 };
