@@ -542,6 +542,102 @@ pub fn normal_curvature(p0: Vec3, p1: Vec3, p2: Vec3, shape_operator: Vec3, dire
     (e * a * a + 2.0 * f * a * b + g * b * b + MIN_MAGNITUDE * mean) / (a * a + b * b + MIN_MAGNITUDE)
 }
 
+/// Principal curvatures of a shape operator `II = (e, f, g)` from [`triangle_shape_operator`],
+/// the greater first: the eigenvalues of `[[e, f], [f, g]]`,
+/// `k = mean ± radius` with `mean = (e + g) / 2` and `radius = |((e - g) / 2, f)|`
+/// (do Carmo, *Differential Geometry of Curves and Surfaces*, 1976, Sec. 3-2).
+///
+/// Signed as [`normal_curvature`], whose extremes over all directions they are (Euler's theorem).
+/// Their mean `(k1 + k2) / 2` is the mean curvature, the normal curvature averaged over every
+/// direction around the normal; their product, the Gaussian curvature, is negative on a saddle.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use ray_footprint::ray_cone::principal_curvatures;
+///
+/// // A saddle bending by 1/2 one way and -1/2 the other.
+/// assert_eq!(principal_curvatures(Vec3::new(0.5, 0.0, -0.5)), Vec2::new(0.5, -0.5));
+/// // The same saddle with its frame turned by 45 degrees: only f is left.
+/// assert_eq!(principal_curvatures(Vec3::new(0.0, 0.5, 0.0)), Vec2::new(0.5, -0.5));
+/// ```
+pub fn principal_curvatures(shape_operator: Vec3) -> Vec2 {
+    let mean = 0.5 * (shape_operator.x + shape_operator.z);
+    let radius = Vec2::new(0.5 * (shape_operator.x - shape_operator.z), shape_operator.y).length();
+    Vec2::new(mean + radius, mean - radius)
+}
+
+/// Unit direction, in the world, of the greater principal curvature of a triangle's shape
+/// operator `II = (e, f, g)` ([`triangle_shape_operator`] of the same corners): the eigenvector
+/// of `[[e, f], [f, g]]` for `mean + radius` ([`principal_curvatures`]) in the triangle's frame
+/// `(u, v)`. With `h = (e - g) / 2`, the eigenvector is `(h + radius, f)` where `h >= 0` and
+/// `(f, radius - h)` where `h < 0`, the longer of the two, whose length is at least `radius`;
+/// it is turned to a non-negative `u` component, so that a direction and its opposite, the same
+/// axis, give one answer (the sign changes only across the axis `v`).
+///
+/// An umbilic (`e = g`, `f = 0`: a sphere, a plane) has every direction principal and gives
+/// `(0, 0, 0)`. The direction of the lesser curvature is the face normal crossed with this one.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::principal_direction;
+///
+/// // Corners 0, x, y: the frame is (x, y). A saddle bending most along y.
+/// let (p0, p1, p2) = (Vec3::ZERO, Vec3::X, Vec3::Y);
+/// assert_eq!(principal_direction(p0, p1, p2, Vec3::new(-0.5, 0.0, 0.5)), Vec3::Y);
+/// // A sphere: no principal direction.
+/// assert_eq!(principal_direction(p0, p1, p2, Vec3::new(0.5, 0.0, 0.5)), Vec3::ZERO);
+/// ```
+pub fn principal_direction(p0: Vec3, p1: Vec3, p2: Vec3, shape_operator: Vec3) -> Vec3 {
+    let u = shape_frame_u(p0, p1);
+    let v = shape_frame_v(u, p0, p2);
+    let half_gap = 0.5 * (shape_operator.x - shape_operator.z);
+    let f = shape_operator.y;
+    let radius = Vec2::new(half_gap, f).length();
+    let axis = if half_gap >= 0.0 {
+        Vec2::new(half_gap + radius, f)
+    } else {
+        Vec2::new(f, radius - half_gap)
+    };
+    let axis = if axis.x < 0.0 { -axis } else { axis };
+    clamped_unit(axis.x * u + axis.y * v)
+}
+
+/// The curvature an isotropic cone takes from a surface's principal curvatures (in either order,
+/// as [`principal_curvatures`] gives them): the one of lesser magnitude when both have one sign,
+/// else 0 (a saddle, or a cylinder, straight along its axis). It is the bend every direction of a
+/// round footprint shares: a round cone, widened by it through [`curvature_spread_angle`],
+/// spreads no faster than the beam does along any direction, and on a saddle, where the beam
+/// converges one way and diverges the other, it keeps the planar mirror's spread.
+///
+/// The OptiX Toolkit makes the same choice from a triangle's three edge curvatures
+/// (`minTriangleCurvature` in its `ray_cone.h`); this takes it from the fitted shape operator.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec2;
+/// use ray_footprint::ray_cone::isotropic_curvature;
+///
+/// assert_eq!(isotropic_curvature(Vec2::new(0.5, 0.25)), 0.25); // convex: the lesser
+/// assert_eq!(isotropic_curvature(Vec2::new(-0.25, -0.5)), -0.25); // concave: the lesser magnitude
+/// assert_eq!(isotropic_curvature(Vec2::new(0.5, -0.5)), 0.0); // a saddle
+/// ```
+pub fn isotropic_curvature(principal_curvatures: Vec2) -> f32 {
+    let least = principal_curvatures.min_element();
+    let most = principal_curvatures.max_element();
+    if least > 0.0 {
+        least
+    } else if most < 0.0 {
+        most
+    } else {
+        0.0
+    }
+}
+
 /// The cosine of incidence seen from the side `normal` points to, `-dot(normal, direction)`,
 /// kept at least `MIN_COS` away from 0 with its sign: positive when the ray meets the side the
 /// normal points to. A cosine of exactly 0, `+0` or `-0`, becomes `+MIN_COS`.

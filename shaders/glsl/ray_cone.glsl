@@ -217,6 +217,41 @@ float rf_normal_curvature(vec3 p0, vec3 p1, vec3 p2, vec3 shape_operator, vec3 d
         / (a * a + b * b + RF_MIN_MAGNITUDE);
 }
 
+// Principal curvatures of a shape operator (e, f, g), the greater first: the eigenvalues of
+// [[e, f], [f, g]], mean +- radius with mean = (e + g) / 2 and radius = |((e - g) / 2, f)|
+// (do Carmo 1976, Sec. 3-2). Their mean is the mean curvature, their product the Gaussian
+// curvature (negative on a saddle).
+vec2 rf_principal_curvatures(vec3 shape_operator) {
+    float mean = 0.5 * (shape_operator.x + shape_operator.z);
+    float radius = length(vec2(0.5 * (shape_operator.x - shape_operator.z), shape_operator.y));
+    return vec2(mean + radius, mean - radius);
+}
+
+// Unit direction of the greater principal curvature, in the world: the eigenvector in the frame
+// (u, v), (h + radius, f) for h = (e - g) / 2 >= 0 and (f, radius - h) for h < 0 (the longer of
+// the two), turned to a non-negative u component; (0, 0, 0) on an umbilic (e = g, f = 0: every
+// direction is principal).
+vec3 rf_principal_direction(vec3 p0, vec3 p1, vec3 p2, vec3 shape_operator) {
+    vec3 u = rf_shape_frame_u(p0, p1);
+    vec3 v = rf_shape_frame_v(u, p0, p2);
+    float half_gap = 0.5 * (shape_operator.x - shape_operator.z);
+    float f = shape_operator.y;
+    float radius = length(vec2(half_gap, f));
+    vec2 axis = half_gap >= 0.0 ? vec2(half_gap + radius, f) : vec2(f, radius - half_gap);
+    axis = axis.x < 0.0 ? -axis : axis;
+    return rf_clamped_unit(axis.x * u + axis.y * v);
+}
+
+// The curvature an isotropic cone takes from principal curvatures (either order): the one of
+// lesser magnitude when both have one sign, else 0 (a saddle, or a cylinder's straight axis). The
+// bend every direction of a round footprint shares; after the OptiX Toolkit's
+// minTriangleCurvature (ray_cone.h), which takes it from the edges.
+float rf_isotropic_curvature(vec2 principal_curvatures) {
+    float least = min(principal_curvatures.x, principal_curvatures.y);
+    float most = max(principal_curvatures.x, principal_curvatures.y);
+    return least > 0.0 ? least : (most < 0.0 ? most : 0.0);
+}
+
 // -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
 // +RF_MIN_COS. mix with a bool selector is OpSelect: no branch.
 float rf_facing_cos(vec3 normal, vec3 direction) {

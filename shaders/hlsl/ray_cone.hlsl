@@ -242,6 +242,41 @@ float rf_normal_curvature(float3 p0, float3 p1, float3 p2, float3 shape_operator
         / (a * a + b * b + RF_MIN_MAGNITUDE);
 }
 
+// Principal curvatures of a shape operator (e, f, g), the greater first: the eigenvalues of
+// [[e, f], [f, g]], mean +- radius with mean = (e + g) / 2 and radius = |((e - g) / 2, f)|
+// (do Carmo 1976, Sec. 3-2). Their mean is the mean curvature, their product the Gaussian
+// curvature (negative on a saddle).
+float2 rf_principal_curvatures(float3 shape_operator) {
+    float mean = 0.5 * (shape_operator.x + shape_operator.z);
+    float radius = length(float2(0.5 * (shape_operator.x - shape_operator.z), shape_operator.y));
+    return float2(mean + radius, mean - radius);
+}
+
+// Unit direction of the greater principal curvature, in the world: the eigenvector in the frame
+// (u, v), (h + radius, f) for h = (e - g) / 2 >= 0 and (f, radius - h) for h < 0 (the longer of
+// the two), turned to a non-negative u component; (0, 0, 0) on an umbilic (e = g, f = 0: every
+// direction is principal).
+float3 rf_principal_direction(float3 p0, float3 p1, float3 p2, float3 shape_operator) {
+    float3 u = rf_shape_frame_u(p0, p1);
+    float3 v = rf_shape_frame_v(u, p0, p2);
+    float half_gap = 0.5 * (shape_operator.x - shape_operator.z);
+    float f = shape_operator.y;
+    float radius = length(float2(half_gap, f));
+    float2 axis = half_gap >= 0.0 ? float2(half_gap + radius, f) : float2(f, radius - half_gap);
+    axis = axis.x < 0.0 ? -axis : axis;
+    return rf_clamped_unit(axis.x * u + axis.y * v);
+}
+
+// The curvature an isotropic cone takes from principal curvatures (either order): the one of
+// lesser magnitude when both have one sign, else 0 (a saddle, or a cylinder's straight axis). The
+// bend every direction of a round footprint shares; after the OptiX Toolkit's
+// minTriangleCurvature (ray_cone.h), which takes it from the edges.
+float rf_isotropic_curvature(float2 principal_curvatures) {
+    float least = min(principal_curvatures.x, principal_curvatures.y);
+    float most = max(principal_curvatures.x, principal_curvatures.y);
+    return least > 0.0 ? least : (most < 0.0 ? most : 0.0);
+}
+
 // The cosine -n.d, moved out to RF_MIN_COS when nearer 0 than that, keeping its sign (either zero
 // counts as positive). No branch: ?: on computed values is OpSelect.
 float rf_facing_cos(float3 normal, float3 direction) {

@@ -229,6 +229,41 @@ fn rf_normal_curvature(
         / (a * a + b * b + RF_MIN_MAGNITUDE);
 }
 
+// Principal curvatures of a shape operator (e, f, g), the greater first: the eigenvalues of
+// [[e, f], [f, g]], mean +- radius with mean = (e + g) / 2 and radius = |((e - g) / 2, f)|
+// (do Carmo 1976, Sec. 3-2). Their mean is the mean curvature, their product the Gaussian
+// curvature (negative on a saddle).
+fn rf_principal_curvatures(shape_operator: vec3<f32>) -> vec2<f32> {
+    let mean = 0.5 * (shape_operator.x + shape_operator.z);
+    let radius = length(vec2<f32>(0.5 * (shape_operator.x - shape_operator.z), shape_operator.y));
+    return vec2<f32>(mean + radius, mean - radius);
+}
+
+// Unit direction of the greater principal curvature, in the world: the eigenvector in the frame
+// (u, v), (h + radius, f) for h = (e - g) / 2 >= 0 and (f, radius - h) for h < 0 (the longer of
+// the two), turned to a non-negative u component; (0, 0, 0) on an umbilic (e = g, f = 0: every
+// direction is principal).
+fn rf_principal_direction(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>, shape_operator: vec3<f32>) -> vec3<f32> {
+    let u = rf_shape_frame_u(p0, p1);
+    let v = rf_shape_frame_v(u, p0, p2);
+    let half_gap = 0.5 * (shape_operator.x - shape_operator.z);
+    let f = shape_operator.y;
+    let radius = length(vec2<f32>(half_gap, f));
+    let axis = select(vec2<f32>(f, radius - half_gap), vec2<f32>(half_gap + radius, f), half_gap >= 0.0);
+    let turned = select(axis, -axis, axis.x < 0.0);
+    return rf_clamped_unit(turned.x * u + turned.y * v);
+}
+
+// The curvature an isotropic cone takes from principal curvatures (either order): the one of
+// lesser magnitude when both have one sign, else 0 (a saddle, or a cylinder's straight axis). The
+// bend every direction of a round footprint shares; after the OptiX Toolkit's
+// minTriangleCurvature (ray_cone.h), which takes it from the edges.
+fn rf_isotropic_curvature(principal_curvatures: vec2<f32>) -> f32 {
+    let least = min(principal_curvatures.x, principal_curvatures.y);
+    let most = max(principal_curvatures.x, principal_curvatures.y);
+    return select(select(0.0, most, most < 0.0), least, least > 0.0);
+}
+
 // -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
 // +RF_MIN_COS.
 fn rf_facing_cos(normal: vec3<f32>, direction: vec3<f32>) -> f32 {

@@ -262,16 +262,19 @@ pub(super) fn triangle_shape_operator(p: [Interval3; 3], n: [Interval3; 3]) -> I
     IntervalVec([e, f, g]) / determinant
 }
 
-/// Whether the determinant of `triangle_shape_operator`'s normal equations is known to
-/// [`WELL_CONDITIONED`] (a triangle that is not a sliver within rounding) and the triangle's
-/// squared edges sum above `MIN_MAGNITUDE` (edges longer than about 1e-10).
+/// Whether the determinant of `triangle_shape_operator`'s normal equations is known to be
+/// positive and known to [`WELL_CONDITIONED`] (a triangle that is not a sliver within rounding,
+/// nor exactly flat: a repeated corner gives an exact 0) and the triangle's squared edges sum
+/// above `MIN_MAGNITUDE` (edges longer than about 1e-10).
 pub(super) fn shape_well_conditioned(p: [Vec3; 3]) -> bool {
     let p = p.map(interval3);
     let ([aa, bb, ab], _) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
     let determinant = shape_determinant([aa, bb, ab]);
     let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
     let squares = edges.iter().fold(Interval::c(0.0), |sum, &e| sum + e.dot(e));
-    determinant.relative_width() <= WELL_CONDITIONED && squares.lo > f64::from(MIN_MAGNITUDE)
+    determinant.lo > 0.0
+        && determinant.relative_width() <= WELL_CONDITIONED
+        && squares.lo > f64::from(MIN_MAGNITUDE)
 }
 
 /// `rf_normal_curvature` with every argument an interval.
@@ -297,4 +300,59 @@ pub(super) fn projection_well_conditioned(p: [Vec3; 3], direction: Vec3) -> bool
     let (a, b) = (d.dot(u), d.dot(v));
     let in_plane = a.abs() * a.abs() + b.abs() * b.abs();
     shape_well_conditioned(p) && in_plane.relative_width() <= WELL_CONDITIONED
+}
+
+/// `(e - g) / 2` and the radius `|((e - g) / 2, f)|` of `principal_curvatures` and
+/// `principal_direction`.
+fn principal_half_gap_radius(shape_operator: Interval3) -> (Interval, Interval) {
+    let [e, f, g] = shape_operator.0;
+    let half_gap = Interval::c(0.5) * (e - g);
+    let radius = (half_gap.abs() * half_gap.abs() + f.abs() * f.abs()).sqrt();
+    (half_gap, radius)
+}
+
+/// `rf_principal_curvatures` of a shape operator given as intervals.
+pub(super) fn principal_curvatures(shape_operator: Interval3) -> Vec<Interval> {
+    let [e, _, g] = shape_operator.0;
+    let mean = Interval::c(0.5) * (e + g);
+    let (_, radius) = principal_half_gap_radius(shape_operator);
+    vec![mean + radius, mean - radius]
+}
+
+/// `rf_principal_direction` with every argument an interval: each branch the device or the mirror
+/// may take (the eigenvector's two forms, the turn to a non-negative `u` component) enclosed, and
+/// their hull where the intervals leave the branch open.
+pub(super) fn principal_direction(p: [Interval3; 3], shape_operator: Interval3) -> Vec<Interval> {
+    let (u, v) = shape_frame(p);
+    let f = shape_operator.0[1];
+    let (half_gap, radius) = principal_half_gap_radius(shape_operator);
+    let direction = |x: Interval, y: Interval| {
+        let world = |x: Interval, y: Interval| clamped_unit(u * x + v * y).components();
+        select(x.hi < 0.0, x.lo < 0.0, || world(-x, -y), || world(x, y))
+    };
+    select(
+        half_gap.lo >= 0.0,
+        half_gap.hi >= 0.0,
+        || direction(half_gap + radius, f),
+        || direction(f, radius - half_gap),
+    )
+}
+
+/// `rf_isotropic_curvature` of principal curvatures given as intervals: exact (a minimum, a
+/// maximum and a choice), so its width is the inputs'; where a sign is left open, the hull with
+/// the other choices.
+pub(super) fn isotropic_curvature(principal_curvatures: Interval2) -> Interval {
+    let [k1, k2] = principal_curvatures.0;
+    let (least, most) = (k1.min(k2), k1.max(k2));
+    let zero = || vec![Interval::c(0.0)];
+    let negative = || select(most.hi < 0.0, most.lo < 0.0, || vec![most], zero);
+    select(least.lo > 0.0, least.hi > 0.0, || vec![least], negative)[0]
+}
+
+/// Whether `rf_principal_direction`'s frame is known to [`WELL_CONDITIONED`] and so is the
+/// radius, the gap between the principal curvatures: away from an umbilic, where rounding turns
+/// the direction freely.
+pub(super) fn direction_well_conditioned(p: [Vec3; 3], shape_operator: Vec3) -> bool {
+    let (_, radius) = principal_half_gap_radius(interval3(shape_operator));
+    shape_well_conditioned(p) && radius.relative_width() <= WELL_CONDITIONED
 }

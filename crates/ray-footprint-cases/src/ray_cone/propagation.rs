@@ -417,10 +417,13 @@ pub fn curvature_spread_angle() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// This section's records, in the module's order; the shape operator's two, between
+/// This section's records, in the module's order; the shape operator's five, between
 /// `triangle_curvature` and `curvature_spread_angle` in the module, are declared in `shape.rs`.
 pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
-    use super::shape::{normal_curvature, triangle_shape_operator};
+    use super::shape::{
+        isotropic_curvature, normal_curvature, principal_curvatures, principal_direction,
+        triangle_shape_operator,
+    };
     records![
         width_at,
         propagate,
@@ -432,6 +435,9 @@ pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
         triangle_curvature,
         triangle_shape_operator,
         normal_curvature,
+        principal_curvatures,
+        principal_direction,
+        isotropic_curvature,
         curvature_spread_angle
     ]
 }

@@ -1,22 +1,35 @@
-//! Records of `ray_cone`: the shape operator of a triangle and its normal curvature along a
-//! direction. Both tolerances are the widths of interval enclosures (the `enclosure` submodule):
-//! a least-squares fit solved by cofactors has too many operations to bound by hand.
+//! Records of `ray_cone`: the shape operator of a triangle, its normal curvature along a
+//! direction, its principal curvatures and the direction of the greater. Every tolerance is the
+//! width of an interval enclosure (the `enclosure` submodule): a least-squares fit solved by
+//! cofactors, and an eigenvector chosen by branches, have too many operations to bound by hand.
 
-use super::enclosure::{self, projection_well_conditioned, shape_well_conditioned};
+use super::enclosure::{
+    self, direction_well_conditioned, projection_well_conditioned, shape_well_conditioned,
+};
 use super::{reference, MODULE};
 use crate::degenerate::{value, Row};
 use crate::record::Record;
 use crate::strategy::{small_vec3, triangle, unit_vec3};
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
-use shader_proptest::interval::interval3;
+use shader_proptest::draw::uniform;
+use shader_proptest::interval::{interval2, interval3};
 
 /// The arguments of `rf_triangle_shape_operator`: three corners, three normals.
 pub type ShapeOperatorArgs = (Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
 
 /// The arguments of `rf_normal_curvature`: three corners, a shape operator, a direction.
 pub type NormalCurvatureArgs = (Vec3, Vec3, Vec3, Vec3, Vec3);
+
+/// The arguments of `rf_principal_curvatures`: a shape operator.
+pub type PrincipalCurvaturesArgs = (Vec3,);
+
+/// The arguments of `rf_principal_direction`: three corners, a shape operator.
+pub type PrincipalDirectionArgs = (Vec3, Vec3, Vec3, Vec3);
+
+/// The arguments of `rf_isotropic_curvature`: two principal curvatures.
+pub type IsotropicCurvatureArgs = (Vec2,);
 
 /// Why a record leaves a triangle out of its agreement and special-value checks.
 const SLIVER: &str = "a sliver or a repeated vertex within rounding (the determinant of the normal \
@@ -169,4 +182,159 @@ fn normal_curvature_rows(along: impl Fn(Vec3) -> NormalCurvatureArgs) -> Vec<Row
             vec![0.25],
         ),
     ]
+}
+
+/// `rf_principal_curvatures`.
+pub fn principal_curvatures() -> Record<PrincipalCurvaturesArgs, Vec2> {
+    let row = |input, output, shape_operator: [f32; 3], curvatures: [f32; 2]| {
+        value(input, output, (Vec3::from(shape_operator),), curvatures.to_vec())
+    };
+    Record::new(
+        MODULE,
+        "principal_curvatures",
+        |(shape_operator,)| rc::principal_curvatures(shape_operator),
+        || small_vec3().prop_map(|shape_operator| (shape_operator,)).boxed(),
+    )
+    .enclosure(|&(shape_operator,)| enclosure::principal_curvatures(interval3(shape_operator)))
+    .reference(reference::principal_curvatures_euler())
+    .fuzz(|d| (d.vec3(),))
+    .degenerate(vec![
+        row("flat (0, 0, 0)", "(0, 0)", [0.0; 3], [0.0; 2]),
+        row(
+            "umbilic (1/2, 0, 1/2), a sphere of radius 2",
+            "(1/2, 1/2)",
+            [0.5, 0.0, 0.5],
+            [0.5, 0.5],
+        ),
+        row(
+            "cylinder (1, 0, 0), bending along u",
+            "(1, 0)",
+            [1.0, 0.0, 0.0],
+            [1.0, 0.0],
+        ),
+        row(
+            "saddle (-1/2, 0, 1/2), the greater along v",
+            "(1/2, -1/2): the greater first",
+            [-0.5, 0.0, 0.5],
+            [0.5, -0.5],
+        ),
+        row(
+            "saddle (0, 1/2, 0), principal axes at 45 degrees to the frame",
+            "(1/2, -1/2)",
+            [0.0, 0.5, 0.0],
+            [0.5, -0.5],
+        ),
+        row(
+            "saddle (3/2, 2, -3/2)",
+            "(5/2, -5/2): radius |(3/2, 2)| = 5/2",
+            [1.5, 2.0, -1.5],
+            [2.5, -2.5],
+        ),
+    ])
+}
+
+/// `rf_principal_direction`.
+pub fn principal_direction() -> Record<PrincipalDirectionArgs, Vec3> {
+    let (p0, p1, p2) = unit_corners();
+    let shaped = |shape_operator: [f32; 3]| (p0, p1, p2, Vec3::from(shape_operator));
+    Record::new(
+        MODULE,
+        "principal_direction",
+        |(p0, p1, p2, shape_operator)| rc::principal_direction(p0, p1, p2, shape_operator),
+        || {
+            (triangle(), small_vec3())
+                .prop_map(|(p, shape_operator)| (p[0], p[1], p[2], shape_operator))
+                .boxed()
+        },
+    )
+    .conditioned(
+        "a sliver within rounding, or a shape operator whose principal curvatures are equal within \
+         rounding (near an umbilic every direction is nearly principal, and rounding turns the \
+         answer freely)",
+        |&(p0, p1, p2, shape_operator)| direction_well_conditioned([p0, p1, p2], shape_operator),
+    )
+    .enclosure(|&(p0, p1, p2, shape_operator)| {
+        enclosure::principal_direction([p0, p1, p2].map(interval3), interval3(shape_operator))
+    })
+    .reference(reference::principal_direction_cylinder())
+    .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3()))
+    .degenerate(vec![
+        value(
+            "corners 0, x, y (frame (x, y)); cylinder (1, 0, 0)",
+            "x",
+            shaped([1.0, 0.0, 0.0]),
+            vec![1.0, 0.0, 0.0],
+        ),
+        value(
+            "corners 0, x, y; cylinder (0, 0, 1)",
+            "y",
+            shaped([0.0, 0.0, 1.0]),
+            vec![0.0, 1.0, 0.0],
+        ),
+        value(
+            "corners 0, x, y; inward cylinder (-1, 0, 0)",
+            "y: the greater curvature, 0, lies along the axis",
+            shaped([-1.0, 0.0, 0.0]),
+            vec![0.0, 1.0, 0.0],
+        ),
+        value(
+            "corners 0, x, y; umbilic (1/2, 0, 1/2), a sphere",
+            "(0, 0, 0): every direction is principal",
+            shaped([0.5, 0.0, 0.5]),
+            vec![0.0; 3],
+        ),
+        value(
+            "corners 0, x, y; flat (0, 0, 0)",
+            "(0, 0, 0)",
+            shaped([0.0; 3]),
+            vec![0.0; 3],
+        ),
+        value(
+            "zero-area triangle (p2 = p0, no second axis); cylinder (0, 0, 1)",
+            "(0, 0, 0): the direction lies along the missing axis",
+            (Vec3::ZERO, Vec3::X, Vec3::ZERO, Vec3::Z),
+            vec![0.0; 3],
+        ),
+    ])
+}
+
+/// `rf_isotropic_curvature`.
+pub fn isotropic_curvature() -> Record<IsotropicCurvatureArgs, f32> {
+    let row = |input, output, principal: [f32; 2], curvature: f32| {
+        value(input, output, (Vec2::from(principal),), vec![curvature])
+    };
+    Record::new(
+        MODULE,
+        "isotropic_curvature",
+        |(principal_curvatures,)| rc::isotropic_curvature(principal_curvatures),
+        || {
+            (uniform(-10.0, 10.0), uniform(-10.0, 10.0))
+                .prop_map(|(k1, k2)| (Vec2::new(k1, k2),))
+                .boxed()
+        },
+    )
+    .enclosure(|&(principal_curvatures,)| {
+        vec![enclosure::isotropic_curvature(interval2(principal_curvatures))]
+    })
+    .reference(reference::isotropic_curvature_directions())
+    .fuzz(|d| (d.vec2(),))
+    .degenerate(vec![
+        row("a sphere (1/2, 1/2)", "1/2", [0.5, 0.5], 0.5),
+        row("convex (1/4, 1/2), the lesser second", "1/4", [0.25, 0.5], 0.25),
+        row(
+            "concave (-1/4, -1/2)",
+            "-1/4: the lesser magnitude",
+            [-0.25, -0.5],
+            -0.25,
+        ),
+        row("a saddle (1/2, -1/2)", "0", [0.5, -0.5], 0.0),
+        row(
+            "a cylinder (1/2, 0)",
+            "0: straight along the axis",
+            [0.5, 0.0],
+            0.0,
+        ),
+        row("an inward cylinder (0, -1/2)", "0", [0.0, -0.5], 0.0),
+        row("flat (0, 0)", "0", [0.0, 0.0], 0.0),
+    ])
 }

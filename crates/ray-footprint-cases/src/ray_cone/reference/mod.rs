@@ -30,7 +30,10 @@ pub(super) use refraction::{
     refract_curved, refract_first_order, refract_flat, refract_index_one, refract_negated, refract_optix,
     refract_total_internal_reflection, roughness_closed_form, roughness_monotone, roughness_small,
 };
-pub(super) use shape::{normal_curvature_euler, shape_operator_linear_normals, shape_operator_quadric};
+pub(super) use shape::{
+    isotropic_curvature_directions, normal_curvature_euler, principal_curvatures_euler,
+    principal_direction_cylinder, shape_operator_linear_normals, shape_operator_quadric,
+};
 
 use glam::DVec2;
 

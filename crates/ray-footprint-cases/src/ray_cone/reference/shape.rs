@@ -10,9 +10,12 @@
 
 use super::super::enclosure;
 use super::propagation::Curved;
-use crate::ray_cone::{NormalCurvatureArgs, ShapeOperatorArgs};
+use crate::ray_cone::{
+    IsotropicCurvatureArgs, NormalCurvatureArgs, PrincipalCurvaturesArgs, PrincipalDirectionArgs,
+    ShapeOperatorArgs,
+};
 use crate::reference::{Deviation, Kind, Reference};
-use glam::{DMat3, DVec3, Vec3};
+use glam::{DMat3, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 use shader_proptest::interval::{Interval, Interval3, IntervalVec};
 
@@ -105,6 +108,104 @@ pub(in crate::ray_cone) fn normal_curvature_euler() -> Reference<NormalCurvature
             )
             .tolerance();
             Some(Deviation::within(f64::from(got), euler, f64::from(width) + offset.abs()))
+        },
+    )
+}
+
+/// The component of a cylinder's axis in the plane of the triangle's exact corners (zero on a
+/// sphere), and the plane's unit normal.
+fn axis_in_plane(curved: &Curved) -> (DVec3, DVec3) {
+    let (u, v) = exact_frame([0, 1, 2].map(|i| curved.points[i]));
+    let face = u.cross(v);
+    let axis = curved.axis.unwrap_or(DVec3::ZERO);
+    (axis - face * axis.dot(face), face)
+}
+
+/// `rf_principal_curvatures`.
+pub(in crate::ray_cone) fn principal_curvatures_euler() -> Reference<PrincipalCurvaturesArgs, Vec2> {
+    Reference::new(
+        Kind::ClosedForm,
+        "the exact shape operators of triangles of spheres and cylinders: the extremes of the normal curvature over the triangle's plane (Euler's theorem), 1 / R twice on a sphere, 1 / R and (1 - |a_t|^2) / R on a cylinder whose axis has the component a_t in the plane, times the normals' orientation, the greater first",
+        || Curved::strategy(3),
+        |curved, principal_curvatures| {
+            conditioned_corners(curved)?;
+            let [e, f, g] = exact_shape_operator(curved);
+            let shape = DVec3::new(e, f, g);
+            let got = principal_curvatures((shape.as_vec3(),));
+            let (in_plane, _) = axis_in_plane(curved);
+            let extremes = [1.0, 1.0 - in_plane.length_squared()].map(|k| k * curved.orientation / curved.radius);
+            let expected = [extremes[0].max(extremes[1]), extremes[0].min(extremes[1])];
+            let widths = enclosure::principal_curvatures(enclosing(shape));
+            let deviations = (0..2).map(|i| {
+                Deviation::within(f64::from(got[i]), expected[i], f64::from(widths[i].tolerance()))
+            });
+            Some(Deviation::worst(deviations))
+        },
+    )
+}
+
+/// `rf_principal_direction`.
+pub(in crate::ray_cone) fn principal_direction_cylinder() -> Reference<PrincipalDirectionArgs, Vec3> {
+    Reference::new(
+        Kind::ClosedForm,
+        "triangles of cylinders with their exact shape operator: the greater normal curvature lies across the axis (the plane's normal crossed with a_t, the axis's component in the plane) for outward normals, along a_t for inward ones; compared as an axis (either sign)",
+        || Curved::strategy(3),
+        |curved, principal_direction| {
+            curved.axis?;
+            let p = conditioned_corners(curved)?;
+            let [e, f, g] = exact_shape_operator(curved);
+            let shape = DVec3::new(e, f, g);
+            if !enclosure::direction_well_conditioned(p, shape.as_vec3()) {
+                return None;
+            }
+            let got = principal_direction((p[0], p[1], p[2], shape.as_vec3())).as_dvec3();
+            let (in_plane, face) = axis_in_plane(curved);
+            let axis = if curved.orientation > 0.0 { face.cross(in_plane) } else { in_plane }.normalize();
+            let expected = if got.dot(axis) < 0.0 { -axis } else { axis };
+            let widths = enclosure::principal_direction(
+                [0, 1, 2].map(|i| enclosing(curved.points[i])),
+                enclosing(shape),
+            );
+            let deviations = (0..3).map(|i| {
+                Deviation::within(got[i], expected[i], f64::from(widths[i].tolerance()))
+            });
+            Some(Deviation::worst(deviations))
+        },
+    )
+}
+
+/// Directions the normal curvature is sampled along by `isotropic_curvature_directions`: every
+/// tenth of a degree of a half turn (both principal directions among them).
+const CURVATURE_DIRECTIONS: usize = 1800;
+
+/// `rf_isotropic_curvature`.
+pub(in crate::ray_cone) fn isotropic_curvature_directions() -> Reference<IsotropicCurvatureArgs, f32> {
+    Reference::new(
+        Kind::ClosedForm,
+        "the normal curvature k1 cos^2 + k2 sin^2 (Euler's formula) sampled over 1,800 directions in f64: the sampled value of least magnitude when every sample has one sign, 0 when the samples change sign",
+        || (-10.0f64..10.0, -10.0f64..10.0).boxed(),
+        |&(k1, k2), isotropic_curvature| {
+            let principal = Vec2::new(k1 as f32, k2 as f32);
+            let got = isotropic_curvature((principal,));
+            let samples: Vec<f64> = (0..CURVATURE_DIRECTIONS)
+                .map(|i| {
+                    let angle = std::f64::consts::PI * i as f64 / CURVATURE_DIRECTIONS as f64;
+                    let (sin, cos) = angle.sin_cos();
+                    f64::from(principal.x) * cos * cos + f64::from(principal.y) * sin * sin
+                })
+                .collect();
+            let one_sign = samples.iter().all(|&k| k > 0.0) || samples.iter().all(|&k| k < 0.0);
+            let least = samples.iter().copied().fold(f64::INFINITY, |least, k| {
+                if k.abs() < least.abs() {
+                    k
+                } else {
+                    least
+                }
+            });
+            let expected = if one_sign { least } else { 0.0 };
+            // The samples along the principal directions are the inputs within f64 rounding.
+            let scale = f64::from(principal.abs().max_element());
+            Some(Deviation::within(f64::from(got), expected, 1.0e-12 * scale))
         },
     )
 }
