@@ -312,11 +312,11 @@ fn principal_half_gap_radius(shape_operator: Interval3) -> (Interval, Interval) 
 }
 
 /// `rf_principal_curvatures` of a shape operator given as intervals.
-pub(super) fn principal_curvatures(shape_operator: Interval3) -> Vec<Interval> {
+pub(super) fn principal_curvatures(shape_operator: Interval3) -> Interval2 {
     let [e, _, g] = shape_operator.0;
     let mean = Interval::c(0.5) * (e + g);
     let (_, radius) = principal_half_gap_radius(shape_operator);
-    vec![mean + radius, mean - radius]
+    IntervalVec([mean + radius, mean - radius])
 }
 
 /// `rf_principal_direction` with every argument an interval: each branch the device or the mirror

@@ -42,13 +42,12 @@ fn unit_corners() -> (Vec3, Vec3, Vec3) {
     (Vec3::ZERO, Vec3::X, Vec3::Y)
 }
 
-/// Tolerance of `rf_normal_curvature(p, rf_triangle_shape_operator(p, n), direction)`, a hit's
-/// signed curvature in its plane of incidence, against the mirror: the width of the two enclosures
-/// chained.
-pub fn hit_curvature_error(p: [Vec3; 3], n: [Vec3; 3], direction: Vec3) -> f32 {
-    let p = p.map(interval3);
-    let shape_operator = enclosure::triangle_shape_operator(p, n.map(interval3));
-    enclosure::normal_curvature(p, shape_operator, interval3(direction)).tolerance()
+/// Tolerance of `rf_isotropic_curvature(rf_principal_curvatures(rf_triangle_shape_operator(p,
+/// n)))`, the curvature a hit gives an isotropic cone, against the mirror: the width of the three
+/// enclosures chained.
+pub fn hit_curvature_error(p: [Vec3; 3], n: [Vec3; 3]) -> f32 {
+    let shape_operator = enclosure::triangle_shape_operator(p.map(interval3), n.map(interval3));
+    enclosure::isotropic_curvature(enclosure::principal_curvatures(shape_operator)).tolerance()
 }
 
 /// `rf_triangle_shape_operator`.
@@ -195,7 +194,7 @@ pub fn principal_curvatures() -> Record<PrincipalCurvaturesArgs, Vec2> {
         |(shape_operator,)| rc::principal_curvatures(shape_operator),
         || small_vec3().prop_map(|shape_operator| (shape_operator,)).boxed(),
     )
-    .enclosure(|&(shape_operator,)| enclosure::principal_curvatures(interval3(shape_operator)))
+    .enclosure(|&(shape_operator,)| enclosure::principal_curvatures(interval3(shape_operator)).components())
     .reference(reference::principal_curvatures_euler())
     .fuzz(|d| (d.vec3(),))
     .degenerate(vec![

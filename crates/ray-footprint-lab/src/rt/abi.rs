@@ -114,8 +114,8 @@ pub struct RtPixelRecord {
     pub lod: f32,
     /// `rf_texture_gradient(footprint * texel_density, tex_grad_scale)`.
     pub gradient: f32,
-    /// `rf_normal_curvature` along the ray's direction of `rf_triangle_shape_operator` from the
-    /// vertex normals: the signed curvature in the plane of incidence.
+    /// `rf_isotropic_curvature(rf_principal_curvatures(rf_triangle_shape_operator(...)))` of the
+    /// vertex normals: the curvature the triangle gives an isotropic cone.
     pub curvature: f32,
     /// `rf_curvature_spread_angle(curvature, width, normal, direction)`.
     pub curvature_spread: f32,

@@ -21,8 +21,10 @@ pub enum Mode {
     Mip0 = 0,
     /// Isotropic ray-cone LOD (RTG Eq. 34); reflections treat the sphere as a planar mirror.
     Cone = 1,
-    /// Ray-cone LOD; reflections widen (or narrow) the cone by the triangle's signed normal
-    /// curvature in the plane of incidence (JCGT 2021's spread; Rusinkiewicz 2004's shape operator).
+    /// Ray-cone LOD; reflections widen (or narrow) the cone by the curvature the triangle's
+    /// principal curvatures agree on (`rf_isotropic_curvature` of the shape operator fitted to its
+    /// vertex normals, Rusinkiewicz 2004; JCGT 2021's spread): the lesser in magnitude when both
+    /// have one sign, 0 on a saddle, where the beam converges one way and diverges the other.
     ConeCurvature = 2,
     /// `textureGrad` with the ray-cone gradient times `tex_grad_scale` (0: mip 0, 1: matching, >1: blurred).
     TexGradScale = 3,
@@ -49,7 +51,7 @@ pub enum Mode {
     ConeRoughness = 10,
     /// `textureGrad` with the gradients of the cone's elliptical footprint
     /// (`rf_anisotropic_cone_gradients`, JCGT 2021), times `tex_grad_scale`; reflections as
-    /// `Cone`. The ellipse is the round cone cut by the surface at the hit, so it cannot be
+    /// `ConeCurvature`. The ellipse is the round cone cut by the surface at the hit, so it cannot be
     /// carried through a curved mirror: a reflection off a surface whose normal curvature differs
     /// with direction (a cylinder, a saddle) gives the beam widths and spreads that differ across
     /// it, about axes of their own, which the cone's two numbers (8 bytes) cannot hold. Across the
@@ -60,7 +62,7 @@ pub enum Mode {
     /// differential in a frame of its own, against Igehy's 12 numbers (48 bytes), not a cone.
     ConeAnisotropic = 11,
     /// Ray-cone LOD as `ConeCurvature`, with the OptiX Toolkit's curvature estimate in place of the
-    /// curvature in the plane of incidence: the triangle's edge curvature of least magnitude when
+    /// fitted shape operator's: the triangle's edge curvature of least magnitude when
     /// the three agree in sign, 0 when they do not (its `ray_cone.h`, `minTriangleCurvature`).
     ConeMinCurvature = 12,
 }

@@ -850,11 +850,11 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let gradient = rc::texture_gradient(r.footprint * r.texel_density, push.cone.tex_grad_scale);
     stats.compare("gradient", r.gradient, gradient, f32::MIN_POSITIVE, r);
 
-    // The signed curvature in the plane of incidence: normal_curvature along the ray of
-    // triangle_shape_operator, within the two enclosures chained.
+    // The curvature an isotropic cone takes: isotropic_curvature of the principal curvatures of
+    // triangle_shape_operator, within the three enclosures chained.
     let shape_operator = rc::triangle_shape_operator(p[0], p[1], p[2], normals[0], normals[1], normals[2]);
-    let curvature = rc::normal_curvature(p[0], p[1], p[2], shape_operator, d);
-    let curvature_error = hit_curvature_error(p, normals, d);
+    let curvature = rc::isotropic_curvature(rc::principal_curvatures(shape_operator));
+    let curvature_error = hit_curvature_error(p, normals);
     stats.compare("curvature", r.curvature, curvature, curvature_error, r);
 
     // curvature_spread_angle: the suite's own tolerance, on the shader's curvature, width and

@@ -137,7 +137,7 @@ pub(in crate::ray_cone) fn principal_curvatures_euler() -> Reference<PrincipalCu
             let expected = [extremes[0].max(extremes[1]), extremes[0].min(extremes[1])];
             let widths = enclosure::principal_curvatures(enclosing(shape));
             let deviations = (0..2).map(|i| {
-                Deviation::within(f64::from(got[i]), expected[i], f64::from(widths[i].tolerance()))
+                Deviation::within(f64::from(got[i]), expected[i], f64::from(widths.0[i].tolerance()))
             });
             Some(Deviation::worst(deviations))
         },

@@ -15,8 +15,10 @@
 const RT_MODE_MIP0: u32 = 0u;
 // Isotropic ray-cone LOD (RTG Eq. 34); reflections treat the sphere as a planar mirror.
 const RT_MODE_CONE: u32 = 1u;
-// Ray-cone LOD; reflections widen (or narrow) the cone by the triangle's signed normal curvature in
-// the plane of incidence (JCGT 2021's spread; Rusinkiewicz 2004's shape operator).
+// Ray-cone LOD; reflections widen (or narrow) the cone by the curvature the triangle's principal
+// curvatures agree on (rf_isotropic_curvature of the shape operator fitted to its vertex normals,
+// Rusinkiewicz 2004; JCGT 2021's spread): the lesser in magnitude when both have one sign, 0 on a
+// saddle, where the beam converges one way and diverges the other.
 const RT_MODE_CONE_CURVATURE: u32 = 2u;
 // textureGrad with the ray-cone gradient times tex_grad_scale (0: mip 0, 1: matching, >1: blurred).
 const RT_MODE_TEX_GRAD_SCALE: u32 = 3u;
@@ -42,19 +44,19 @@ const RT_MODE_CONE_REFRACTION: u32 = 9u;
 // rf_roughness_spread_angle of its roughness (JCGT 2021).
 const RT_MODE_CONE_ROUGHNESS: u32 = 10u;
 // textureGrad with the gradients of the cone's elliptical footprint (rf_anisotropic_cone_gradients,
-// JCGT 2021), times tex_grad_scale; reflections as Cone. The ellipse is the round cone cut by the
-// surface at the hit, so it cannot be carried through a curved mirror: a reflection off a surface
-// whose normal curvature differs with direction (a cylinder, a saddle) gives the beam widths and
-// spreads that differ across it, about axes of their own, which the cone's two numbers (8 bytes)
-// cannot hold. Across the ray the beam is W + t S (pixel offsets to offsets, and to turns, two 2 x
-// 2 maps) and a reflection adds the shape operator's turn of W to S; following the ellipse alone,
-// (W + t S)(W + t S)^T, needs W W^T, S S^T and the whole of W S^T, 10 numbers. Either way it takes
-// 8 or 10 numbers and the frame's angle about the ray (36 to 44 bytes): a ray differential in a
-// frame of its own, against Igehy's 12 numbers (48 bytes), not a cone.
+// JCGT 2021), times tex_grad_scale; reflections as ConeCurvature. The ellipse is the round cone cut
+// by the surface at the hit, so it cannot be carried through a curved mirror: a reflection off a
+// surface whose normal curvature differs with direction (a cylinder, a saddle) gives the beam
+// widths and spreads that differ across it, about axes of their own, which the cone's two numbers
+// (8 bytes) cannot hold. Across the ray the beam is W + t S (pixel offsets to offsets, and to
+// turns, two 2 x 2 maps) and a reflection adds the shape operator's turn of W to S; following the
+// ellipse alone, (W + t S)(W + t S)^T, needs W W^T, S S^T and the whole of W S^T, 10 numbers.
+// Either way it takes 8 or 10 numbers and the frame's angle about the ray (36 to 44 bytes): a ray
+// differential in a frame of its own, against Igehy's 12 numbers (48 bytes), not a cone.
 const RT_MODE_CONE_ANISOTROPIC: u32 = 11u;
-// Ray-cone LOD as ConeCurvature, with the OptiX Toolkit's curvature estimate in place of the
-// curvature in the plane of incidence: the triangle's edge curvature of least magnitude when the
-// three agree in sign, 0 when they do not (its ray_cone.h, minTriangleCurvature).
+// Ray-cone LOD as ConeCurvature, with the OptiX Toolkit's curvature estimate in place of the fitted
+// shape operator's: the triangle's edge curvature of least magnitude when the three agree in sign,
+// 0 when they do not (its ray_cone.h, minTriangleCurvature).
 const RT_MODE_CONE_MIN_CURVATURE: u32 = 12u;
 
 // The material id (Material::id) of Material::Textured.
@@ -209,8 +211,8 @@ struct RtPixelRecord {
     lod: f32,
     // rf_texture_gradient(footprint * texel_density, tex_grad_scale).
     gradient: f32,
-    // rf_normal_curvature along the ray's direction of rf_triangle_shape_operator from the vertex
-    // normals: the signed curvature in the plane of incidence.
+    // rf_isotropic_curvature(rf_principal_curvatures(rf_triangle_shape_operator(...))) of the
+    // vertex normals: the curvature the triangle gives an isotropic cone.
     curvature: f32,
     // rf_curvature_spread_angle(curvature, width, normal, direction).
     curvature_spread: f32,

@@ -156,13 +156,13 @@ float rt_cone_gradient(RtHit hit, RfRayCone cone) {
     return rf_texture_gradient(rt_footprint(hit, cone) * density, pc.cone.tex_grad_scale);
 }
 
-// The hit triangle's normal curvature in the plane of incidence, with its sign: the shape operator
-// fitted to its vertex normals (Rusinkiewicz 2004, Sec. 3) along the ray's direction projected into
-// its plane (on a saddle, positive one way and negative the other).
+// The curvature the hit triangle gives an isotropic cone: the principal curvatures of the shape
+// operator fitted to its vertex normals (Rusinkiewicz 2004, Sec. 3), the lesser in magnitude when
+// they agree in sign, 0 on a saddle (rf_isotropic_curvature).
 float rt_curvature(RtHit hit) {
     RtTriangle tri = hit.tri;
     vec3 shape_operator = rf_triangle_shape_operator(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
-    return rf_normal_curvature(tri.p[0], tri.p[1], tri.p[2], shape_operator, hit.direction);
+    return rf_isotropic_curvature(rf_principal_curvatures(shape_operator));
 }
 
 // The OptiX Toolkit's estimate of the hit triangle's curvature (ray_cone.h, minTriangleCurvature):
@@ -184,7 +184,7 @@ float rt_least_edge_curvature(RtHit hit) {
 }
 
 // The curvature a reflection or refraction in `mode` takes: the least edge curvature in
-// RT_MODE_CONE_MIN_CURVATURE, the curvature in the plane of incidence in the others.
+// RT_MODE_CONE_MIN_CURVATURE, the fitted shape operator's isotropic curvature in the others.
 float rt_mode_curvature(uint mode, RtHit hit) {
     return mode == RT_MODE_CONE_MIN_CURVATURE ? rt_least_edge_curvature(hit) : rt_curvature(hit);
 }
@@ -203,7 +203,7 @@ float rt_roughness_spread(RtHit hit) {
 // Whether `mode` widens reflected (and refracted) cones by the surface's curvature.
 bool rt_follows_curvature(uint mode) {
     return mode == RT_MODE_CONE_CURVATURE || mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_CONE_ROUGHNESS
-        || mode == RT_MODE_CONE_MIN_CURVATURE;
+        || mode == RT_MODE_CONE_MIN_CURVATURE || mode == RT_MODE_CONE_ANISOTROPIC;
 }
 
 // The spread angle a reflection off the hit adds to `cone` in `mode`: the curvature's (JCGT 2021)
