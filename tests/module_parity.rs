@@ -232,11 +232,26 @@ fn calls<'a>(line: &'a str, name: &str) -> impl Iterator<Item = &'a str> {
         .map(move |at| &line[at + skip..])
 }
 
-/// Whether a call's arguments (the text after its `(`) are one number or one `RF_` constant (each
-/// of them a scalar).
+/// Whether a call's arguments (the text after its `(`, up to the `)` that closes it) are one
+/// argument that starts as a scalar does: a number or an `RF_` constant.
 fn is_scalar_argument(arguments: &str) -> bool {
-    let argument = arguments.split(')').next().unwrap_or_default().trim();
-    !argument.contains(',')
+    let mut depth = 0usize;
+    let mut end = arguments.len();
+    let mut several = false;
+    for (at, c) in arguments.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' if depth == 0 => {
+                end = at;
+                break;
+            }
+            ')' => depth -= 1,
+            ',' if depth == 0 => several = true,
+            _ => {}
+        }
+    }
+    let argument = arguments[..end].trim();
+    !several
         && (argument.starts_with("RF_") || argument.starts_with(|c: char| c.is_ascii_digit() || c == '-'))
 }
 
