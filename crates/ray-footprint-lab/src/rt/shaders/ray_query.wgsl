@@ -317,7 +317,7 @@ fn rt_measure(tri: RtTriangle, material: u32, parameter: f32, barycentrics: vec2
     let lod = rf_texture_lod(base_lod, width, vec2<f32>(pc.texture_size), normal, direction);
     let gradient = rf_texture_gradient(footprint * density, pc.cone.tex_grad_scale);
     let shape_operator = rf_triangle_shape_operator(tri.p[0], tri.p[1], tri.p[2], tri.n[0], tri.n[1], tri.n[2]);
-    let curvature = rf_normal_curvature(tri.p[0], tri.p[1], tri.p[2], shape_operator, direction);
+    let curvature = rf_isotropic_curvature(rf_principal_curvatures(shape_operator));
     let spread = rf_curvature_spread_angle(curvature, width, normal, direction);
     let roughness_spread = select(0.0, rf_roughness_spread_angle(parameter), material == RT_MATERIAL_MIRROR);
     var record = RtPixelRecord();
