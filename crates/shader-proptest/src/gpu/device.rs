@@ -14,7 +14,7 @@ pub const DEVICE_ENV: &str = "SHADER_PROPTEST_DEVICE";
 const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
 
 /// Everything that can keep a check or a program from running on the device.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub enum Error {
     /// No usable Vulkan loader, layer, device or device feature; the message says what is missing.
     Setup(String),

@@ -122,6 +122,12 @@ impl PhaseTimes {
         *clock = now;
     }
 
+    /// One of `parts` equal shares of every phase's time (for work done once for several
+    /// checks). `parts` is at least 1.
+    pub(crate) fn shared(&self, parts: u32) -> PhaseTimes {
+        PhaseTimes(self.0.map(|time| time / parts.max(1)))
+    }
+
     /// The time of every work phase, the waits left out.
     pub fn work(&self) -> Duration {
         Phase::ALL
@@ -157,6 +163,18 @@ mod tests {
             }
             assert_eq!(times.get(phase), Duration::from_nanos(7));
         }
+    }
+
+    /// Shares of a time add up to it, to within a nanosecond per share.
+    #[test]
+    fn shares_add_up_to_the_whole() {
+        let mut times = PhaseTimes::default();
+        times.add(Phase::Generation, Duration::from_nanos(1_000_003));
+        let share = times.shared(5);
+        assert_eq!(share.get(Phase::Generation), Duration::from_nanos(200_000));
+        let whole = share.get(Phase::Generation) * 5;
+        assert!(times.get(Phase::Generation) - whole < Duration::from_nanos(5));
+        assert!(share.get(Phase::Mirror).is_zero());
     }
 
     /// A lap adds the time since the clock to its phase and restarts the clock there.

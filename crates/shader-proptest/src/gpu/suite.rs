@@ -1,25 +1,30 @@
-//! Many checks in a row, the next ones prepared while one runs.
+//! Many checks in a row, the next ones prepared while one runs, and the cases of a function
+//! generated once for all its shaders.
 //!
 //! Before its first case a check compares layouts, compiles its kernel (glslang and slangc are
 //! processes of their own) and has the driver make a pipeline: on an NVIDIA H100 about 0.3 s per
 //! check, where its 100,000 cases take a few milliseconds. [`run_checks`] does that part on
-//! threads of its own, ahead of the check that runs, and runs the cases one check at a time, in
-//! order, as [`Check::run`] would.
+//! threads of its own, ahead of the check that runs. Neighbouring entries of one check (the same
+//! function in several languages) run together, each batch generated once and run on each of
+//! their shaders ([`Check::run_prepared`]); the groups run one at a time, in order.
 
 use super::check::{Check, PreparedCheck, Report, RunConfig};
 use super::device::{Error, Gpu};
 use super::phases::Phase;
 use crate::shader::Shader;
 use std::collections::BTreeMap;
+use std::ops::Range;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::sync_channel;
 use std::time::{Duration, Instant};
 
 /// Runs every check of `checks` on its shader, as [`Check::run`] does, and hands each result to
-/// `each` in the order of `checks`. `preparers` threads prepare the checks ([`Check::prepare`])
-/// at most `preparers` checks ahead of the one running; 0 is [`Error::Config`]. The time the
-/// running thread waited for a check to be prepared is in its report's
-/// [`Phase::WaitForPreparation`].
+/// `each` in the order of `checks`. Every check runs with one seed, `config`'s (a fresh one if it
+/// has none, printed in every report), so that neighbouring entries of the same check run the
+/// same cases, generated once. `preparers` threads prepare the checks ([`Check::prepare`]) at most
+/// `preparers` checks ahead of the one running; 0 is [`Error::Config`], as is a `config` that
+/// [`RunConfig::validate`] refuses. The time the running thread waited for a group's checks to be
+/// prepared is shared among their reports' [`Phase::WaitForPreparation`].
 pub fn run_checks(
     gpu: &Gpu,
     checks: &[(&dyn Check, Shader)],
@@ -34,6 +39,11 @@ pub fn run_checks(
             expected: "at least 1",
         });
     }
+    let config = RunConfig {
+        seed: Some(config.validate()?),
+        ..*config
+    };
+    let groups = neighbours(checks);
     let next = AtomicUsize::new(0);
     let (sender, receiver) = sync_channel::<(usize, Result<PreparedCheck<'_>, Error>)>(preparers);
     std::thread::scope(|scope| {
@@ -52,10 +62,10 @@ pub fn run_checks(
             });
         }
         drop(sender);
-        // Checks prepared out of order wait here until those before them have run.
+        // Checks prepared out of order wait here until their group is complete and those before
+        // it have run.
         let mut waiting = BTreeMap::new();
-        let mut due = 0;
-        // The time spent waiting for the due check, added to its report.
+        let mut groups = groups.into_iter().peekable();
         let mut waited = Duration::ZERO;
         loop {
             let receiving = Instant::now();
@@ -64,20 +74,57 @@ pub fn run_checks(
             };
             waited += receiving.elapsed();
             waiting.insert(index, prepared);
-            while let Some(prepared) = waiting.remove(&due) {
-                let check = checks[due].0;
-                let result = prepared.and_then(|prepared| check.run_prepared(prepared, config));
-                each(
-                    due,
-                    result.map(|mut report| {
-                        let wait = std::mem::take(&mut waited);
-                        report.phases.add(Phase::WaitForPreparation, wait);
-                        report
-                    }),
-                );
-                due += 1;
+            while let Some(group) = groups.next_if(|group| group.clone().all(|i| waiting.contains_key(&i))) {
+                let prepared: Vec<_> = group
+                    .clone()
+                    .map(|i| waiting.remove(&i).expect("prepared"))
+                    .collect();
+                let wait = std::mem::take(&mut waited) / group.len() as u32;
+                let results = run_group(checks[group.start].0, prepared, &config);
+                for (index, result) in group.zip(results) {
+                    each(
+                        index,
+                        result.map(|mut report| {
+                            report.phases.add(Phase::WaitForPreparation, wait);
+                            report
+                        }),
+                    );
+                }
             }
         }
     });
     Ok(())
+}
+
+/// The runs of neighbouring entries of `checks` that hold the same check, in order.
+fn neighbours(checks: &[(&dyn Check, Shader)]) -> Vec<Range<usize>> {
+    let mut groups: Vec<Range<usize>> = Vec::new();
+    for (index, (check, _)) in checks.iter().enumerate() {
+        match groups.last_mut() {
+            Some(group) if std::ptr::addr_eq(checks[group.start].0, *check) => group.end = index + 1,
+            _ => groups.push(index..index + 1),
+        }
+    }
+    groups
+}
+
+/// Runs a group's prepared checks together; a check whose preparation failed gets its error.
+fn run_group(
+    check: &dyn Check,
+    prepared: Vec<Result<PreparedCheck<'_>, Error>>,
+    config: &RunConfig,
+) -> Vec<Result<Report, Error>> {
+    let mut ready = Vec::new();
+    let errors: Vec<Option<Error>> = prepared
+        .into_iter()
+        .map(|result| result.map(|check| ready.push(check)).err())
+        .collect();
+    let mut reports = check.run_prepared(ready, config).into_iter();
+    errors
+        .into_iter()
+        .map(|error| match error {
+            Some(e) => Err(e),
+            None => reports.next().expect("a report per prepared check"),
+        })
+        .collect()
 }

@@ -117,7 +117,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         config: &RunConfig,
     ) -> Result<Report, Error> {
         let prepared = self.prepare_wgpu(device, shader)?;
-        self.run_prepared(prepared, config)
+        self.run_prepared_one(prepared, config)
     }
 
     /// [`FunctionCheck::prepare`] through wgpu: layouts, signature, naga's compilation, then wgpu's

@@ -2,7 +2,8 @@
 //!
 //! A check generates each batch of cases from its own seed with a proptest strategy, on as many
 //! threads as the machine has, while the device runs the previous batch: one dispatch of a
-//! generated kernel per batch ([`batches`]). Every output component is compared with the mirror's
+//! generated kernel per batch and shader, each batch generated once however many shaders (the
+//! function in several languages) it runs on ([`batches`]). Every output component is compared with the mirror's
 //! within the check's [`Tolerance`]; for finite inputs both outputs must be finite too
 //! ([`judge`]). A failing case is shrunk through the random words its strategy drew, many
 //! candidates per dispatch ([`shrink`]), and reported with its inputs, both outputs, the
@@ -27,7 +28,7 @@ use crate::shader::Shader;
 use crate::signature::Call;
 use crate::tolerance::Tolerance;
 use crate::value::{Args, Value};
-use batches::{generate, Generator, Stats, MAX_REJECTIONS};
+use batches::{generate, Generator, Lane, Stats, MAX_REJECTIONS};
 use proptest::prelude::any;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
 use proptest::test_runner::{RngAlgorithm, TestRng};
@@ -40,7 +41,8 @@ pub trait Check: Send + Sync {
     fn function(&self) -> &str;
     /// The source of the kernel that runs the function of `shader`.
     fn kernel(&self, shader: &Shader) -> String;
-    /// Runs the check on the function of `shader`: [`Check::prepare`], then [`Check::run_prepared`].
+    /// Runs the check on the function of `shader`: [`Check::prepare`], then [`Check::run_prepared`]
+    /// with that one.
     /// `Err`: the harness could not run (device, compiler, validation layer); a disagreement is a
     /// [`Report`] whose outcome is [`Outcome::Failed`].
     fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error>;
@@ -49,8 +51,14 @@ pub trait Check: Send + Sync {
     /// ([`Error::Signature`]), and the pipeline. Thread-safe, so that a suite can prepare the next
     /// checks while one runs ([`crate::run_checks`]).
     fn prepare<'g>(&self, gpu: &'g Gpu, shader: &Shader) -> Result<PreparedCheck<'g>, Error>;
-    /// Runs the cases of a check that [`Check::prepare`] made ready.
-    fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error>;
+    /// Runs the cases on checks that [`Check::prepare`] made ready, for one shader or several (the
+    /// function in several languages): each batch is generated once and runs on every one of them,
+    /// so that they all see the same cases. One result per prepared check, in their order.
+    fn run_prepared(
+        &self,
+        prepared: Vec<PreparedCheck<'_>>,
+        config: &RunConfig,
+    ) -> Vec<Result<Report, Error>>;
 }
 
 /// A check made ready to run on one shader ([`Check::prepare`]): the kernel's source and its
@@ -238,7 +246,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// Runs the check on the function of `shader` (see [`Check::run`]).
     pub fn run(&self, gpu: &Gpu, shader: &Shader, config: &RunConfig) -> Result<Report, Error> {
         let prepared = self.prepare(gpu, shader)?;
-        self.run_prepared(prepared, config)
+        self.run_prepared_one(prepared, config)
     }
 
     /// Compares the layouts, compiles the kernel, compares the signature and makes the pipeline
@@ -266,43 +274,84 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         ))
     }
 
-    /// Runs the cases on a prepared check (see [`Check::run_prepared`]). The report's time
-    /// includes the preparation's.
-    pub fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error> {
+    /// Runs the cases on prepared checks, each batch once for all of them (see
+    /// [`Check::run_prepared`]). Each report's time includes its preparation's and the whole run's.
+    pub fn run_prepared(
+        &self,
+        prepared: Vec<PreparedCheck<'_>>,
+        config: &RunConfig,
+    ) -> Vec<Result<Report, Error>> {
         let started = Instant::now();
-        let seed = config.validate()?;
-        let (mut stats, outcome) = match prepared.pipeline {
-            Err(reason) => (Stats::default(), Outcome::NotRun(reason)),
-            Ok(pipeline) => self.run_cases(pipeline.as_ref(), config, seed, prepared.kernel)?,
+        let seed = match config.validate() {
+            Ok(seed) => seed,
+            Err(e) => return prepared.iter().map(|_| Err(e.clone())).collect(),
         };
-        stats.times += prepared.times;
-        Ok(Report::new(
-            self.function.clone(),
-            prepared.language,
-            prepared.device,
-            seed,
-            &stats,
-            outcome,
-            prepared.elapsed + started.elapsed(),
-        ))
+        let mut lanes: Vec<Lane<'_>> = prepared
+            .iter()
+            .filter_map(|check| check.pipeline.as_ref().ok())
+            .map(|pipeline| Lane::new(pipeline.as_ref()))
+            .collect();
+        let generation = self.run_batches(&mut lanes, config, seed);
+        let mut lanes = lanes.into_iter();
+        prepared
+            .iter()
+            .map(|check| {
+                let (mut stats, outcome) = match &check.pipeline {
+                    Err(reason) => (Stats::default(), Outcome::NotRun(reason.clone())),
+                    Ok(_) => {
+                        let lane = lanes.next().expect("a lane per pipeline");
+                        generation.as_ref().map_err(Error::clone)?;
+                        self.judge_lane(lane, config, seed, &check.kernel)?
+                    }
+                };
+                stats.times += check.times;
+                Ok(Report::new(
+                    self.function.clone(),
+                    check.language,
+                    check.device.clone(),
+                    seed,
+                    &stats,
+                    outcome,
+                    check.elapsed + started.elapsed(),
+                ))
+            })
+            .collect()
     }
 
-    /// Runs the batches on `pipeline` and shrinks the first disagreement, if any.
-    fn run_cases(
+    /// [`FunctionCheck::run_prepared`] on one prepared check.
+    pub(in crate::gpu) fn run_prepared_one(
         &self,
-        pipeline: &dyn Dispatch,
+        prepared: PreparedCheck<'_>,
+        config: &RunConfig,
+    ) -> Result<Report, Error> {
+        let mut reports = self.run_prepared(vec![prepared], config);
+        reports.pop().expect("one report per prepared check")
+    }
+
+    /// The outcome of a lane whose batches have run: its error, or the shrunk first disagreement,
+    /// or passed.
+    fn judge_lane(
+        &self,
+        lane: Lane<'_>,
         config: &RunConfig,
         seed: u64,
-        kernel: String,
+        kernel: &str,
     ) -> Result<(Stats, Outcome), Error> {
-        let mut stats = Stats::default();
-        let outcome = match self.run_batches(pipeline, config, seed, &mut stats)? {
+        let mut stats = lane.stats;
+        if let Some(e) = lane.error {
+            return Err(e);
+        }
+        let outcome = match lane.first {
             None => Outcome::Passed,
             Some(mismatch) => {
                 let shrinking = Instant::now();
-                let shrunk = self.shrink(pipeline, config, seed, mismatch)?;
+                let shrunk = self.shrink(lane.pipeline, config, seed, mismatch)?;
                 stats.times.add(Phase::Shrinking, shrinking.elapsed());
-                Outcome::Failed(Box::new(self.failure(shrunk, stats.disagreeing, kernel)))
+                Outcome::Failed(Box::new(self.failure(
+                    shrunk,
+                    stats.disagreeing,
+                    kernel.to_string(),
+                )))
             }
         };
         Ok((stats, outcome))
@@ -326,7 +375,11 @@ impl<A: Args, R: Value> Check for FunctionCheck<A, R> {
         FunctionCheck::prepare(self, gpu, shader)
     }
 
-    fn run_prepared(&self, prepared: PreparedCheck<'_>, config: &RunConfig) -> Result<Report, Error> {
+    fn run_prepared(
+        &self,
+        prepared: Vec<PreparedCheck<'_>>,
+        config: &RunConfig,
+    ) -> Vec<Result<Report, Error>> {
         FunctionCheck::run_prepared(self, prepared, config)
     }
 }

@@ -541,7 +541,7 @@ fn float_words<A: Args>() -> Vec<bool> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gpu::check::batches::Stats;
+    use crate::gpu::check::batches::Lane;
     use glam::Vec3;
     use proptest::prelude::*;
 
@@ -572,10 +572,10 @@ mod tests {
             batch: 1024,
             ..RunConfig::default()
         };
-        let mismatch = check
-            .run_batches(&FirstComponent, &config, 3, &mut Stats::default())
-            .expect("runs")
-            .expect("a mismatch");
+        let mut lanes = [Lane::new(&FirstComponent)];
+        check.run_batches(&mut lanes, &config, 3).expect("runs");
+        let [lane] = lanes;
+        let mismatch = lane.first.expect("a mismatch");
         check
             .shrink(&FirstComponent, &config, 3, mismatch)
             .expect("shrinks")
