@@ -54,8 +54,11 @@
 #    `speed` runs bench verification_speed on every processor with a SPIR-V cache
 #      (SHADER_PROPTEST_SPIRV_CACHE): one pass that fills a cache and warms the machine, then two
 #      rounds of a pass with an empty cache (cold) and one with the filled cache (warm); flags
-#      after OUT_DIR go to verification_speed
-#                                            -> speed-ROUND-cold.log, speed-ROUND-warm.log, speed-summary.txt
+#      after OUT_DIR go to verification_speed. With SPEED_BASELINE naming a verification_speed
+#      built from another commit (in the same build root), each round runs it warm just before
+#      the warm pass, for a comparison on the same machine at the same clocks
+#                                            -> speed-ROUND-cold.log, speed-ROUND-warm.log,
+#                                               speed-ROUND-baseline.log, speed-summary.txt
 #    `quality` runs the quality lab (every scene and method) once per image size WIDTHxHEIGHT:
 #      a goal must hold at every size        -> quality-WxH.log, quality-WxH/table.md, quality-summary.txt
 set -uo pipefail
@@ -273,6 +276,10 @@ speed() {
         SHADER_PROPTEST_SPIRV_CACHE=$cold step "speed $round, cold cache" "$out/speed-$round-cold.log" \
             "$BIN/verification_speed" --threads "$threads" "$@"
         rm -rf "$cold"
+        if [ -n "${SPEED_BASELINE:-}" ]; then
+            SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed $round, baseline, warm cache" \
+                "$out/speed-$round-baseline.log" "$SPEED_BASELINE" --threads "$threads" "$@"
+        fi
         SHADER_PROPTEST_SPIRV_CACHE=$filled step "speed $round, warm cache" "$out/speed-$round-warm.log" \
             "$BIN/verification_speed" --threads "$threads" "$@"
     done
