@@ -160,16 +160,16 @@ impl<'g> ComputeKernel<'g> {
         }
         let io = io.as_ref().expect("made above");
         io.owner.write(&io.input, bytemuck::cast_slice(run.input))?;
-        self.bind(
-            io.set,
-            [(io.input.buffer, input_bytes), (io.output.buffer, output_bytes)],
-        );
         let mut push = vec![0u8; self.push_constant_bytes as usize];
         let used = push_constants.len().min(push.len());
         push[..used].copy_from_slice(&push_constants[..used]);
         times.lap(Phase::Upload, &mut clock);
-        io.owner
-            .submit(|device, command_buffer| self.record(device, command_buffer, io.set, &push, groups))?;
+        let buffers = [(io.input.buffer, input_bytes), (io.output.buffer, output_bytes)];
+        // Bound within the submission, so that its validation messages are the submission's.
+        io.owner.submit(|device, command_buffer| {
+            self.bind(io.set, buffers);
+            self.record(device, command_buffer, io.set, &push, groups);
+        })?;
         times.lap(Phase::Dispatch, &mut clock);
         let output = io.owner.read(&io.output, run.output_words);
         times.lap(Phase::ReadBack, &mut clock);

@@ -122,6 +122,10 @@ pub struct Gpu {
     queue: vk::Queue,
     family: u32,
     pool: vk::CommandPool,
+    /// Held by a submission from its first use of the command pool until its validation messages
+    /// are read: the pool and the queue are used by one thread at a time, and the messages read
+    /// are those of the submission.
+    submission: Mutex<()>,
     name: String,
     driver: String,
     enabled: Vec<Feature>,
@@ -211,6 +215,7 @@ impl Gpu {
             queue,
             family: candidate.family,
             pool,
+            submission: Mutex::new(()),
             name: candidate.name,
             driver: candidate.driver,
             enabled,
@@ -303,6 +308,13 @@ impl Gpu {
 
     pub(crate) fn command_pool(&self) -> vk::CommandPool {
         self.pool
+    }
+
+    /// Holds the submission lock (see the field `submission`) while the guard lives.
+    pub(crate) fn lock_submission(&self) -> std::sync::MutexGuard<'_, ()> {
+        self.submission
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
     }
 
     /// Fails with every validation message collected since the last call.

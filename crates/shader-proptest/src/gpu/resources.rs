@@ -251,7 +251,10 @@ impl<'g> Owner<'g> {
     }
 
     /// Records commands with `record`, submits them and waits; validation messages fail the call.
+    /// Submissions from several threads take turns (the device's one command pool and queue), so
+    /// that the messages read are this submission's.
     pub fn submit(&self, record: impl FnOnce(&ash::Device, vk::CommandBuffer)) -> Result<(), Error> {
+        let _turn = self.gpu.lock_submission();
         let device = self.device();
         // SAFETY: the command buffer and fence are created, waited for and freed here.
         unsafe {

@@ -12,7 +12,8 @@ use crate::value::{Args, Value};
 use proptest::strategy::Strategy;
 use proptest::test_runner::TestRunner;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::mpsc::sync_channel;
+use std::sync::mpsc::{sync_channel, Receiver};
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Strategy rejections (`prop_filter`) tolerated in a row before a check gives up.
@@ -103,9 +104,11 @@ pub(super) struct Mismatch {
 
 impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// Generates the batches on worker threads and runs each on every lane that takes it
-    /// ([`Lane`]) as it arrives, until every batch has run or no lane takes more. A batch's
-    /// generation, mirror and tolerance, and the dispatching thread's wait for it, are shared
-    /// equally among the lanes' times. `Err`: the strategy produced no case, which ends every lane.
+    /// ([`Lane`]), each lane on a thread of its own as the batches arrive (their submissions take
+    /// turns on the device: [`crate::gpu::resources::Owner::submit`]), until every batch has run
+    /// or no lane takes more. A batch's generation, mirror and tolerance are shared equally among
+    /// the lanes' times, and so is each lane's wait for batches (so that a group's waits add up to
+    /// one lane's, on average). `Err`: the strategy produced no case, which ends every lane.
     pub(super) fn run_batches(
         &self,
         lanes: &mut [Lane<'_>],
@@ -120,8 +123,10 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         let parts = lanes.len() as u32;
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
+        let open = AtomicUsize::new(lanes.len());
         let (sender, receiver) = sync_channel::<Result<Batch<A>, Error>>(config.threads);
-        std::thread::scope(|scope| {
+        let mut shared = PhaseTimes::default();
+        let generation = std::thread::scope(|scope| {
             for _ in 0..config.threads {
                 let sender = sender.clone();
                 let (next, stop) = (&next, &stop);
@@ -137,40 +142,72 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
                 });
             }
             drop(sender);
+            let lane_senders: Vec<_> = lanes
+                .iter_mut()
+                .map(|lane| {
+                    let (lane_sender, lane_receiver) = sync_channel::<Arc<Batch<A>>>(2);
+                    let ends = (&stop, &open);
+                    scope.spawn(move || self.run_lane(lane, lane_receiver, parts, ends));
+                    lane_sender
+                })
+                .collect();
             let mut error = None;
-            loop {
-                let waiting = Instant::now();
-                let Ok(generated) = receiver.recv() else {
-                    break;
-                };
-                let waited = waiting.elapsed() / parts;
-                let batch = match generated {
-                    Ok(batch) => batch,
+            for generated in receiver {
+                match generated {
+                    Ok(batch) => {
+                        shared += batch.times.shared(parts);
+                        let batch = Arc::new(batch);
+                        for lane_sender in &lane_senders {
+                            // Fails only where the lane's thread has panicked, which the scope
+                            // passes on.
+                            let _ = lane_sender.send(Arc::clone(&batch));
+                        }
+                    }
                     Err(e) => {
                         stop.store(true, Ordering::Relaxed);
                         error.get_or_insert(e);
-                        continue;
                     }
-                };
-                let shared = batch.times.shared(parts);
-                for lane in lanes.iter_mut() {
-                    lane.stats.times += shared;
-                    lane.stats.times.add(Phase::WaitForBatch, waited);
-                    if !lane.takes(batch.index) {
-                        continue;
-                    }
-                    match self.dispatch_batch(lane.pipeline, &batch, &mut lane.stats) {
-                        Ok(None) => {}
-                        Ok(Some(mismatch)) => lane.first = Some(mismatch),
-                        Err(e) => lane.error = Some(e),
-                    }
-                }
-                if !lanes.iter().any(Lane::open) {
-                    stop.store(true, Ordering::Relaxed);
                 }
             }
             error.map_or(Ok(()), Err)
-        })
+        });
+        lanes.iter_mut().for_each(|lane| lane.stats.times += shared);
+        generation
+    }
+
+    /// Runs the batches `receiver` brings on `lane`, those it takes, until they stop coming; its
+    /// waits are timed into its share (`1 / parts`). When the lane stops taking every batch, it
+    /// counts itself out of `open`, and the last one out sets `stop`.
+    fn run_lane(
+        &self,
+        lane: &mut Lane<'_>,
+        receiver: Receiver<Arc<Batch<A>>>,
+        parts: u32,
+        (stop, open): (&AtomicBool, &AtomicUsize),
+    ) {
+        let mut counted_out = false;
+        loop {
+            let waiting = Instant::now();
+            let Ok(batch) = receiver.recv() else {
+                break;
+            };
+            lane.stats
+                .times
+                .add(Phase::WaitForBatch, waiting.elapsed() / parts);
+            if lane.takes(batch.index) {
+                match self.dispatch_batch(lane.pipeline, &batch, &mut lane.stats) {
+                    Ok(None) => {}
+                    Ok(Some(mismatch)) => lane.first = Some(mismatch),
+                    Err(e) => lane.error = Some(e),
+                }
+            }
+            if !lane.open() && !counted_out {
+                counted_out = true;
+                if open.fetch_sub(1, Ordering::Relaxed) == 1 {
+                    stop.store(true, Ordering::Relaxed);
+                }
+            }
+        }
     }
 
     /// Generates batch `index` (`size` cases), encodes it and runs the mirror and the tolerance on
