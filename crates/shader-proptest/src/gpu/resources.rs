@@ -251,32 +251,50 @@ impl<'g> Owner<'g> {
     }
 
     /// Records commands with `record`, submits them and waits; validation messages fail the call.
-    /// Submissions from several threads take turns (the device's one command pool and queue), so
-    /// that the messages read are this submission's.
+    /// Submissions from several threads take turns on the device's one command pool and queue,
+    /// from the command buffer's allocation to the submission and the reading of the messages it
+    /// caused, and wait for their fences apart: the messages read are this submission's, but for
+    /// any the validation layer reports while fences are waited for, which the next turn to end
+    /// reads.
     pub fn submit(&self, record: impl FnOnce(&ash::Device, vk::CommandBuffer)) -> Result<(), Error> {
-        let _turn = self.gpu.lock_submission();
         let device = self.device();
-        // SAFETY: the command buffer and fence are created, waited for and freed here.
+        let pool = self.gpu.command_pool();
+        let turn = self.gpu.lock_submission();
+        // SAFETY: the command buffer and the fence are created, waited for and freed here; the
+        // pool and the queue are used only while the turn is held.
         unsafe {
             let command_buffer = device
                 .allocate_command_buffers(
                     &vk::CommandBufferAllocateInfo::default()
-                        .command_pool(self.gpu.command_pool())
+                        .command_pool(pool)
                         .command_buffer_count(1),
                 )
                 .map_err(vulkan("vkAllocateCommandBuffers"))?[0];
-            let result = self.run(command_buffer, record);
-            device.free_command_buffers(self.gpu.command_pool(), &[command_buffer]);
-            result?;
+            let fence = match self.record_and_submit(command_buffer, record) {
+                Ok(fence) => fence,
+                Err(e) => {
+                    device.free_command_buffers(pool, &[command_buffer]);
+                    return Err(e);
+                }
+            };
+            let submitted = self.gpu.check_messages();
+            drop(turn);
+            let waited = device
+                .wait_for_fences(&[fence], true, u64::MAX)
+                .map_err(vulkan("vkWaitForFences"));
+            let _turn = self.gpu.lock_submission();
+            device.destroy_fence(fence, None);
+            device.free_command_buffers(pool, &[command_buffer]);
+            submitted.and(waited).and(self.gpu.check_messages())
         }
-        self.gpu.check_messages()
     }
 
-    fn run(
+    /// Records `command_buffer` with `record` and submits it: the fence it signals.
+    fn record_and_submit(
         &self,
         command_buffer: vk::CommandBuffer,
         record: impl FnOnce(&ash::Device, vk::CommandBuffer),
-    ) -> Result<(), Error> {
+    ) -> Result<vk::Fence, Error> {
         let device = self.device();
         // SAFETY: see `submit`.
         unsafe {
@@ -294,16 +312,13 @@ impl<'g> Owner<'g> {
                 .map_err(vulkan("vkCreateFence"))?;
             let buffers = [command_buffer];
             let submit = [vk::SubmitInfo::default().command_buffers(&buffers)];
-            let result = device
-                .queue_submit(self.gpu.queue(), &submit, fence)
-                .map_err(vulkan("vkQueueSubmit"))
-                .and_then(|()| {
-                    device
-                        .wait_for_fences(&[fence], true, u64::MAX)
-                        .map_err(vulkan("vkWaitForFences"))
-                });
-            device.destroy_fence(fence, None);
-            result
+            match device.queue_submit(self.gpu.queue(), &submit, fence) {
+                Ok(()) => Ok(fence),
+                Err(e) => {
+                    device.destroy_fence(fence, None);
+                    Err(Error::Vulkan("vkQueueSubmit", e))
+                }
+            }
         }
     }
 
