@@ -7,7 +7,7 @@
 //! time went ([`shader_proptest::Phase`]): each phase's seconds summed over the threads that
 //! worked in it and over every check, its share of the summed work, its share of the wall time
 //! (above 100% where threads overlap) and its nanoseconds per case; the two waits are the
-//! dispatching thread's.
+//! dispatching threads', each shared among the shaders that ran the same cases.
 //!
 //! `cargo bench -p ray-footprint-lab --bench verification_speed [-- --cases N] [--batch N] [--threads N]`
 //!

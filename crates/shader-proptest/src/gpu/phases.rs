@@ -6,7 +6,8 @@ use std::time::{Duration, Instant};
 
 /// A phase of a check. The work phases run on different threads and overlap: the preparation on
 /// [`crate::run_checks`]' threads, generation, encoding, mirror and tolerance on the generating
-/// threads, the rest on the thread that dispatches; the two waits are the dispatching thread's.
+/// threads (shared equally among the shaders that run the same cases), the rest on the thread
+/// that dispatches to the check's shader; the two waits are that thread's.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Phase {
     /// Comparing the layouts, writing the kernel, compiling it (glslang and slangc run as
@@ -26,7 +27,7 @@ pub enum Phase {
     /// buffers too).
     Upload,
     /// Recording, submitting and waiting for one dispatch, then reading the validation layer's
-    /// messages.
+    /// messages; with it, waiting for the turn on the device's queue while another thread submits.
     Dispatch,
     /// Copying the output words out of the device's buffer.
     ReadBack,
@@ -34,9 +35,11 @@ pub enum Phase {
     Comparison,
     /// Shrinking a disagreement, its dispatches included.
     Shrinking,
-    /// The dispatching thread waiting for the check to be prepared.
+    /// The dispatching thread waiting for the check (and the others that run its cases) to be
+    /// prepared, shared equally among them.
     WaitForPreparation,
-    /// The dispatching thread waiting for a batch to be generated.
+    /// The dispatching thread waiting for a batch to be generated, shared equally among the
+    /// shaders that run the same cases.
     WaitForBatch,
 }
 
