@@ -53,3 +53,56 @@ fn entries_of_one_check_run_on_the_same_cases_and_end_apart() {
         .expect("one float");
     assert!(shrunk > 0.5 && shrunk < 0.5001, "{}", failure.input);
 }
+
+/// Groups run two at a time and still report in the order of the suite; an entry of a check that
+/// is not next to its others makes a group of its own.
+#[test]
+fn groups_report_in_order() {
+    let gpu = Gpu::new().unwrap_or_else(|error| panic!("{error}"));
+    let halve = FunctionCheck::new("halve", || (-1.0f32..1.0,), |(x,): (f32,)| x * 0.5);
+    let twice = FunctionCheck::new("twice", || (-1.0f32..1.0,), |(x,): (f32,)| x * 2.0);
+    let checks: [(&dyn Check, Shader); 5] = [
+        (
+            &halve,
+            Shader::wgsl("fn halve(x: f32) -> f32 { return x * 0.5; }"),
+        ),
+        (&halve, Shader::glsl("float halve(float x) { return x * 0.5; }")),
+        (
+            &twice,
+            Shader::wgsl("fn twice(x: f32) -> f32 { return x * 2.0; }"),
+        ),
+        (&twice, Shader::glsl("float twice(float x) { return x * 2.0; }")),
+        (
+            &halve,
+            Shader::wgsl("fn halve(x: f32) -> f32 { return x * 0.5; }"),
+        ),
+    ];
+    let config = RunConfig {
+        cases: 20_000,
+        batch: 2048,
+        ..RunConfig::default()
+    };
+    let mut reports = Vec::new();
+    run_checks(&gpu, &checks, &config, 2, |index, result| {
+        reports.push((index, result.unwrap_or_else(|error| panic!("{error}"))));
+    })
+    .unwrap_or_else(|error| panic!("{error}"));
+    let order: Vec<(usize, &str)> = reports
+        .iter()
+        .map(|(index, report)| (*index, report.function.as_str()))
+        .collect();
+    assert_eq!(
+        order,
+        [
+            (0, "halve"),
+            (1, "halve"),
+            (2, "twice"),
+            (3, "twice"),
+            (4, "halve")
+        ]
+    );
+    for (_, report) in &reports {
+        report.assert_passed();
+        assert_eq!(report.cases, config.cases);
+    }
+}

@@ -6,25 +6,30 @@
 //! check, where its 100,000 cases take a few milliseconds. [`run_checks`] does that part on
 //! threads of its own, ahead of the check that runs. Neighbouring entries of one check (the same
 //! function in several languages) run together, each batch generated once and run on each of
-//! their shaders ([`Check::run_prepared`]); the groups run one at a time, in order.
+//! their shaders ([`Check::run_prepared`]); two such groups run at once, and report in order.
 
 use super::check::{Check, PreparedCheck, Report, RunConfig};
 use super::device::{Error, Gpu};
 use super::phases::Phase;
 use crate::shader::Shader;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, VecDeque};
 use std::ops::Range;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::sync_channel;
 use std::time::{Duration, Instant};
 
+/// Groups of checks run at once: while the last batches of one are dispatched, the next one's are
+/// generated.
+const GROUPS_AT_ONCE: usize = 2;
+
 /// Runs every check of `checks` on its shader, as [`Check::run`] does, and hands each result to
 /// `each` in the order of `checks`. Every check runs with one seed, `config`'s (a fresh one if it
 /// has none, printed in every report), so that neighbouring entries of the same check run the
 /// same cases, generated once. `preparers` threads prepare the checks ([`Check::prepare`]) at most
-/// `preparers` checks ahead of the one running; 0 is [`Error::Config`], as is a `config` that
-/// [`RunConfig::validate`] refuses. The time the running thread waited for a group's checks to be
-/// prepared is shared among their reports' [`Phase::WaitForPreparation`].
+/// `preparers` checks ahead of those running; 0 is [`Error::Config`], as is a `config` that
+/// [`RunConfig::validate`] refuses. Two groups run at once, each on threads of its own, and
+/// report in order. The time the calling thread waited for a group's checks to be prepared is
+/// shared among their reports' [`Phase::WaitForPreparation`].
 pub fn run_checks(
     gpu: &Gpu,
     checks: &[(&dyn Check, Shader)],
@@ -62,35 +67,58 @@ pub fn run_checks(
             });
         }
         drop(sender);
-        // Checks prepared out of order wait here until their group is complete and those before
-        // it have run.
+        // Checks prepared out of order wait here until their group is complete and may start.
         let mut waiting = BTreeMap::new();
         let mut groups = groups.into_iter().peekable();
         let mut waited = Duration::ZERO;
+        // The groups running, oldest first, each with its share of the wait for its preparation.
+        let mut running = VecDeque::new();
+        let mut report = |group: Range<usize>, wait: Duration, results: Vec<Result<Report, Error>>| {
+            for (index, result) in group.zip(results) {
+                each(
+                    index,
+                    result.map(|mut report| {
+                        report.phases.add(Phase::WaitForPreparation, wait);
+                        report
+                    }),
+                );
+            }
+        };
         loop {
+            while running.len() < GROUPS_AT_ONCE {
+                let Some(group) = groups.next_if(|group| group.clone().all(|i| waiting.contains_key(&i)))
+                else {
+                    break;
+                };
+                let prepared: Vec<_> = group
+                    .clone()
+                    .map(|i| waiting.remove(&i).expect("prepared"))
+                    .collect();
+                let wait = std::mem::take(&mut waited) / group.len() as u32;
+                let (check, config) = (checks[group.start].0, &config);
+                running.push_back((
+                    group,
+                    wait,
+                    scope.spawn(move || run_group(check, prepared, config)),
+                ));
+            }
+            // The oldest group reports once no other may start beside it.
+            if running.len() == GROUPS_AT_ONCE || (groups.peek().is_none() && !running.is_empty()) {
+                let (group, wait, run) = running.pop_front().expect("a group runs");
+                report(
+                    group,
+                    wait,
+                    run.join()
+                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
+                );
+                continue;
+            }
             let receiving = Instant::now();
             let Ok((index, prepared)) = receiver.recv() else {
                 break;
             };
             waited += receiving.elapsed();
             waiting.insert(index, prepared);
-            while let Some(group) = groups.next_if(|group| group.clone().all(|i| waiting.contains_key(&i))) {
-                let prepared: Vec<_> = group
-                    .clone()
-                    .map(|i| waiting.remove(&i).expect("prepared"))
-                    .collect();
-                let wait = std::mem::take(&mut waited) / group.len() as u32;
-                let results = run_group(checks[group.start].0, prepared, &config);
-                for (index, result) in group.zip(results) {
-                    each(
-                        index,
-                        result.map(|mut report| {
-                            report.phases.add(Phase::WaitForPreparation, wait);
-                            report
-                        }),
-                    );
-                }
-            }
         }
     });
     Ok(())
