@@ -122,9 +122,10 @@ pub struct Gpu {
     queue: vk::Queue,
     family: u32,
     pool: vk::CommandPool,
-    /// Held by a submission from its first use of the command pool until its validation messages
-    /// are read: the pool and the queue are used by one thread at a time, and the messages read
-    /// are those of the submission.
+    /// Held by a submission while it uses the command pool and the queue: from the command
+    /// buffer's allocation to the submission and the reading of the messages it caused, and again
+    /// to free the buffer, not while it waits for its fence. One thread at a time uses the pool
+    /// and the queue, and the messages a submission reads are its own.
     submission: Mutex<()>,
     name: String,
     driver: String,

@@ -3,10 +3,10 @@
 //! A check generates each batch of cases from its own seed with a proptest strategy, on as many
 //! threads as the machine has, while the device runs the previous batch: one dispatch of a
 //! generated kernel per batch and shader, each batch generated once however many shaders (the
-//! function in several languages) it runs on ([`batches`]). Every output component is compared with the mirror's
-//! within the check's [`Tolerance`]; for finite inputs both outputs must be finite too
-//! ([`judge`]). A failing case is shrunk through the random words its strategy drew, many
-//! candidates per dispatch ([`shrink`]), and reported with its inputs, both outputs, the
+//! function in several languages) it runs on ([`batches`]). Every output component is compared
+//! with the mirror's within the check's [`Tolerance`]; for finite inputs both outputs must be
+//! finite too ([`judge`]). A failing case is shrunk through the random words its strategy drew,
+//! many candidates per dispatch ([`shrink`]), and reported with its inputs, both outputs, the
 //! tolerance, the seed that replays the run and the kernel's source ([`report`]).
 
 mod batches;
