@@ -141,9 +141,10 @@ fn main() -> ExitCode {
     let processors = std::thread::available_parallelism().map_or(1, usize::from);
     let cache = std::env::var(SPIRV_CACHE_ENV).unwrap_or_default();
     println!(
-        "device: {} ({}); {processors} processors; {} cases per check and language in batches of {}; SPIR-V cache: {}",
+        "device: {} ({}); queues: {}; {processors} processors; {} cases per check and language in batches of {}; SPIR-V cache: {}",
         gpu.name(),
         gpu.driver(),
+        gpu.queue_count(),
         options.cases,
         options.batch,
         if cache.is_empty() { "off" } else { &cache }

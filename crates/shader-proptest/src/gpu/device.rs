@@ -5,7 +5,8 @@ use crate::shader::Feature;
 use ash::vk;
 use std::ffi::{c_void, CStr};
 use std::fmt;
-use std::sync::{Mutex, OnceLock};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, MutexGuard, OnceLock};
 
 /// Environment variable naming the device to use (a case-insensitive part of its name) instead of
 /// lavapipe, for example `SHADER_PROPTEST_DEVICE=nvidia`.
@@ -100,7 +101,9 @@ pub struct DeviceRequest<'a> {
 /// A Vulkan device (lavapipe unless [`DEVICE_ENV`] names another) with the validation layer on.
 ///
 /// Validation messages of severity warning or error are collected; any of them fails the dispatch
-/// or submission during which it arrived ([`Error::Validation`]).
+/// or submission during which it arrived ([`Error::Validation`]). Submissions go to as many queues
+/// of the compute family as the device offers (up to 16), so that threads
+/// submitting at once take turns only where the device has fewer queues than they are.
 ///
 /// ```
 /// use shader_proptest::{Feature, Gpu};
@@ -119,18 +122,47 @@ pub struct Gpu {
     messages: Box<Mutex<Vec<String>>>,
     physical: vk::PhysicalDevice,
     device: ash::Device,
-    queue: vk::Queue,
     family: u32,
-    pool: vk::CommandPool,
-    /// Held by a submission while it uses the command pool and the queue: from the command
-    /// buffer's allocation to the submission and the reading of the messages it caused, and again
-    /// to free the buffer, not while it waits for its fence. One thread at a time uses the pool
-    /// and the queue, and the messages a submission reads are its own.
-    submission: Mutex<()>,
+    /// One per queue of `family` this device was created with.
+    submitters: Vec<Submitter>,
+    /// Where the next submission starts looking for a free submitter.
+    next_submitter: AtomicUsize,
     name: String,
     driver: String,
     enabled: Vec<Feature>,
     missing: Vec<(Feature, String)>,
+}
+
+/// The most queues a [`Gpu`] asks for: enough for the threads of a verification run
+/// (`run_checks` dispatches from ten at once).
+const QUEUES_AT_MOST: u32 = 16;
+
+/// A queue and the command pool its submissions allocate from, with the lock that gives one
+/// thread at a time the pair.
+pub(crate) struct Submitter {
+    queue: vk::Queue,
+    pool: vk::CommandPool,
+    /// Held by a submission while it uses the pool and the queue: from the command buffer's
+    /// allocation to the submission and the reading of the validation messages, and again to free
+    /// the buffer, not while it waits for its fence.
+    turn: Mutex<()>,
+}
+
+impl Submitter {
+    /// The queue.
+    pub(crate) fn queue(&self) -> vk::Queue {
+        self.queue
+    }
+
+    /// The command pool.
+    pub(crate) fn pool(&self) -> vk::CommandPool {
+        self.pool
+    }
+
+    /// Holds this submitter's turn while the guard lives.
+    pub(crate) fn lock(&self) -> MutexGuard<'_, ()> {
+        self.turn.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
 }
 
 unsafe extern "system" fn collect_message(
@@ -161,6 +193,8 @@ struct Candidate {
     name: String,
     driver: String,
     family: u32,
+    /// Queues the family has, capped at [`QUEUES_AT_MOST`].
+    queue_count: u32,
 }
 
 impl Gpu {
@@ -189,21 +223,17 @@ impl Gpu {
                 return Err(error);
             }
         };
-        // SAFETY: a queue of the family the device was created with; the pool is destroyed in Drop,
-        // and everything made so far is destroyed here if it cannot be created.
-        let (queue, pool) = unsafe {
-            let queue = device.get_device_queue(candidate.family, 0);
-            let info = vk::CommandPoolCreateInfo::default()
-                .queue_family_index(candidate.family)
-                .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
-            match device.create_command_pool(&info, None) {
-                Ok(pool) => (queue, pool),
-                Err(e) => {
+        let submitters = match submitters(&device, &candidate) {
+            Ok(submitters) => submitters,
+            Err(error) => {
+                // SAFETY: the submitters' pools made before the failure were destroyed by
+                // `submitters`; nothing else was created from the device.
+                unsafe {
                     device.destroy_device(None);
                     debug_utils.destroy_debug_utils_messenger(messenger, None);
                     instance.destroy_instance(None);
-                    return Err(Error::Vulkan("vkCreateCommandPool", e));
                 }
+                return Err(error);
             }
         };
         let gpu = Gpu {
@@ -213,10 +243,9 @@ impl Gpu {
             messages,
             physical: candidate.physical,
             device,
-            queue,
             family: candidate.family,
-            pool,
-            submission: Mutex::new(()),
+            submitters,
+            next_submitter: AtomicUsize::new(0),
             name: candidate.name,
             driver: candidate.driver,
             enabled,
@@ -297,25 +326,32 @@ impl Gpu {
         }
     }
 
-    /// The queue family of the queue every submission goes to (its properties say, for example,
-    /// how many bits its timestamps have).
+    /// The queue family of the queues submissions go to (its properties say, for example, how
+    /// many bits its timestamps have).
     pub fn queue_family(&self) -> u32 {
         self.family
     }
 
-    pub(crate) fn queue(&self) -> vk::Queue {
-        self.queue
+    /// How many queues submissions go to.
+    pub fn queue_count(&self) -> usize {
+        self.submitters.len()
     }
 
-    pub(crate) fn command_pool(&self) -> vk::CommandPool {
-        self.pool
-    }
-
-    /// Holds the submission lock (see the field `submission`) while the guard lives.
-    pub(crate) fn lock_submission(&self) -> std::sync::MutexGuard<'_, ()> {
-        self.submission
-            .lock()
-            .unwrap_or_else(|poisoned| poisoned.into_inner())
+    /// A submitter and its turn: the first free one from where the last search started, or, when
+    /// every one is busy, the next one's turn once its holder lets go.
+    pub(crate) fn take_submitter(&self) -> (&Submitter, MutexGuard<'_, ()>) {
+        let count = self.submitters.len();
+        let start = self.next_submitter.fetch_add(1, Ordering::Relaxed) % count;
+        let order = (start..count)
+            .chain(0..start)
+            .map(|index| &self.submitters[index]);
+        for submitter in order {
+            if let Ok(turn) = submitter.turn.try_lock() {
+                return (submitter, turn);
+            }
+        }
+        let submitter = &self.submitters[start];
+        (submitter, submitter.lock())
     }
 
     /// Fails with every validation message collected since the last call.
@@ -334,7 +370,9 @@ impl Drop for Gpu {
         // SAFETY: all work has been waited for; objects are destroyed in reverse creation order.
         unsafe {
             let _ = self.device.device_wait_idle();
-            self.device.destroy_command_pool(self.pool, None);
+            for submitter in &self.submitters {
+                self.device.destroy_command_pool(submitter.pool, None);
+            }
             self.device.destroy_device(None);
             self.debug_utils
                 .destroy_debug_utils_messenger(self.messenger, None);
@@ -554,7 +592,38 @@ impl Support {
     }
 }
 
-/// The logical device with one queue of `candidate.family` and the `enabled` features.
+/// A submitter for each queue of `candidate.family` the device was created with. On failure the
+/// pools made so far are destroyed.
+fn submitters(device: &ash::Device, candidate: &Candidate) -> Result<Vec<Submitter>, Error> {
+    let mut submitters = Vec::new();
+    for index in 0..candidate.queue_count {
+        let info = vk::CommandPoolCreateInfo::default()
+            .queue_family_index(candidate.family)
+            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
+        // SAFETY: a queue of the family the device was created with, `index` below its count; the
+        // pools are destroyed by `Gpu`'s Drop, or here if a later one cannot be made.
+        unsafe {
+            let queue = device.get_device_queue(candidate.family, index);
+            match device.create_command_pool(&info, None) {
+                Ok(pool) => submitters.push(Submitter {
+                    queue,
+                    pool,
+                    turn: Mutex::new(()),
+                }),
+                Err(e) => {
+                    for made in &submitters {
+                        device.destroy_command_pool(made.pool, None);
+                    }
+                    return Err(Error::Vulkan("vkCreateCommandPool", e));
+                }
+            }
+        }
+    }
+    Ok(submitters)
+}
+
+/// The logical device with `candidate.queue_count` queues of `candidate.family` and the `enabled`
+/// features.
 fn create_device(
     instance: &ash::Instance,
     candidate: &Candidate,
@@ -576,7 +645,7 @@ fn create_device(
     if on(Feature::RayQuery) {
         extensions.push(ash::khr::ray_query::NAME.as_ptr());
     }
-    let priorities = [1.0];
+    let priorities = vec![1.0; candidate.queue_count as usize];
     let queue_info = [vk::DeviceQueueCreateInfo::default()
         .queue_family_index(candidate.family)
         .queue_priorities(&priorities)];
@@ -630,8 +699,8 @@ fn pick_device(instance: &ash::Instance) -> Result<Candidate, Error> {
                 Some(wanted) => name.to_lowercase().contains(wanted.as_str()),
                 None => driver.driver_id == vk::DriverId::MESA_LLVMPIPE,
             };
-            let family = instance
-                .get_physical_device_queue_family_properties(physical)
+            let families = instance.get_physical_device_queue_family_properties(physical);
+            let family = families
                 .iter()
                 .position(|family| family.queue_flags.contains(vk::QueueFlags::COMPUTE));
             match (chosen, family) {
@@ -650,6 +719,7 @@ fn pick_device(instance: &ash::Instance) -> Result<Candidate, Error> {
                         name,
                         driver,
                         family: family as u32,
+                        queue_count: families[family].queue_count.clamp(1, QUEUES_AT_MOST),
                     });
                 }
                 _ => seen.push(name),

@@ -251,17 +251,18 @@ impl<'g> Owner<'g> {
     }
 
     /// Records commands with `record`, submits them and waits; validation messages fail the call.
-    /// Submissions from several threads take turns on the device's one command pool and queue,
-    /// from the command buffer's allocation to the submission and the reading of the messages it
-    /// caused, and wait for their fences apart: the messages read are this submission's, but for
-    /// any the validation layer reports while fences are waited for, which the next turn to end
-    /// reads.
+    /// Each submission takes a free queue of the device with its command pool (threads take turns
+    /// only when every queue is in use), holds it from the command buffer's allocation to the
+    /// submission and the reading of the validation messages, and waits for its fence without it.
+    /// The messages are collected for the whole device: those the layer reports while another
+    /// thread submits or while fences are waited for are read, and fail, whichever submission
+    /// reads them first.
     pub fn submit(&self, record: impl FnOnce(&ash::Device, vk::CommandBuffer)) -> Result<(), Error> {
         let device = self.device();
-        let pool = self.gpu.command_pool();
-        let turn = self.gpu.lock_submission();
+        let (submitter, turn) = self.gpu.take_submitter();
+        let pool = submitter.pool();
         // SAFETY: the command buffer and the fence are created, waited for and freed here; the
-        // pool and the queue are used only while the turn is held.
+        // submitter's pool and queue are used only while its turn is held.
         unsafe {
             let command_buffer = device
                 .allocate_command_buffers(
@@ -270,7 +271,7 @@ impl<'g> Owner<'g> {
                         .command_buffer_count(1),
                 )
                 .map_err(vulkan("vkAllocateCommandBuffers"))?[0];
-            let fence = match self.record_and_submit(command_buffer, record) {
+            let fence = match self.record_and_submit(submitter.queue(), command_buffer, record) {
                 Ok(fence) => fence,
                 Err(e) => {
                     device.free_command_buffers(pool, &[command_buffer]);
@@ -282,16 +283,17 @@ impl<'g> Owner<'g> {
             let waited = device
                 .wait_for_fences(&[fence], true, u64::MAX)
                 .map_err(vulkan("vkWaitForFences"));
-            let _turn = self.gpu.lock_submission();
+            let _turn = submitter.lock();
             device.destroy_fence(fence, None);
             device.free_command_buffers(pool, &[command_buffer]);
             submitted.and(waited).and(self.gpu.check_messages())
         }
     }
 
-    /// Records `command_buffer` with `record` and submits it: the fence it signals.
+    /// Records `command_buffer` with `record` and submits it to `queue`: the fence it signals.
     fn record_and_submit(
         &self,
+        queue: vk::Queue,
         command_buffer: vk::CommandBuffer,
         record: impl FnOnce(&ash::Device, vk::CommandBuffer),
     ) -> Result<vk::Fence, Error> {
@@ -312,7 +314,7 @@ impl<'g> Owner<'g> {
                 .map_err(vulkan("vkCreateFence"))?;
             let buffers = [command_buffer];
             let submit = [vk::SubmitInfo::default().command_buffers(&buffers)];
-            match device.queue_submit(self.gpu.queue(), &submit, fence) {
+            match device.queue_submit(queue, &submit, fence) {
                 Ok(()) => Ok(fence),
                 Err(e) => {
                     device.destroy_fence(fence, None);
