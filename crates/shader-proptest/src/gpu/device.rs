@@ -1,12 +1,12 @@
 //! A Vulkan device with the validation layer on: any validation message fails the run.
 
+use super::submission::Submission;
 use crate::layout::LayoutError;
 use crate::shader::Feature;
 use ash::vk;
 use std::ffi::{c_void, CStr};
 use std::fmt;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Mutex, MutexGuard, OnceLock};
+use std::sync::{Mutex, OnceLock};
 
 /// Environment variable naming the device to use (a case-insensitive part of its name) instead of
 /// lavapipe, for example `SHADER_PROPTEST_DEVICE=nvidia`.
@@ -123,47 +123,17 @@ pub struct Gpu {
     physical: vk::PhysicalDevice,
     device: ash::Device,
     family: u32,
-    /// One per queue of `family` this device was created with.
-    submitters: Vec<Submitter>,
-    /// Where the next submission starts looking for a free submitter.
-    next_submitter: AtomicUsize,
+    /// The queues of `family` this device was created with, and the command buffers submitted
+    /// to them.
+    submission: Submission,
     name: String,
     driver: String,
     enabled: Vec<Feature>,
     missing: Vec<(Feature, String)>,
 }
 
-/// The most queues a [`Gpu`] asks for: enough for the threads of a verification run
-/// (`run_checks` dispatches from ten at once).
+/// The most queues a [`Gpu`] asks for (as many as it keeps command buffers for submissions).
 const QUEUES_AT_MOST: u32 = 16;
-
-/// A queue and the command pool its submissions allocate from, with the lock that gives one
-/// thread at a time the pair.
-pub(crate) struct Submitter {
-    queue: vk::Queue,
-    pool: vk::CommandPool,
-    /// Held by a submission while it uses the pool and the queue: from the command buffer's
-    /// allocation to the submission and the reading of the validation messages, and again to free
-    /// the buffer, not while it waits for its fence.
-    turn: Mutex<()>,
-}
-
-impl Submitter {
-    /// The queue.
-    pub(crate) fn queue(&self) -> vk::Queue {
-        self.queue
-    }
-
-    /// The command pool.
-    pub(crate) fn pool(&self) -> vk::CommandPool {
-        self.pool
-    }
-
-    /// Holds this submitter's turn while the guard lives.
-    pub(crate) fn lock(&self) -> MutexGuard<'_, ()> {
-        self.turn.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
-    }
-}
 
 unsafe extern "system" fn collect_message(
     severity: vk::DebugUtilsMessageSeverityFlagsEXT,
@@ -223,11 +193,11 @@ impl Gpu {
                 return Err(error);
             }
         };
-        let submitters = match submitters(&device, &candidate) {
-            Ok(submitters) => submitters,
+        let submission = match Submission::new(&device, candidate.family, candidate.queue_count) {
+            Ok(submission) => submission,
             Err(error) => {
-                // SAFETY: the submitters' pools made before the failure were destroyed by
-                // `submitters`; nothing else was created from the device.
+                // SAFETY: what `Submission::new` made before failing it destroyed; nothing else
+                // was created from the device.
                 unsafe {
                     device.destroy_device(None);
                     debug_utils.destroy_debug_utils_messenger(messenger, None);
@@ -244,8 +214,7 @@ impl Gpu {
             physical: candidate.physical,
             device,
             family: candidate.family,
-            submitters,
-            next_submitter: AtomicUsize::new(0),
+            submission,
             name: candidate.name,
             driver: candidate.driver,
             enabled,
@@ -334,24 +303,14 @@ impl Gpu {
 
     /// How many queues submissions go to.
     pub fn queue_count(&self) -> usize {
-        self.submitters.len()
+        self.submission.queue_count()
     }
 
-    /// A submitter and its turn: the first free one from where the last search started, or, when
-    /// every one is busy, the next one's turn once its holder lets go.
-    pub(crate) fn take_submitter(&self) -> (&Submitter, MutexGuard<'_, ()>) {
-        let count = self.submitters.len();
-        let start = self.next_submitter.fetch_add(1, Ordering::Relaxed) % count;
-        let order = (start..count)
-            .chain(0..start)
-            .map(|index| &self.submitters[index]);
-        for submitter in order {
-            if let Ok(turn) = submitter.turn.try_lock() {
-                return (submitter, turn);
-            }
-        }
-        let submitter = &self.submitters[start];
-        (submitter, submitter.lock())
+    /// Records a command buffer with `record`, submits it and waits for it; validation messages
+    /// fail the call (see [`Owner::submit`](super::Owner::submit)).
+    pub(crate) fn submit(&self, record: impl FnOnce(&ash::Device, vk::CommandBuffer)) -> Result<(), Error> {
+        self.submission
+            .submit(&self.device, record, || self.check_messages())
     }
 
     /// Fails with every validation message collected since the last call.
@@ -370,9 +329,7 @@ impl Drop for Gpu {
         // SAFETY: all work has been waited for; objects are destroyed in reverse creation order.
         unsafe {
             let _ = self.device.device_wait_idle();
-            for submitter in &self.submitters {
-                self.device.destroy_command_pool(submitter.pool, None);
-            }
+            self.submission.destroy(&self.device);
             self.device.destroy_device(None);
             self.debug_utils
                 .destroy_debug_utils_messenger(self.messenger, None);
@@ -590,36 +547,6 @@ impl Support {
             }
         }
     }
-}
-
-/// A submitter for each queue of `candidate.family` the device was created with. On failure the
-/// pools made so far are destroyed.
-fn submitters(device: &ash::Device, candidate: &Candidate) -> Result<Vec<Submitter>, Error> {
-    let mut submitters = Vec::new();
-    for index in 0..candidate.queue_count {
-        let info = vk::CommandPoolCreateInfo::default()
-            .queue_family_index(candidate.family)
-            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
-        // SAFETY: a queue of the family the device was created with, `index` below its count; the
-        // pools are destroyed by `Gpu`'s Drop, or here if a later one cannot be made.
-        unsafe {
-            let queue = device.get_device_queue(candidate.family, index);
-            match device.create_command_pool(&info, None) {
-                Ok(pool) => submitters.push(Submitter {
-                    queue,
-                    pool,
-                    turn: Mutex::new(()),
-                }),
-                Err(e) => {
-                    for made in &submitters {
-                        device.destroy_command_pool(made.pool, None);
-                    }
-                    return Err(Error::Vulkan("vkCreateCommandPool", e));
-                }
-            }
-        }
-    }
-    Ok(submitters)
 }
 
 /// The logical device with `candidate.queue_count` queues of `candidate.family` and the `enabled`

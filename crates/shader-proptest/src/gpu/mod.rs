@@ -8,6 +8,7 @@ mod device;
 mod echo;
 mod phases;
 mod resources;
+mod submission;
 mod suite;
 #[cfg(feature = "wgpu")]
 mod wgpu_device;

@@ -251,77 +251,14 @@ impl<'g> Owner<'g> {
     }
 
     /// Records commands with `record`, submits them and waits; validation messages fail the call.
-    /// Each submission takes a free queue of the device with its command pool (threads take turns
-    /// only when every queue is in use), holds it from the command buffer's allocation to the
-    /// submission and the reading of the validation messages, and waits for its fence without it.
-    /// The messages are collected for the whole device: those the layer reports while another
-    /// thread submits or while fences are waited for are read, and fail, whichever submission
-    /// reads them first.
+    /// Each submission takes one of the device's sixteen command buffers (with its pool and
+    /// fence, reused) for its whole course, from recording to the fence's signal, and submits it
+    /// to one of the family's queues (the device asks for up to sixteen): threads submit at once,
+    /// and take turns only for a queue that several command buffers share. The validation
+    /// messages are collected for the whole device: those the layer reports while another thread
+    /// submits or waits are read, and fail, whichever submission reads them first.
     pub fn submit(&self, record: impl FnOnce(&ash::Device, vk::CommandBuffer)) -> Result<(), Error> {
-        let device = self.device();
-        let (submitter, turn) = self.gpu.take_submitter();
-        let pool = submitter.pool();
-        // SAFETY: the command buffer and the fence are created, waited for and freed here; the
-        // submitter's pool and queue are used only while its turn is held.
-        unsafe {
-            let command_buffer = device
-                .allocate_command_buffers(
-                    &vk::CommandBufferAllocateInfo::default()
-                        .command_pool(pool)
-                        .command_buffer_count(1),
-                )
-                .map_err(vulkan("vkAllocateCommandBuffers"))?[0];
-            let fence = match self.record_and_submit(submitter.queue(), command_buffer, record) {
-                Ok(fence) => fence,
-                Err(e) => {
-                    device.free_command_buffers(pool, &[command_buffer]);
-                    return Err(e);
-                }
-            };
-            let submitted = self.gpu.check_messages();
-            drop(turn);
-            let waited = device
-                .wait_for_fences(&[fence], true, u64::MAX)
-                .map_err(vulkan("vkWaitForFences"));
-            let _turn = submitter.lock();
-            device.destroy_fence(fence, None);
-            device.free_command_buffers(pool, &[command_buffer]);
-            submitted.and(waited).and(self.gpu.check_messages())
-        }
-    }
-
-    /// Records `command_buffer` with `record` and submits it to `queue`: the fence it signals.
-    fn record_and_submit(
-        &self,
-        queue: vk::Queue,
-        command_buffer: vk::CommandBuffer,
-        record: impl FnOnce(&ash::Device, vk::CommandBuffer),
-    ) -> Result<vk::Fence, Error> {
-        let device = self.device();
-        // SAFETY: see `submit`.
-        unsafe {
-            let begin =
-                vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-            device
-                .begin_command_buffer(command_buffer, &begin)
-                .map_err(vulkan("vkBeginCommandBuffer"))?;
-            record(device, command_buffer);
-            device
-                .end_command_buffer(command_buffer)
-                .map_err(vulkan("vkEndCommandBuffer"))?;
-            let fence = device
-                .create_fence(&vk::FenceCreateInfo::default(), None)
-                .map_err(vulkan("vkCreateFence"))?;
-            let buffers = [command_buffer];
-            let submit = [vk::SubmitInfo::default().command_buffers(&buffers)];
-            match device.queue_submit(queue, &submit, fence) {
-                Ok(()) => Ok(fence),
-                Err(e) => {
-                    device.destroy_fence(fence, None);
-                    Err(Error::Vulkan("vkQueueSubmit", e))
-                }
-            }
-        }
+        self.gpu.submit(record)
     }
 
     /// A sampled square RGBA8 image `size` texels wide holding `levels` (level `i` is
