@@ -101,9 +101,9 @@ pub struct DeviceRequest<'a> {
 /// A Vulkan device (lavapipe unless [`DEVICE_ENV`] names another) with the validation layer on.
 ///
 /// Validation messages of severity warning or error are collected; any of them fails the dispatch
-/// or submission during which it arrived ([`Error::Validation`]). Submissions go to as many queues
-/// of the compute family as the device offers (up to 16), so that threads
-/// submitting at once take turns only where the device has fewer queues than they are.
+/// or submission during which it arrived ([`Error::Validation`]). Submissions from several threads
+/// run at once: the device keeps sixteen command buffers for them and asks for as many queues of
+/// the compute family as it offers, up to sixteen ([`Owner::submit`](super::Owner::submit)).
 ///
 /// ```
 /// use shader_proptest::{Feature, Gpu};
