@@ -70,8 +70,8 @@ pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
 pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Diagonals, Material, Mesh, Scene,
-    Vertex, GLASS_INDEX, MATERIAL_GLASS, MATERIAL_MIRROR, MATERIAL_TEXTURED, MESH_TABLE_WORDS, ROUGHNESS,
-    VERTEX_FLOATS, WIRE_COLOUR,
+    Vertex, GLASS_CENTRE, GLASS_INDEX, GLASS_RADIUS, MATERIAL_GLASS, MATERIAL_MIRROR, MATERIAL_TEXTURED,
+    MESH_TABLE_WORDS, ROUGHNESS, VERTEX_FLOATS, WIRE_COLOUR,
 };
 pub use texture::{
     checker, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,

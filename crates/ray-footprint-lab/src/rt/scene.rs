@@ -367,7 +367,7 @@ impl Scene {
             material: Material::Glass {
                 index_of_refraction: GLASS_INDEX,
             },
-            ..uv_sphere(Vec3::new(-1.3, 1.0, -1.5), 1.0, 32, 64)
+            ..uv_sphere(GLASS_CENTRE, GLASS_RADIUS, 32, 64)
         };
         let rough = Mesh {
             name: "rough sphere",
@@ -420,6 +420,10 @@ impl Scene {
 
 /// Index of refraction of the glass sphere of [`Scene::materials`]: crown glass.
 pub const GLASS_INDEX: f32 = 1.5;
+/// Centre of the glass sphere of [`Scene::materials`].
+pub const GLASS_CENTRE: Vec3 = Vec3::new(-1.3, 1.0, -1.5);
+/// Radius of the glass sphere of [`Scene::materials`].
+pub const GLASS_RADIUS: f32 = 1.0;
 /// Roughness of the rough sphere of [`Scene::materials`]: a glossy reflection about 15 degrees
 /// wide (`2 * rf_roughness_spread_angle(0.3)` = 0.256 rad).
 pub const ROUGHNESS: f32 = 0.3;
