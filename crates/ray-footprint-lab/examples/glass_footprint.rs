@@ -24,7 +24,8 @@
 //!   sagittal section), which a refraction keeps while turning its spread by Coddington's sagittal
 //!   equation to first order (below). For a sphere both surfaces share one plane of incidence,
 //!   so the two sections stay the beam's axes; on the ground they span an ellipse whose longer
-//!   axis is the footprint.
+//!   axis is the footprint. *Larger width*: the larger of the two widths over `|n . d|` on the
+//!   ground, a footprint that needs no direction for the sections.
 //!
 //! Each size prints, per 10-degree band of the incidence angle at the sphere's front, the mean of
 //! `log2(footprint / exact longer axis)` in mip levels (positive: too wide, a blur), and over
@@ -60,11 +61,19 @@ struct Path {
 }
 
 /// What one pixel gives: the band of its incidence angle, and `log2(footprint / exact)` for the
-/// cone and for the two widths.
+/// cone, for the two widths, and for the larger of the two widths alone.
 struct Sample {
     band: usize,
     cone: f64,
     two_widths: f64,
+    larger_width: f64,
+}
+
+/// The two sections of a beam on the ground: the footprint their ellipse spans, and the larger
+/// width slanted by the ground (`max |width| / |n . d|`), which needs no direction.
+struct Sections {
+    ellipse: f64,
+    larger_width: f64,
 }
 
 fn main() {
@@ -101,10 +110,12 @@ fn sample_pixel(camera: &RtPushConstants, (x, y): (f64, f64)) -> Option<Sample> 
         path.leaving.as_vec3(),
     ));
     let incidence = (-path.front.1.dot(path.direction)).acos().to_degrees();
+    let sections = two_width_footprint(camera, &path, cone);
     Some(Sample {
         band: ((incidence / BAND_DEGREES) as usize).min(BANDS - 1),
         cone: (cone_footprint / exact).log2(),
-        two_widths: (two_width_footprint(camera, &path, cone) / exact).log2(),
+        two_widths: (sections.ellipse / exact).log2(),
+        larger_width: (sections.larger_width / exact).log2(),
     })
 }
 
@@ -226,8 +237,8 @@ fn sagittal_spread(width: f64, spread: f64, cos_incidence: f64, eta: f64, curvat
 
 /// The footprint of a beam with the tangential section `cone` (leaving the sphere) and the
 /// sagittal section carried from the eye: the longer axis of the ellipse its two sections span
-/// on the ground, each projected along the leaving ray.
-fn two_width_footprint(camera: &RtPushConstants, path: &Path, cone: RayCone) -> f64 {
+/// on the ground, each projected along the leaving ray; and the larger width slanted.
+fn two_width_footprint(camera: &RtPushConstants, path: &Path, cone: RayCone) -> Sections {
     let index = f64::from(GLASS_INDEX);
     let radius = f64::from(GLASS_RADIUS);
     let eye_spread = f64::from(
@@ -251,7 +262,10 @@ fn two_width_footprint(camera: &RtPushConstants, path: &Path, cone: RayCone) -> 
     let along = across.cross(path.leaving);
     let tangential_width = f64::from(width_at(cone, path.to_ground as f32));
     let onto_ground = |axis: DVec3| axis - path.leaving * (axis.y / path.leaving.y);
-    longer_axis(onto_ground(along * tangential_width), onto_ground(across * width))
+    Sections {
+        ellipse: longer_axis(onto_ground(along * tangential_width), onto_ground(across * width)),
+        larger_width: tangential_width.abs().max(width.abs()) / path.leaving.y.abs(),
+    }
 }
 
 /// One size's table: per band, then over all pixels.
@@ -261,8 +275,8 @@ fn print_size(width: u32, height: u32, samples: &[Sample]) {
         samples.len()
     );
     println!("log2(footprint / exact longer axis), mip levels (positive: wider than exact)");
-    println!("| incidence at the front | pixels | cone | two widths |");
-    println!("| --- | ---: | ---: | ---: |");
+    println!("| incidence at the front | pixels | cone | two widths | larger width |");
+    println!("| --- | ---: | ---: | ---: | ---: |");
     for band in 0..BANDS {
         let in_band: Vec<&Sample> = samples.iter().filter(|sample| sample.band == band).collect();
         if in_band.is_empty() {
@@ -271,18 +285,23 @@ fn print_size(width: u32, height: u32, samples: &[Sample]) {
         let mean =
             |value: fn(&Sample) -> f64| in_band.iter().map(|s| value(s)).sum::<f64>() / in_band.len() as f64;
         println!(
-            "| {}-{} degrees | {} | {:.3} | {:.3} |",
+            "| {}-{} degrees | {} | {:.3} | {:.3} | {:.3} |",
             band as f64 * BAND_DEGREES,
             (band + 1) as f64 * BAND_DEGREES,
             in_band.len(),
             mean(|s| s.cone),
-            mean(|s| s.two_widths)
+            mean(|s| s.two_widths),
+            mean(|s| s.larger_width)
         );
     }
     print_summary("cone", samples.iter().map(|sample| sample.cone).collect());
     print_summary(
         "two widths",
         samples.iter().map(|sample| sample.two_widths).collect(),
+    );
+    print_summary(
+        "larger width",
+        samples.iter().map(|sample| sample.larger_width).collect(),
     );
     println!();
 }
