@@ -1,6 +1,6 @@
 //! A Vulkan device with the validation layer on: any validation message fails the run.
 
-use super::submission::Submission;
+use super::submission::{Submission, SUBMITTERS};
 use crate::layout::LayoutError;
 use crate::shader::Feature;
 use ash::vk;
@@ -132,9 +132,6 @@ pub struct Gpu {
     missing: Vec<(Feature, String)>,
 }
 
-/// The most queues a [`Gpu`] asks for (as many as it keeps command buffers for submissions).
-const QUEUES_AT_MOST: u32 = 16;
-
 unsafe extern "system" fn collect_message(
     severity: vk::DebugUtilsMessageSeverityFlagsEXT,
     _types: vk::DebugUtilsMessageTypeFlagsEXT,
@@ -163,7 +160,7 @@ struct Candidate {
     name: String,
     driver: String,
     family: u32,
-    /// Queues the family has, capped at [`QUEUES_AT_MOST`].
+    /// Queues the family has, capped at [`SUBMITTERS`] (more would go unused).
     queue_count: u32,
 }
 
@@ -646,7 +643,7 @@ fn pick_device(instance: &ash::Instance) -> Result<Candidate, Error> {
                         name,
                         driver,
                         family: family as u32,
-                        queue_count: families[family].queue_count.clamp(1, QUEUES_AT_MOST),
+                        queue_count: families[family].queue_count.clamp(1, SUBMITTERS as u32),
                     });
                 }
                 _ => seen.push(name),

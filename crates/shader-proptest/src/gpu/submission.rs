@@ -7,9 +7,9 @@ use ash::vk;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, MutexGuard};
 
-/// How many command buffers a device keeps for submissions; threads beyond that many wait for one.
-/// `run_checks` dispatches from ten threads at once.
-const SUBMITTERS: usize = 16;
+/// How many command buffers a device keeps for submissions (threads beyond that many wait for
+/// one), and the most queues it asks for. `run_checks` dispatches from ten threads at once.
+pub(crate) const SUBMITTERS: usize = 16;
 
 /// A command buffer, the pool it comes from and the fence its submission signals, made once and
 /// reused, with the lock that gives them to one thread at a time, from recording to the fence's
