@@ -4,6 +4,7 @@
 //! ones while they are large enough.
 
 use super::device::{Error, Gpu};
+use super::lock;
 use super::phases::{Phase, PhaseTimes};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
 use crate::kernel::WORKGROUP_SIZE;
@@ -152,7 +153,7 @@ impl<'g> ComputeKernel<'g> {
             (run.input.len().max(1) * 4) as u64,
             (run.output_words.max(1) * 4) as u64,
         );
-        let mut io = self.io.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        let mut io = lock(&self.io);
         if !io.as_ref().is_some_and(|io| io.holds(input_bytes, output_bytes)) {
             // The old buffers go first, so that only one set is alive at a time.
             *io = None;

@@ -1,5 +1,6 @@
 //! A Vulkan device with the validation layer on: any validation message fails the run.
 
+use super::lock;
 use super::submission::{Submission, SUBMITTERS};
 use crate::layout::LayoutError;
 use crate::shader::Feature;
@@ -147,9 +148,7 @@ unsafe extern "system" fn collect_message(
             CStr::from_ptr((*data).p_message).to_string_lossy().into_owned()
         };
         let messages = &*(user as *const Mutex<Vec<String>>);
-        if let Ok(mut messages) = messages.lock() {
-            messages.push(format!("{severity:?}: {text}"));
-        }
+        lock(messages).push(format!("{severity:?}: {text}"));
     }
     vk::FALSE
 }
@@ -312,7 +311,7 @@ impl Gpu {
 
     /// Fails with every validation message collected since the last call.
     pub fn check_messages(&self) -> Result<(), Error> {
-        let messages = std::mem::take(&mut *self.messages.lock().unwrap_or_else(|p| p.into_inner()));
+        let messages = std::mem::take(&mut *lock(&self.messages));
         if messages.is_empty() {
             Ok(())
         } else {

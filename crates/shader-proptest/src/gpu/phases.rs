@@ -27,7 +27,8 @@ pub enum Phase {
     /// buffers too).
     Upload,
     /// Recording, submitting and waiting for one dispatch, then reading the validation layer's
-    /// messages; with it, waiting for the turn on the device's queue while another thread submits.
+    /// messages; with it, waiting for a free command buffer, or for the queue while another thread
+    /// submits to it.
     Dispatch,
     /// Copying the output words out of the device's buffer.
     ReadBack,

@@ -3,6 +3,7 @@
 //! with.
 
 use super::device::{vulkan, Error};
+use super::lock;
 use ash::vk;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, MutexGuard};
@@ -179,11 +180,6 @@ fn submitter(device: &ash::Device, family: u32, queue: usize) -> Result<Submitte
             }
         }
     }
-}
-
-/// Locks `mutex`, whose data stays valid if a holder panicked.
-fn lock<T>(mutex: &Mutex<T>) -> MutexGuard<'_, T> {
-    mutex.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 #[cfg(test)]
