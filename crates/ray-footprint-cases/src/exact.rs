@@ -1,6 +1,7 @@
 //! What the independent references compute in f64 ([`crate::reference`]): derivatives by central
-//! differences with an estimate of their error, ray-plane and ray-triangle intersections solved as
-//! linear systems, angles between vectors, and the strategies of their geometric cases.
+//! differences with an estimate of their error, Snell's law, ray-plane and ray-triangle
+//! intersections solved as linear systems, angles between vectors, and the strategies of their
+//! geometric cases.
 
 use glam::{DMat3, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
@@ -60,6 +61,16 @@ pub fn derivative<T: Differentiable>(f: impl Fn(f64) -> T, step: f64, scale: f64
 /// The angle between two vectors, `atan2(|a x b|, a . b)`: accurate at every angle.
 pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))
+}
+
+/// The unit ray `d` refracted by Snell's law (`eta = n_incident / n_transmitted`) at the unit
+/// normal `n` on either side, as GLSL's `refract` with the normal turned to face the ray; `None`
+/// on total internal reflection.
+pub fn snell(d: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
+    let facing = if d.dot(n) > 0.0 { -n } else { n };
+    let cosine = d.dot(facing);
+    let k = 1.0 - eta * eta * (1.0 - cosine * cosine);
+    (k >= 0.0).then(|| d * eta - facing * (eta * cosine + k.sqrt()))
 }
 
 /// Where the ray `origin + s direction` meets the plane through `point` with normal `normal`.

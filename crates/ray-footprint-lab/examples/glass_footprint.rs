@@ -14,8 +14,9 @@
 //!
 //! - *Exact*: each pixel's ray is traced in f64 into the sphere, out of it by Snell's law and down
 //!   to the ground (`y = 0`); the rays 0.01 pixel to each side give the ground point's derivatives
-//!   per pixel by central differences, and the footprint's longer axis is the larger singular value
-//!   of that 3 x 2 Jacobian.
+//!   per pixel by central differences (`ray_footprint_cases::exact::derivative`, which also traces
+//!   the rays 0.02 pixel away for its error estimate), and the footprint's longer axis is the
+//!   larger singular value of that Jacobian.
 //! - *Cone*: the library's f32 functions as the renderer calls them: the pinhole cone of the ray,
 //!   refracted at both surfaces by `refract_ray_cone` with the normal's turn across the slanted
 //!   footprint, its footprint on the ground `|width| / |n . d|`. `refract_ray_cone` carries the
@@ -31,10 +32,12 @@
 //! `log2(footprint / exact longer axis)` in mip levels (positive: too wide, a blur), and over
 //! all pixels the mean, the mean magnitude and the 95th percentile.
 
-use glam::{DVec3, Vec3};
+use glam::{DVec2, DVec3, Vec3};
 use ray_footprint::ray_cone::{
     pinhole_ray_cone_for_ray, propagate, refract_ray_cone, width_at, world_footprint, RayCone,
 };
+use ray_footprint_cases::exact::{derivative, snell};
+use ray_footprint_lab::quality::footprint::singular_values;
 use ray_footprint_lab::rt::abi::RtPushConstants;
 use ray_footprint_lab::rt::{Camera, GLASS_CENTRE, GLASS_INDEX, GLASS_RADIUS};
 
@@ -101,8 +104,13 @@ fn sample_pixels(camera: &RtPushConstants) -> Vec<Sample> {
 
 fn sample_pixel(camera: &RtPushConstants, (x, y): (f64, f64)) -> Option<Sample> {
     let path = trace(camera, x, y)?;
-    let exact = exact_longer_axis(camera, x, y)?;
-    let cone = refracted_cone(camera, &path);
+    let exact = exact_longer_axis(camera, x, y, path.ground)?;
+    let eye_cone = pinhole_ray_cone_for_ray(
+        camera.cone.pixel_spread_angle,
+        path.direction.as_vec3(),
+        camera.forward,
+    );
+    let cone = refracted_cone(eye_cone, &path);
     let cone_footprint = f64::from(world_footprint(
         cone,
         path.to_ground as f32,
@@ -110,7 +118,7 @@ fn sample_pixel(camera: &RtPushConstants, (x, y): (f64, f64)) -> Option<Sample> 
         path.leaving.as_vec3(),
     ));
     let incidence = (-path.front.1.dot(path.direction)).acos().to_degrees();
-    let sections = two_width_footprint(camera, &path, cone);
+    let sections = two_width_footprint(eye_cone, &path, cone);
     Some(Sample {
         band: ((incidence / BAND_DEGREES) as usize).min(BANDS - 1),
         cone: (cone_footprint / exact).log2(),
@@ -146,14 +154,6 @@ fn sphere_distance(origin: DVec3, direction: DVec3, from_inside: bool) -> Option
     (discriminant >= 0.0 && distance > 1e-9).then_some(distance)
 }
 
-/// Snell's law for the unit `direction` at a surface whose unit `facing` normal points back at
-/// it, `eta` the index ratio; `None` on total internal reflection.
-fn refract(direction: DVec3, facing: DVec3, eta: f64) -> Option<DVec3> {
-    let cos_incidence = -facing.dot(direction);
-    let cos_squared = 1.0 - eta * eta * (1.0 - cos_incidence * cos_incidence);
-    (cos_squared >= 0.0).then(|| eta * direction + (eta * cos_incidence - cos_squared.sqrt()) * facing)
-}
-
 /// The path of the ray through `(x, y)`: into the sphere, out of it, down to the ground.
 fn trace(camera: &RtPushConstants, x: f64, y: f64) -> Option<Path> {
     let direction = pixel_direction(camera, x, y);
@@ -163,11 +163,11 @@ fn trace(camera: &RtPushConstants, x: f64, y: f64) -> Option<Path> {
     let front_distance = sphere_distance(eye, direction, false)?;
     let entry = eye + front_distance * direction;
     let front_normal = outward(entry);
-    let inside = refract(direction, front_normal, 1.0 / index)?;
+    let inside = snell(direction, front_normal, 1.0 / index)?;
     let back_distance = sphere_distance(entry, inside, true)?;
     let exit = entry + back_distance * inside;
     let back_normal = outward(exit);
-    let leaving = refract(inside, -back_normal, index)?;
+    let leaving = snell(inside, back_normal, index)?;
     let to_ground = -exit.y / leaving.y;
     (leaving.y < 0.0).then(|| Path {
         direction,
@@ -180,35 +180,31 @@ fn trace(camera: &RtPushConstants, x: f64, y: f64) -> Option<Path> {
     })
 }
 
-/// The longer axis of the exact footprint: the larger singular value of the ground point's
-/// derivatives per pixel (central differences of [`STEP`]).
-fn exact_longer_axis(camera: &RtPushConstants, x: f64, y: f64) -> Option<f64> {
-    let ground = |x: f64, y: f64| trace(camera, x, y).map(|path| path.ground);
-    let along_x = (ground(x + STEP, y)? - ground(x - STEP, y)?) / (2.0 * STEP);
-    let along_y = (ground(x, y + STEP)? - ground(x, y - STEP)?) / (2.0 * STEP);
-    Some(longer_axis(along_x, along_y))
+/// The longer axis of the exact footprint at the ground point `ground`: the larger singular value
+/// of the ground point's derivatives per pixel (central differences of [`STEP`]), or `None` where
+/// a neighbouring ray misses the glass or the ground.
+fn exact_longer_axis(camera: &RtPushConstants, x: f64, y: f64, ground: DVec3) -> Option<f64> {
+    let ground_at = |x: f64, y: f64| trace(camera, x, y).map_or(DVec3::NAN, |path| path.ground);
+    let scale = ground.length();
+    let along_x = derivative(|h| ground_at(x + h, y), STEP, scale).value;
+    let along_y = derivative(|h| ground_at(x, y + h), STEP, scale).value;
+    (along_x.is_finite() && along_y.is_finite()).then(|| longer_axis(along_x, along_y))
 }
 
-/// The longer semi-axis length, over 1, of the ellipse `a cos s + b sin s`: the square root of
-/// the larger eigenvalue of the Gram matrix of `a` and `b`.
+/// The longer semi-axis of the ellipse `a cos s + b sin s` that two vectors on the ground span:
+/// the larger singular value of the matrix of their `(x, z)` components (the ground is `y = 0`,
+/// so that is all of them).
 fn longer_axis(a: DVec3, b: DVec3) -> f64 {
-    let (aa, ab, bb) = (a.dot(a), a.dot(b), b.dot(b));
-    let half_trace = 0.5 * (aa + bb);
-    let determinant = aa * bb - ab * ab;
-    (half_trace + (half_trace * half_trace - determinant).max(0.0).sqrt()).sqrt()
+    let on_ground = |v: DVec3| DVec2::new(v.x, v.z);
+    singular_values(on_ground(a), on_ground(b)).0
 }
 
-/// The cone leaving the sphere, as the renderer's `cone_refraction` mode carries it: the pinhole
-/// cone refracted at the front and at the back, each time with the normal's turn across the
+/// The cone leaving the sphere, as the renderer's `cone_refraction` mode carries it: `eye_cone`,
+/// the ray's pinhole cone, refracted at the front and at the back, each time with the normal's turn across the
 /// slanted footprint (`rt_normal_spread`, curvature `1 / radius` on the outward normal's side).
-fn refracted_cone(camera: &RtPushConstants, path: &Path) -> RayCone {
+fn refracted_cone(eye_cone: RayCone, path: &Path) -> RayCone {
     let index = GLASS_INDEX;
     let curvature = 1.0 / GLASS_RADIUS;
-    let eye_cone = pinhole_ray_cone_for_ray(
-        camera.cone.pixel_spread_angle,
-        path.direction.as_vec3(),
-        camera.forward,
-    );
     let refract_at = |cone: RayCone, (distance, normal): (f64, DVec3), direction: DVec3, eta: f32| {
         let (distance, normal, direction) = (distance as f32, normal.as_vec3(), direction.as_vec3());
         let normal_spread = curvature * world_footprint(cone, distance, normal, direction);
@@ -236,19 +232,12 @@ fn sagittal_spread(width: f64, spread: f64, cos_incidence: f64, eta: f64, curvat
 }
 
 /// The footprint of a beam with the tangential section `cone` (leaving the sphere) and the
-/// sagittal section carried from the eye: the longer axis of the ellipse its two sections span
+/// sagittal section carried from `eye_cone` (a pinhole cone, of width 0): the longer axis of the ellipse its two sections span
 /// on the ground, each projected along the leaving ray; and the larger width slanted.
-fn two_width_footprint(camera: &RtPushConstants, path: &Path, cone: RayCone) -> Sections {
+fn two_width_footprint(eye_cone: RayCone, path: &Path, cone: RayCone) -> Sections {
     let index = f64::from(GLASS_INDEX);
     let radius = f64::from(GLASS_RADIUS);
-    let eye_spread = f64::from(
-        pinhole_ray_cone_for_ray(
-            camera.cone.pixel_spread_angle,
-            path.direction.as_vec3(),
-            camera.forward,
-        )
-        .spread_angle,
-    );
+    let eye_spread = f64::from(eye_cone.spread_angle);
     let (front_distance, front_normal) = path.front;
     let (back_distance, back_normal) = path.back;
     let mut width = eye_spread * front_distance;

@@ -12,7 +12,7 @@
 //! taken in UV units.
 
 use crate::rt::abi::RtPixelRecord;
-use glam::Vec2;
+use glam::DVec2;
 
 /// The mean distance in mip levels between the cones' footprints and the ray differential's over
 /// a mask, and how elongated the differential's footprints are there.
@@ -35,8 +35,8 @@ pub struct Footprints {
 /// The singular values `(s1, s2)`, `s1 >= s2 >= 0`, of the 2 x 2 matrix with columns `dx` and
 /// `dy`: with `S = |dx|^2 + |dy|^2` and `D = det`, `s1^2 = (S + sqrt(S^2 - 4 D^2)) / 2` and
 /// `s2 = |D| / s1` (their product is `|D|`; this form does not cancel for thin ellipses).
-pub fn singular_values(dx: Vec2, dy: Vec2) -> (f64, f64) {
-    let (a, b, c, d) = (f64::from(dx.x), f64::from(dx.y), f64::from(dy.x), f64::from(dy.y));
+pub fn singular_values(dx: DVec2, dy: DVec2) -> (f64, f64) {
+    let (a, b, c, d) = (dx.x, dx.y, dy.x, dy.y);
     let sum = a * a + b * b + c * c + d * d;
     let det = a * d - b * c;
     let root = (sum * sum - 4.0 * det * det).max(0.0).sqrt();
@@ -52,8 +52,8 @@ pub fn singular_values(dx: Vec2, dy: Vec2) -> (f64, f64) {
 pub fn footprints(records: &[RtPixelRecord], mask: &[bool]) -> Option<Footprints> {
     let mut rows = Vec::new();
     for (record, _) in records.iter().zip(mask).filter(|(r, &m)| m && r.hit == 1) {
-        let (s1, s2) = singular_values(record.diff.uv_dx, record.diff.uv_dy);
-        let (a1, a2) = singular_values(record.cone_uv_dx, record.cone_uv_dy);
+        let (s1, s2) = singular_values(record.diff.uv_dx.as_dvec2(), record.diff.uv_dy.as_dvec2());
+        let (a1, a2) = singular_values(record.cone_uv_dx.as_dvec2(), record.cone_uv_dy.as_dvec2());
         let isotropic = f64::from(record.gradient);
         if [s1, s2, a1, a2, isotropic]
             .iter()
@@ -88,20 +88,20 @@ pub fn footprints(records: &[RtPixelRecord], mask: &[bool]) -> Option<Footprints
 #[cfg(test)]
 mod tests {
     use super::singular_values;
-    use glam::Vec2;
+    use glam::DVec2;
 
     /// A rotation times diag(3, 0.5) has singular values 3 and 0.5; a diagonal matrix its absolute
     /// entries; a rank-one matrix one value of 0.
     #[test]
     fn singular_values_of_known_matrices() {
-        let (c, s) = (0.6f32, 0.8f32);
-        let (s1, s2) = singular_values(Vec2::new(3.0 * c, 3.0 * s), Vec2::new(-0.5 * s, 0.5 * c));
+        let (c, s) = (0.6f64, 0.8f64);
+        let (s1, s2) = singular_values(DVec2::new(3.0 * c, 3.0 * s), DVec2::new(-0.5 * s, 0.5 * c));
         assert!((s1 - 3.0).abs() < 1e-6 && (s2 - 0.5).abs() < 1e-6, "{s1} {s2}");
         assert_eq!(
-            singular_values(Vec2::new(-2.0, 0.0), Vec2::new(0.0, 4.0)),
+            singular_values(DVec2::new(-2.0, 0.0), DVec2::new(0.0, 4.0)),
             (4.0, 2.0)
         );
-        let (r1, r2) = singular_values(Vec2::new(1.0, 2.0), Vec2::new(2.0, 4.0));
+        let (r1, r2) = singular_values(DVec2::new(1.0, 2.0), DVec2::new(2.0, 4.0));
         assert_eq!((r1, r2), (5.0, 0.0));
     }
 }

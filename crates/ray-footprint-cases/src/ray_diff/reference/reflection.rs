@@ -5,7 +5,7 @@
 use super::super::{enclosure, Camera};
 use super::camera::image_plane_point;
 use super::{components, listed, widths};
-use crate::exact::{derivative, log_uniform, towards, unit};
+use crate::exact::{derivative, log_uniform, snell, towards, unit};
 use crate::reference::{Deviation, Kind, Reference};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
@@ -134,16 +134,6 @@ pub(in crate::ray_diff) fn reflect_ray_diff() -> Reference<(RayDiff, Vec3, Vec3,
             }))
         },
     )
-}
-
-/// The ray refracted by Snell's law (`eta = n_incident / n_transmitted`) at a unit normal on
-/// either side, as GLSL's `refract` with the normal turned to face the ray; `None` on total
-/// internal reflection.
-fn snell(d: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
-    let facing = if d.dot(n) > 0.0 { -n } else { n };
-    let cosine = d.dot(facing);
-    let k = 1.0 - eta * eta * (1.0 - cosine * cosine);
-    (k >= 0.0).then(|| d * eta - facing * (eta * cosine + k.sqrt()))
 }
 
 /// `rf_refract_ray_diff`.
