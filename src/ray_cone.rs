@@ -713,6 +713,74 @@ pub fn world_footprint(cone: RayCone, t: f32, normal: Vec3, direction: Vec3) -> 
     width_at(cone, t).abs() / normal.dot(direction).abs().max(MIN_COS)
 }
 
+/// The width of a round cone whose footprint on the surface is as long as the longer axis of the
+/// footprint of a beam with two sections (an astigmatic beam): `tangential_width` across the ray in
+/// the direction `cross(s, direction)` and `sagittal_width` along `s`, the unit part of
+/// `sagittal_axis` perpendicular to `direction`. Feed it to [`texture_lod`] or [`world_footprint`]
+/// (with spread 0) in place of a round cone's width; [`refract_sagittal_cone`] gives the sagittal
+/// section a refraction passes on, with `sagittal_axis = cross(direction, normal)` there.
+///
+/// The two sections span the ellipse `a cos phi + b sin phi` across the ray, `a = w_t t`,
+/// `b = w_s s`; projected along the unit `direction` onto the plane of the unit `normal` a vector
+/// `v` across the ray becomes `v - direction (n . v) / (n . d)`, so the ellipse on the surface has
+/// the Gram matrix `G = diag(w_t^2, w_s^2) + g g^T / c^2` with `g = (w_t n . t, w_s n . s)` and
+/// `c = max(|n . d|, MIN_COS)`. Its longer semi-axis is `sqrt(lambda)`, `lambda` the larger
+/// eigenvalue of `G`, and the width returned is `c sqrt(lambda)`: the round cone of that width has
+/// the footprint `c sqrt(lambda) / c` ([`world_footprint`]). The widths are divided by the larger
+/// magnitude (at least `MIN_MAGNITUDE`) before squaring and the result multiplied back. With equal
+/// widths this is `|w|` (a round cone); head on (`c = 1`) it is `max(|w_t|, |w_s|)`; where
+/// `sagittal_axis` has no part across the ray (below `MIN_MAGNITUDE`: zero, or along the ray) it is
+/// `max(|w_t|, |w_s|)` too.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::two_section_width;
+///
+/// // A beam 1 cm wide in the plane of incidence (xz) and 3 cm across it (y) meets the floor 60
+/// // degrees from the normal: the in-plane section is stretched to 1 / cos 60° = 2 cm, so the
+/// // longer axis is the 3 cm one, left as it was: the round cone with that footprint at 60 degrees
+/// // is 3 cm x cos 60° = 1.5 cm wide.
+/// let angle = 60f32.to_radians();
+/// let direction = Vec3::new(angle.sin(), 0.0, -angle.cos());
+/// let width = two_section_width(0.01, 0.03, Vec3::Y, Vec3::Z, direction);
+/// assert!((width - 0.015).abs() < 1e-6);
+/// // With the sections swapped the stretched 3 cm section is 6 cm long: the round cone is 3 cm.
+/// let swapped = two_section_width(0.03, 0.01, Vec3::Y, Vec3::Z, direction);
+/// assert!((swapped - 0.03).abs() < 1e-6);
+/// ```
+pub fn two_section_width(
+    tangential_width: f32,
+    sagittal_width: f32,
+    sagittal_axis: Vec3,
+    normal: Vec3,
+    direction: Vec3,
+) -> f32 {
+    let larger_width = tangential_width.abs().max(sagittal_width.abs());
+    let across = sagittal_axis - sagittal_axis.dot(direction) * direction;
+    let across_length = across.length();
+    if across_length < MIN_MAGNITUDE {
+        return larger_width;
+    }
+    let sagittal = across / across_length;
+    let tangential = sagittal.cross(direction);
+    let cosine = normal.dot(direction).abs().max(MIN_COS);
+    let scale = larger_width.max(MIN_MAGNITUDE);
+    let (tangential_share, sagittal_share) = (tangential_width / scale, sagittal_width / scale);
+    let tangential_tilt = tangential_share * normal.dot(tangential);
+    let sagittal_tilt = sagittal_share * normal.dot(sagittal);
+    let squared_cos = cosine * cosine;
+    let tangential_square =
+        squared_cos * tangential_share * tangential_share + tangential_tilt * tangential_tilt;
+    let sagittal_square = squared_cos * sagittal_share * sagittal_share + sagittal_tilt * sagittal_tilt;
+    let half_sum = 0.5 * (tangential_square + sagittal_square);
+    let half_difference = 0.5 * (tangential_square - sagittal_square);
+    let off_diagonal = tangential_tilt * sagittal_tilt;
+    let larger = half_sum + (half_difference * half_difference + off_diagonal * off_diagonal).sqrt();
+    scale * larger.sqrt()
+}
+
 /// Twice the world-space area of a triangle: `|cross(p1 - p0, p2 - p0)|` (RTG Eq. 4, `p_a`).
 ///
 /// The cross product `c` is measured as `m * |c / m|` with `m` its largest component (at least
@@ -1088,6 +1156,73 @@ pub fn refract_ray_cone(
             spread_angle: refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt,
         },
         total_internal_reflection: false,
+    }
+}
+
+/// The sagittal section of a cone crossing a refraction: the section across the plane of incidence,
+/// which [`refract_ray_cone`] (the section in that plane, the tangential one) does not follow.
+/// Coddington's sagittal equation (Kingslake, *Lens Design Fundamentals*, ch. 4; Born and Wolf,
+/// *Principles of Optics*, §4.6), `n' / s' - n / s = (n' cos t - n cos i) k`, written for a cone of
+/// width `w` and spread `alpha` and divided by `n'`: the width is kept and
+/// `spread' = eta alpha + (eta cos i - cos t) beta`, with `beta = k w` the normal's turn across the
+/// section (the section lies in the surface's tangent plane, so it is not slanted). At normal
+/// incidence this is the tangential section's `eta (alpha + beta) - beta` ([`refract_ray_cone`] to
+/// first order): the two sections differ only off the normal.
+///
+/// Arguments as [`refract_ray_cone`] takes them, for the sagittal section: `cone` at the hit, unit
+/// `normal` and `direction`, `normal_spread_angle` the normal's turn across the section, positive
+/// where the normals spread apart (`k |w|` for a curvature `k` across the plane of incidence, convex
+/// on the side `normal` points to), `eta = n_incident / n_transmitted` (clamped to `>= 0`); the
+/// normal may face either way (flipped with the normal spread when `dot(n, d) > 0`). `beta` takes
+/// the width's sign and is clamped to `MAX_NORMAL_SPREAD` in magnitude. Where `eta sin i > 1` the
+/// central ray is totally internally reflected, and the reflected section is returned:
+/// `spread' = alpha + 2 cos i beta`, the sagittal mirror equation `1 / s' + 1 / s = 2 cos i k`.
+/// The section's axis is `cross(direction, normal)`, the same before and after the surface.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::{refract_sagittal_cone, RayCone};
+///
+/// // A parallel beam 2 mm wide enters a glass ball of radius 1 (eta = 1 / 1.5) at 30 degrees. Its
+/// // edge rays across the plane of incidence meet normals turned by +-0.001 about the ray's axis
+/// // and bend toward each other: (eta cos i - cos t) beta with beta = 0.002.
+/// let angle = 30f32.to_radians();
+/// let direction = Vec3::new(angle.sin(), 0.0, -angle.cos());
+/// let eta = 1.0 / 1.5;
+/// let cone = RayCone { width: 0.002, spread_angle: 0.0 };
+/// let sagittal = refract_sagittal_cone(cone, Vec3::Z, direction, 0.002, eta);
+/// let cos_t = (1.0 - eta * eta * angle.sin() * angle.sin()).sqrt();
+/// let expected = (eta * angle.cos() - cos_t) * 0.002;
+/// assert_eq!(sagittal.width, 0.002);
+/// assert!((sagittal.spread_angle - expected).abs() < 1e-6 * expected.abs());
+/// ```
+pub fn refract_sagittal_cone(
+    cone: RayCone,
+    normal: Vec3,
+    direction: Vec3,
+    normal_spread_angle: f32,
+    eta: f32,
+) -> RayCone {
+    let cosine = normal.dot(direction);
+    let facing_spread = if cosine > 0.0 {
+        -normal_spread_angle
+    } else {
+        normal_spread_angle
+    };
+    let incidence = incidence_sin_cos(normal, direction, cosine);
+    let index = eta.max(0.0);
+    let turn = 2.0 * normal_tilt(cone.width, facing_spread);
+    let spread_angle = if index * incidence.x > 1.0 {
+        cone.spread_angle + 2.0 * incidence.y * turn
+    } else {
+        let transmitted = refracted_sin_cos(incidence, index);
+        index * cone.spread_angle + (index * incidence.y - transmitted.y) * turn
+    };
+    RayCone {
+        width: cone.width,
+        spread_angle,
     }
 }
 

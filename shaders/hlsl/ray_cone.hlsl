@@ -297,6 +297,35 @@ float rf_world_footprint(RfRayCone cone, float t, float3 normal, float3 directio
     return abs(rf_width_at(cone, t)) / max(abs(dot(normal, direction)), RF_MIN_COS);
 }
 
+// The width of the round cone whose footprint is as long as the longer axis of a two-section beam's:
+// widths w_t across the ray along cross(s, d) and w_s along s, the unit part of sagittal_axis across
+// the ray. Its ellipse on the surface has the Gram matrix diag(w_t^2, w_s^2) + g g^T / c^2 with
+// g = (w_t n.s_t, w_s n.s), c = max(|n.d|, RF_MIN_COS); the width is c sqrt(largest eigenvalue), the
+// widths scaled by the larger (>= RF_MIN_MAGNITUDE) before squaring. max(|w_t|, |w_s|) where
+// sagittal_axis has no part across the ray (below RF_MIN_MAGNITUDE).
+float rf_two_section_width(float tangential_width, float sagittal_width, float3 sagittal_axis, float3 normal,
+    float3 direction) {
+    float larger_width = max(abs(tangential_width), abs(sagittal_width));
+    float3 across = sagittal_axis - dot(sagittal_axis, direction) * direction;
+    float across_length = length(across);
+    float3 sagittal = across / max(across_length, RF_MIN_MAGNITUDE);
+    float3 tangential = cross(sagittal, direction);
+    float cosine = max(abs(dot(normal, direction)), RF_MIN_COS);
+    float scale = max(larger_width, RF_MIN_MAGNITUDE);
+    float tangential_share = tangential_width / scale;
+    float sagittal_share = sagittal_width / scale;
+    float tangential_tilt = tangential_share * dot(normal, tangential);
+    float sagittal_tilt = sagittal_share * dot(normal, sagittal);
+    float squared_cos = cosine * cosine;
+    float tangential_square = squared_cos * tangential_share * tangential_share + tangential_tilt * tangential_tilt;
+    float sagittal_square = squared_cos * sagittal_share * sagittal_share + sagittal_tilt * sagittal_tilt;
+    float half_sum = 0.5 * (tangential_square + sagittal_square);
+    float half_difference = 0.5 * (tangential_square - sagittal_square);
+    float off_diagonal = tangential_tilt * sagittal_tilt;
+    float larger = half_sum + sqrt(half_difference * half_difference + off_diagonal * off_diagonal);
+    return across_length < RF_MIN_MAGNITUDE ? larger_width : scale * sqrt(larger);
+}
+
 // Twice the triangle's world-space area, |cross(p1 - p0, p2 - p0)| (RTG Eq. 4), computed as
 // m |c / m| with m the largest |component| (at least RF_MIN_MAGNITUDE) so no square overflows.
 float rf_triangle_world_area2(float3 p0, float3 p1, float3 p2) {
@@ -483,6 +512,25 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, float3 normal, float3 dir
     };
     RfRefractedRayCone result = { leaving, total_internal_reflection };
     return result;
+}
+
+// The sagittal section of a cone crossing a refraction (Coddington's sagittal equation, first order):
+// width kept, spread' = eta spread + (eta cos i - cos t) beta, beta the normal's turn across the
+// section with the width's sign (clamped to RF_MAX_NORMAL_SPREAD). eta sin i > 1: the reflected
+// section, spread + 2 cos i beta. Arguments as rf_refract_ray_cone takes them. Both are evaluated and
+// one selected: no branch.
+RfRayCone rf_refract_sagittal_cone(RfRayCone cone, float3 normal, float3 direction, float normal_spread_angle,
+    float eta) {
+    float cosine = dot(normal, direction);
+    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    float2 incidence = rf_incidence_sin_cos(normal, direction, cosine);
+    float index = max(eta, 0.0);
+    float turn = 2.0 * rf_normal_tilt(cone.width, facing_spread);
+    float2 transmitted = rf_refracted_sin_cos(incidence, index);
+    float refracted_spread = index * cone.spread_angle + (index * incidence.y - transmitted.y) * turn;
+    float reflected_spread = cone.spread_angle + 2.0 * incidence.y * turn;
+    RfRayCone leaving = { cone.width, index * incidence.x > 1.0 ? reflected_spread : refracted_spread };
+    return leaving;
 }
 
 // The spread a rough surface adds (JCGT 2021; Falcor's roughnessToSpread): with the perceptual

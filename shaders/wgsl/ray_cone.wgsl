@@ -283,6 +283,36 @@ fn rf_world_footprint(cone: RfRayCone, t: f32, normal: vec3<f32>, direction: vec
     return abs(rf_width_at(cone, t)) / max(abs(dot(normal, direction)), RF_MIN_COS);
 }
 
+// The width of the round cone whose footprint is as long as the longer axis of a two-section beam's:
+// widths w_t across the ray along cross(s, d) and w_s along s, the unit part of sagittal_axis across
+// the ray. Its ellipse on the surface has the Gram matrix diag(w_t^2, w_s^2) + g g^T / c^2 with
+// g = (w_t n.s_t, w_s n.s), c = max(|n.d|, RF_MIN_COS); the width is c sqrt(largest eigenvalue), the
+// widths scaled by the larger (>= RF_MIN_MAGNITUDE) before squaring. max(|w_t|, |w_s|) where
+// sagittal_axis has no part across the ray (below RF_MIN_MAGNITUDE).
+fn rf_two_section_width(
+    tangential_width: f32, sagittal_width: f32, sagittal_axis: vec3<f32>, normal: vec3<f32>, direction: vec3<f32>,
+) -> f32 {
+    let larger_width = max(abs(tangential_width), abs(sagittal_width));
+    let across = sagittal_axis - dot(sagittal_axis, direction) * direction;
+    let across_length = length(across);
+    let sagittal = across / max(across_length, RF_MIN_MAGNITUDE);
+    let tangential = cross(sagittal, direction);
+    let cosine = max(abs(dot(normal, direction)), RF_MIN_COS);
+    let scale = max(larger_width, RF_MIN_MAGNITUDE);
+    let tangential_share = tangential_width / scale;
+    let sagittal_share = sagittal_width / scale;
+    let tangential_tilt = tangential_share * dot(normal, tangential);
+    let sagittal_tilt = sagittal_share * dot(normal, sagittal);
+    let squared_cos = cosine * cosine;
+    let tangential_square = squared_cos * tangential_share * tangential_share + tangential_tilt * tangential_tilt;
+    let sagittal_square = squared_cos * sagittal_share * sagittal_share + sagittal_tilt * sagittal_tilt;
+    let half_sum = 0.5 * (tangential_square + sagittal_square);
+    let half_difference = 0.5 * (tangential_square - sagittal_square);
+    let off_diagonal = tangential_tilt * sagittal_tilt;
+    let larger = half_sum + sqrt(half_difference * half_difference + off_diagonal * off_diagonal);
+    return select(scale * sqrt(larger), larger_width, across_length < RF_MIN_MAGNITUDE);
+}
+
 // Twice the world-space triangle area: |cross(p1 - p0, p2 - p0)| (RTG Eq. 4), measured as
 // m * |c / m| with m the largest component (>= RF_MIN_MAGNITUDE) so squaring cannot overflow.
 fn rf_triangle_world_area2(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>) -> f32 {
@@ -474,6 +504,25 @@ fn rf_refract_ray_cone(
         ),
         total_internal_reflection,
     );
+}
+
+// The sagittal section of a cone crossing a refraction (Coddington's sagittal equation, first order):
+// width kept, spread' = eta spread + (eta cos i - cos t) beta, beta the normal's turn across the
+// section with the width's sign (clamped to RF_MAX_NORMAL_SPREAD). eta sin i > 1: the reflected
+// section, spread + 2 cos i beta. Arguments as rf_refract_ray_cone takes them. Both are evaluated and
+// one selected: no branch.
+fn rf_refract_sagittal_cone(
+    cone: RfRayCone, normal: vec3<f32>, direction: vec3<f32>, normal_spread_angle: f32, eta: f32,
+) -> RfRayCone {
+    let cosine = dot(normal, direction);
+    let facing_spread = select(normal_spread_angle, -normal_spread_angle, cosine > 0.0);
+    let incidence = rf_incidence_sin_cos(normal, direction, cosine);
+    let index = max(eta, 0.0);
+    let turn = 2.0 * rf_normal_tilt(cone.width, facing_spread);
+    let transmitted = rf_refracted_sin_cos(incidence, index);
+    let refracted_spread = index * cone.spread_angle + (index * incidence.y - transmitted.y) * turn;
+    let reflected_spread = cone.spread_angle + 2.0 * incidence.y * turn;
+    return RfRayCone(cone.width, select(refracted_spread, reflected_spread, index * incidence.x > 1.0));
 }
 
 // Spread added by roughness (JCGT 2021; Falcor roughnessToSpread): alpha = r^2 (r perceptual, clamped

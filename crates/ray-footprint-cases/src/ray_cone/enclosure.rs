@@ -208,6 +208,81 @@ pub(super) fn refract_ray_cone(args: &RefractArgs) -> Vec<Interval> {
     )
 }
 
+/// `rf_refract_sagittal_cone` for one normal orientation (`facing_spread`): the hull of the
+/// reflected and the refracted section where `eta sin i` is within rounding of 1.
+fn sagittal_facing(
+    &(cone, normal, direction, _, eta): &RefractArgs,
+    cosine: Interval,
+    facing_spread: f32,
+) -> Vec<Interval> {
+    let incidence = incidence_sin_cos(normal, direction, cosine);
+    let index = eta.max(0.0);
+    let signed_half = if cone.width < 0.0 { -0.5 } else { 0.5 };
+    let turn = Interval::c(2.0)
+        * (Interval::c(signed_half)
+            * Interval::exact(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD)));
+    let spread = Interval::exact(cone.spread_angle);
+    let sin_t = Interval::exact(index) * incidence.0[0];
+    let leaving_spread = select(
+        sin_t.lo > 1.0,
+        sin_t.hi > 1.0,
+        || vec![spread + Interval::c(2.0) * incidence.0[1] * turn],
+        || {
+            let transmitted = refracted_sin_cos(incidence, index);
+            let index = Interval::exact(index);
+            vec![index * spread + (index * incidence.0[1] - transmitted.0[1]) * turn]
+        },
+    )[0];
+    vec![Interval::exact(cone.width), leaving_spread]
+}
+
+pub(super) fn refract_sagittal_cone(args: &RefractArgs) -> Vec<Interval> {
+    let &(_, normal, direction, beta, _) = args;
+    let cosine = interval3(normal).dot(interval3(direction));
+    select(
+        cosine.lo > 0.0,
+        cosine.hi > 0.0,
+        || sagittal_facing(args, cosine, -beta),
+        || sagittal_facing(args, cosine, beta),
+    )
+}
+
+/// `rf_two_section_width`, in the same order of operations.
+pub(super) fn two_section_width(
+    &(tangential_width, sagittal_width, axis, normal, direction): &(f32, f32, Vec3, Vec3, Vec3),
+) -> Interval {
+    let larger_width = Interval::exact(tangential_width.abs().max(sagittal_width.abs()));
+    let (axis, normal, direction) = (interval3(axis), interval3(normal), interval3(direction));
+    let across = axis - direction * axis.dot(direction);
+    let across_length = across.dot(across).sqrt();
+    let min = f64::from(MIN_MAGNITUDE);
+    select(
+        across_length.hi < min,
+        across_length.lo < min,
+        || vec![larger_width],
+        || {
+            let sagittal = across / across_length.at_least(min);
+            let tangential = sagittal.cross(direction);
+            let cosine = normal.dot(direction).abs().max_c(f64::from(MIN_COS));
+            let scale = larger_width.max_c(min);
+            let tangential_share = Interval::exact(tangential_width) / scale;
+            let sagittal_share = Interval::exact(sagittal_width) / scale;
+            let tangential_tilt = tangential_share * normal.dot(tangential);
+            let sagittal_tilt = sagittal_share * normal.dot(sagittal);
+            let squared_cos = cosine * cosine;
+            let tangential_square =
+                squared_cos * tangential_share * tangential_share + tangential_tilt * tangential_tilt;
+            let sagittal_square =
+                squared_cos * sagittal_share * sagittal_share + sagittal_tilt * sagittal_tilt;
+            let half_sum = Interval::c(0.5) * (tangential_square + sagittal_square);
+            let half_difference = Interval::c(0.5) * (tangential_square - sagittal_square);
+            let off_diagonal = tangential_tilt * sagittal_tilt;
+            let larger = half_sum + (half_difference * half_difference + off_diagonal * off_diagonal).sqrt();
+            vec![scale * larger.sqrt()]
+        },
+    )[0]
+}
+
 pub(super) fn roughness_spread_angle(roughness: f32) -> Interval {
     let r = Interval::exact(roughness.clamp(0.0, 1.0));
     let alpha = r * r;

@@ -2,17 +2,19 @@
 
 use super::bound::{area_corners, clamped_cos, uv_area2_error, width_at_error, world_area2_error};
 use super::strategy::{ray_cone, triangle_with_uvs};
-use super::{reference, TextureLodArgs, MODULE};
+use super::{enclosure, reference, TextureLodArgs, MODULE};
 use crate::degenerate::{cone, grazing, mirror, same, value, HEAD_ON, INF, IN_PLANE, NAN};
 use crate::record::Record;
 use crate::special::Perturb;
 use crate::strategy::{
-    angle, distance, image_size, normal_and_direction, pixels, scalar, triangle, uv_triangle,
+    angle, distance, image_size, normal_and_direction, pixels, scalar, triangle, unit_vec3, uv_triangle,
+    vec3, HUGE,
 };
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
 use shader_proptest::draw::uniform;
+use shader_proptest::one_of;
 use shader_proptest::tolerance::{dot_error, log2_error, ulps, ULP};
 use shader_proptest::{Args, Value};
 
@@ -69,6 +71,95 @@ pub fn world_footprint() -> Record<impl Args + Perturb, impl Value> {
             "NaN in (t)",
             "CPU: NaN",
             (cone(0.0, 0.001), NAN, z, HEAD_ON),
+            vec![NAN],
+        ),
+    ])
+}
+
+/// `rf_two_section_width`: the enclosure of the width.
+pub fn two_section_width() -> Record<impl Args + Perturb, impl Value> {
+    let z = Vec3::Z;
+    let sixty_degrees = Vec3::new(0.866_025_4, 0.0, -0.5);
+    Record::new(
+        MODULE,
+        "two_section_width",
+        |(tangential, sagittal, axis, normal, direction)| {
+            rc::two_section_width(tangential, sagittal, axis, normal, direction)
+        },
+        || {
+            // The axis as a refraction leaves it (across the plane of incidence), any unit vector,
+            // any vector, or none.
+            let axis = one_of![
+                3 => Just(None),
+                2 => unit_vec3().prop_map(Some),
+                1 => vec3().prop_map(Some),
+                1 => Just(Some(Vec3::ZERO)),
+            ];
+            (scalar(), scalar(), axis, normal_and_direction())
+                .prop_map(|(tangential, sagittal, axis, (n, d))| {
+                    let axis = axis.unwrap_or_else(|| d.cross(n));
+                    (tangential, sagittal, axis, n, d)
+                })
+                .boxed()
+        },
+    )
+    .conditioned(
+        "a width or the axis beyond the domain's magnitudes (1e12), where the enclosure's products \
+         overflow, or an axis within 1e-4 of the ray's line, whose part across the ray is rounding \
+         and points anywhere",
+        |&(tangential, sagittal, axis, _, direction)| {
+            let across = axis - axis.dot(direction) * direction;
+            let in_domain =
+                tangential.abs() <= HUGE && sagittal.abs() <= HUGE && axis.abs().max_element() <= HUGE;
+            in_domain && across.length() >= 1.0e-4 * axis.length()
+        },
+    )
+    .enclosure(|args| vec![enclosure::two_section_width(args)])
+    .reference(reference::two_section_width_sampled())
+    .reference(reference::two_section_width_limits())
+    .fuzz(|d| (d.scalar(), d.scalar(), d.vec3(), d.unit(), d.unit()))
+    .range(0.0, f32::MAX, "width")
+    .degenerate(vec![
+        value(
+            "zero axis",
+            "max(|w_t|, |w_s|)",
+            (0.01, -0.03, Vec3::ZERO, z, sixty_degrees),
+            vec![0.03],
+        ),
+        same(
+            "axis along the ray",
+            "as the zero axis",
+            (0.01, -0.03, sixty_degrees, z, sixty_degrees),
+            (0.01, -0.03, Vec3::ZERO, z, sixty_degrees),
+        ),
+        value(
+            "both widths 0",
+            "0",
+            (0.0, 0.0, Vec3::Y, z, sixty_degrees),
+            vec![0.0],
+        ),
+        value(
+            "ray in the surface plane (dot(n, d) = 0), equal widths",
+            "|w|: a round cone at any slant",
+            (0.5, 0.5, Vec3::Y, z, IN_PLANE),
+            vec![0.5],
+        ),
+        same(
+            "grazing (|dot(n, d)| = 1e-6)",
+            "as dot(n, d) = 0",
+            (0.01, 0.03, Vec3::Y, z, grazing()),
+            (0.01, 0.03, Vec3::Y, z, IN_PLANE),
+        ),
+        same(
+            "axis not across the ray and not unit",
+            "as its unit part across the ray",
+            (0.01, 0.03, Vec3::new(1.0, 2.0, 0.0), z, HEAD_ON),
+            (0.01, 0.03, Vec3::new(0.447_213_6, 0.894_427_2, 0.0), z, HEAD_ON),
+        ),
+        mirror(
+            "NaN width",
+            "CPU: NaN",
+            (NAN, 0.01, Vec3::Y, z, HEAD_ON),
             vec![NAN],
         ),
     ])
@@ -391,6 +482,7 @@ pub fn environment_lod() -> Record<impl Args + Perturb, impl Value> {
 pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
     records![
         world_footprint,
+        two_section_width,
         triangle_world_area2,
         triangle_uv_area2,
         texel_density,

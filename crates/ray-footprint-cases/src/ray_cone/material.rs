@@ -9,7 +9,7 @@ use crate::strategy::{angle, normal_and_direction, one_argument, scalar};
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{
-    self as rc, RefractedRayCone, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_ROUGHNESS_DENOMINATOR,
+    self as rc, RayCone, RefractedRayCone, MAX_INCIDENCE_ANGLE, MAX_NORMAL_SPREAD, MIN_ROUGHNESS_DENOMINATOR,
 };
 use shader_proptest::draw::uniform;
 use shader_proptest::one_of;
@@ -103,6 +103,94 @@ pub fn refract_ray_cone() -> Record<RefractArgs, RefractedRayCone> {
     ])
 }
 
+/// `rf_refract_sagittal_cone`: the enclosure of the sagittal section.
+pub fn refract_sagittal_cone() -> Record<RefractArgs, RayCone> {
+    let z = Vec3::Z;
+    let thirty_degrees = Vec3::new(0.5, 0.0, -0.866_025_4);
+    let past_critical = Vec3::new(0.8, 0.0, -0.6);
+    Record::new(
+        MODULE,
+        "refract_sagittal_cone",
+        |(cone, n, d, beta, eta)| rc::refract_sagittal_cone(cone, n, d, beta, eta),
+        || {
+            (ray_cone(), normal_and_direction(), any::<bool>(), angle(), eta())
+                .prop_map(|(cone, (n, d), behind, beta, eta)| {
+                    (cone, if behind { -n } else { n }, d, beta, eta)
+                })
+                .boxed()
+        },
+    )
+    .conditioned(
+        "within rounding of grazing or of the critical angle: which side of the normal the ray \
+         meets, or whether it is totally internally reflected, may go either way",
+        refraction_decided,
+    )
+    .enclosure(enclosure::refract_sagittal_cone)
+    .reference(reference::sagittal_curved())
+    .reference(reference::sagittal_normal_incidence())
+    .reference(reference::sagittal_total_internal_reflection())
+    .fuzz(|d| (d.cone(), d.unit(), d.unit(), d.angle(), d.scalar()))
+    .degenerate(vec![
+        value(
+            "normal incidence, flat, no spread (eta 1.5)",
+            "(width, 0)",
+            (cone(0.5, 0.0), z, HEAD_ON, 0.0, 1.5),
+            vec![0.5, 0.0],
+        ),
+        value(
+            "zero cone",
+            "zero cone",
+            (cone(0.0, 0.0), z, thirty_degrees, 0.0, 1.5),
+            vec![0.0, 0.0],
+        ),
+        value(
+            "central ray past the critical angle (sin i = 0.8, eta 1.5)",
+            "the reflected section (width, spread + 2 cos i beta)",
+            (cone(0.25, 0.125), z, past_critical, 0.0625, 1.5),
+            vec![0.25, 0.125 + 2.0 * 0.6 * 0.0625],
+        ),
+        same(
+            "normal facing away from the ray (dot(n, d) > 0)",
+            "as the flipped normal with the negated normal spread",
+            (cone(0.01, 0.002), -z, thirty_degrees, 0.01, 1.5),
+            (cone(0.01, 0.002), z, thirty_degrees, -0.01, 1.5),
+        ),
+        value(
+            "negative width (past a focus), 30 degrees, eta 1.5",
+            "beta takes the width's sign: eta spread - (eta cos i - cos t) beta",
+            (cone(-0.01, 0.002), z, thirty_degrees, 0.01, 1.5),
+            vec![
+                -0.01,
+                1.5 * 0.002 - (1.5 * 0.866_025_4 - (1.0f32 - 2.25 * 0.25).sqrt()) * 0.01,
+            ],
+        ),
+        value(
+            "ray in the surface plane (dot(n, d) = 0), eta 0.5",
+            "eta spread - cos t beta, cos t = sqrt(1 - eta^2)",
+            (cone(0.01, 0.002), z, IN_PLANE, 0.01, 0.5),
+            vec![0.01, 0.5 * 0.002 - 0.75f32.sqrt() * 0.01],
+        ),
+        same(
+            "normal spread 10",
+            "as MAX_NORMAL_SPREAD",
+            (cone(0.01, 0.002), z, thirty_degrees, 10.0, 1.5),
+            (cone(0.01, 0.002), z, thirty_degrees, MAX_NORMAL_SPREAD, 1.5),
+        ),
+        same(
+            "negative eta",
+            "as eta 0",
+            (cone(0.01, 0.002), z, thirty_degrees, 0.01, -2.0),
+            (cone(0.01, 0.002), z, thirty_degrees, 0.01, 0.0),
+        ),
+        same(
+            "zero direction",
+            "as normal incidence (d = -n)",
+            (cone(0.5, 0.01), z, Vec3::ZERO, 0.01, 1.5),
+            (cone(0.5, 0.01), z, HEAD_ON, 0.01, 1.5),
+        ),
+    ])
+}
+
 /// `rf_roughness_spread_angle`: the enclosure of the spread.
 pub fn roughness_spread_angle() -> Record<(f32,), f32> {
     Record::new(
@@ -141,5 +229,5 @@ pub fn roughness_spread_angle() -> Record<(f32,), f32> {
 
 /// This section's records, in the module's order.
 pub(super) fn records() -> Vec<Box<dyn crate::Function>> {
-    records![refract_ray_cone, roughness_spread_angle]
+    records![refract_ray_cone, refract_sagittal_cone, roughness_spread_angle]
 }

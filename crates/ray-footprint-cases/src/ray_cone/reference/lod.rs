@@ -71,6 +71,117 @@ pub(in crate::ray_cone) fn world_footprint() -> Reference<(RayCone, f32, Vec3, V
     )
 }
 
+/// The arguments of `rf_two_section_width`: tangential width, sagittal width, sagittal axis,
+/// normal, direction.
+type TwoSectionArgs = (f32, f32, Vec3, Vec3, Vec3);
+
+/// A two-section beam meeting a surface: widths from 1e-4 to 10 of either sign, a unit normal,
+/// a unit direction meeting it at `|cos|` from 0.05 to 1, and the sagittal axis: a unit vector
+/// across the ray turned by `turn` from the plane of incidence's normal `cross(d, n)`.
+fn two_section_beam() -> BoxedStrategy<(f64, f64, f64, DVec3, DVec3)> {
+    (
+        signed_log(-4.0, 1.0),
+        signed_log(-4.0, 1.0),
+        0.0f64..6.3,
+        unit(),
+        0.05f64..1.0,
+        0.0f64..6.3,
+    )
+        .prop_map(|(tangential, sagittal, turn, n, cosine, angle)| {
+            (tangential, sagittal, turn, n, towards(n, cosine, angle))
+        })
+        .boxed()
+}
+
+/// The unit vectors across `d` (unit) that a turn of `turn` from `cross(d, n)` gives: the sagittal
+/// axis and the tangential one, `cross(sagittal, d)`.
+fn section_axes(n: DVec3, d: DVec3, turn: f64) -> (DVec3, DVec3) {
+    let first = d
+        .cross(n)
+        .try_normalize()
+        .unwrap_or_else(|| d.any_orthonormal_vector());
+    let second = first.cross(d);
+    let sagittal = first * turn.cos() + second * turn.sin();
+    (sagittal, sagittal.cross(d))
+}
+
+/// The longer semi-axis of the footprint that the rays `p(phi) + s d` leave on the plane through
+/// the origin with normal `n`, `p(phi) = a cos phi + b sin phi` across `d`: each ray intersected
+/// with the plane ([`plane_hit`]), the distance from the origin maximized over `phi` by 3,600
+/// samples and a ternary search about the best one (the distance squared is a sinusoid of
+/// `2 phi`, with one maximum in every half turn).
+fn sampled_longer_axis(a: DVec3, b: DVec3, n: DVec3, d: DVec3) -> f64 {
+    let reach = |phi: f64| plane_hit(a * phi.cos() + b * phi.sin(), d, DVec3::ZERO, n).length();
+    let step = PI / 3600.0;
+    let best = (0..3600)
+        .map(|k| f64::from(k) * step)
+        .max_by(|x, y| reach(*x).total_cmp(&reach(*y)))
+        .unwrap_or(0.0);
+    let (mut low, mut high) = (best - step, best + step);
+    for _ in 0..100 {
+        let (left, right) = (low + (high - low) / 3.0, high - (high - low) / 3.0);
+        if reach(left) < reach(right) {
+            low = left;
+        } else {
+            high = right;
+        }
+    }
+    reach(0.5 * (low + high))
+}
+
+/// `rf_two_section_width`: the ellipse's rays intersected with the surface.
+pub(in crate::ray_cone) fn two_section_width_sampled() -> Reference<TwoSectionArgs, f32> {
+    Reference::new(
+        Kind::ExactGeometry,
+        "the beam's rays around its two sections (a = w_t t, b = w_s s across the ray) each intersected with the surface in f64, the longest distance from the hit found by sampling and a ternary search; times |cos|",
+        two_section_beam,
+        |&(tangential, sagittal, turn, n, d), two_section_width| {
+            let (sagittal_axis, _) = section_axes(n, d, turn);
+            let args = (tangential as f32, sagittal as f32, sagittal_axis.as_vec3(), n.as_vec3(), d.as_vec3());
+            let got = two_section_width(args);
+            let (n, d) = (args.3.as_dvec3().normalize(), args.4.as_dvec3().normalize());
+            let (sagittal_axis, tangential_axis) = section_axes(n, d, turn);
+            let (w_t, w_s) = (f64::from(args.0), f64::from(args.1));
+            let cosine = n.dot(d).abs();
+            let exact = cosine * sampled_longer_axis(tangential_axis * w_t, sagittal_axis * w_s, n, d);
+            // The f32 axis is off the exact one by its rounding (u), the unit inputs by theirs
+            // (unit_excess); every term of the eigenvalue is at most twice the eigenvalue, so the
+            // evaluation's twenty-odd roundings stay within 24 u of it, except the tilts' (n . t),
+            // whose absolute error (4 u) becomes 4 u |tilt| / lambda <= 4 u / c relative once
+            // squared; the square roots halve what is left. 1.01 for the search's own error.
+            let relative = (24.0 + 8.0 / cosine) * U + 4.0 * unit_excess(args.3, args.4);
+            Some(Deviation::within(f64::from(got), exact, 1.01 * relative * exact))
+        },
+    )
+}
+
+/// `rf_two_section_width`: what a round beam, a head-on beam and the same beam described the
+/// other way round give.
+pub(in crate::ray_cone) fn two_section_width_limits() -> Reference<TwoSectionArgs, f32> {
+    Reference::new(
+        Kind::Identity,
+        "equal widths are a round cone (|w| at any slant); head on the larger width; the sections swapped with the axis turned a quarter turn are the same beam, the same width",
+        two_section_beam,
+        |&(tangential, sagittal, turn, n, d), two_section_width| {
+            let (sagittal_axis, tangential_axis) = section_axes(n, d, turn);
+            let (n32, d32, w_t, w_s) = (n.as_vec3(), d.as_vec3(), tangential as f32, sagittal as f32);
+            let round = two_section_width((w_t, w_t, sagittal_axis.as_vec3(), n32, d32));
+            let head_on = two_section_width((w_t, w_s, sagittal_axis.as_vec3(), n32, -n32));
+            let given = two_section_width((w_t, w_s, sagittal_axis.as_vec3(), n32, d32));
+            let swapped = two_section_width((w_s, w_t, tangential_axis.as_vec3(), n32, d32));
+            // As the sampled reference: 24 u and the tilts' 4 u / c, twice for the swap (both
+            // sides round); head on every tilt is within 4 u of 0.
+            let cosine = n.dot(d).abs();
+            let relative = (24.0 + 8.0 / cosine) * U + 4.0 * unit_excess(n32, d32);
+            let larger = f64::from(w_t.abs().max(w_s.abs()));
+            let round = Deviation::within(f64::from(round), f64::from(w_t.abs()), relative * f64::from(w_t.abs()));
+            let head_on = Deviation::within(f64::from(head_on), larger, 32.0 * U * larger);
+            let swap = Deviation::within(f64::from(swapped), f64::from(given), 2.0 * relative * f64::from(given));
+            Some(round.and(head_on).and(swap))
+        },
+    )
+}
+
 /// `rf_triangle_world_area2`.
 pub(in crate::ray_cone) fn triangle_world_area2() -> Reference<(Vec3, Vec3, Vec3), f32> {
     Reference::new(

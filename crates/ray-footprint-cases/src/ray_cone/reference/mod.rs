@@ -20,7 +20,7 @@ pub(super) use camera::{
 };
 pub(super) use lod::{
     environment_lod, texel_density, texture_gradient, texture_lod, triangle_base_lod, triangle_uv_area2,
-    triangle_world_area2, world_footprint,
+    triangle_world_area2, two_section_width_limits, two_section_width_sampled, world_footprint,
 };
 pub(super) use propagation::{
     curvature_sign, curvature_spread_angle, edge_curvature, normal_spread_angle, normal_spread_angle_small,
@@ -29,6 +29,7 @@ pub(super) use propagation::{
 pub(super) use refraction::{
     refract_curved, refract_first_order, refract_flat, refract_index_one, refract_negated, refract_optix,
     refract_total_internal_reflection, roughness_closed_form, roughness_monotone, roughness_small,
+    sagittal_curved, sagittal_normal_incidence, sagittal_total_internal_reflection,
 };
 pub(super) use shape::{
     isotropic_curvature_directions, normal_curvature_euler, principal_curvatures_euler,

@@ -4,7 +4,7 @@
 
 use super::{rotated, scatter_cone, snell, Scattered, Surface};
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
-use glam::{DVec2, Vec3};
+use glam::{DVec2, DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{RayCone, RefractedRayCone, MAX_INCIDENCE_ANGLE, MIN_ROUGHNESS_DENOMINATOR};
 
@@ -314,6 +314,148 @@ pub(in crate::ray_cone) fn refract_total_internal_reflection() -> Reference<Args
             let flag = Deviation::new(f64::from(u8::from(!got.total_internal_reflection)), 0.0);
             let width = Deviation::within(f64::from(got.cone.width), f64::from(cone.width), 0.0);
             Some(flag.and(width).and(Deviation::within(f64::from(got.cone.spread_angle), spread, U * spread.abs())))
+        },
+    )
+}
+
+/// A cone's sagittal section after a spherical surface, traced exactly in 3-D: its spread and
+/// width across the scattered central ray, the normals' turn between its boundary hits, and the
+/// smallest cosine at which a boundary ray meets the surface.
+struct SagittalTrace {
+    width: f64,
+    spread: f64,
+    normal_spread: f64,
+    min_landing_cos: f64,
+}
+
+/// The sagittal section of the cone `(width, spread)` whose central ray `d` (in the xz plane,
+/// `d.z < 0`) meets, at the origin, the sphere of signed `curvature` with its normal `+z` there
+/// (centre `(0, 0, -1 / curvature)`: convex towards the ray for `curvature > 0`). Each boundary
+/// ray crosses the y axis at `+-width / 2`, turned by `+-spread / 2` about the axis across `d`
+/// in the xz plane, meets the sphere where it is nearest that crossing, and is scattered there
+/// (`scatter`, from its direction and the unit normal at its hit, facing the ray). The section is
+/// symmetric about the xz plane, so the two scattered boundary rays are mirror images: the
+/// spread is `2 asin(r . y)` of the upper one and the width twice its `y` where it crosses the
+/// plane through the origin across the scattered central ray `scatter(d, z)`.
+fn trace_sagittal(
+    d: DVec3,
+    curvature: f64,
+    (width, spread): (f64, f64),
+    scatter: impl Fn(DVec3, DVec3) -> Option<DVec3>,
+) -> Option<SagittalTrace> {
+    let radius = 1.0 / curvature;
+    let centre = DVec3::new(0.0, 0.0, -radius);
+    let start = DVec3::new(0.0, 0.5 * width, 0.0);
+    let direction = d * (0.5 * spread).cos() + DVec3::Y * (0.5 * spread).sin();
+    // |start + s direction - centre|^2 = radius^2: s^2 + 2 b s + c = 0, c = |start|^2 + 2 radius
+    // start.z (zero) without cancellation; the root nearest 0.
+    let offset = start - centre;
+    let b = offset.dot(direction);
+    let c = start.length_squared() + 2.0 * radius * start.z;
+    let discriminant = b * b - c;
+    if discriminant < 0.0 {
+        return None;
+    }
+    let q = -b - b.signum() * discriminant.sqrt();
+    let nearest = if (c / q).abs() < q.abs() { c / q } else { q };
+    let hit = start + direction * nearest;
+    let normal = (hit - centre) / radius;
+    let central = scatter(d, DVec3::Z)?;
+    let leaving = scatter(direction, normal)?;
+    let crossing = hit - leaving * (hit.dot(central) / leaving.dot(central));
+    Some(SagittalTrace {
+        width: 2.0 * crossing.y,
+        spread: 2.0 * leaving.y.asin(),
+        normal_spread: 2.0 * normal.y.asin(),
+        min_landing_cos: direction.dot(normal).abs(),
+    })
+}
+
+/// The mirror image of the direction `d` at a surface with unit normal `n`.
+fn mirrored(d: DVec3, n: DVec3) -> DVec3 {
+    d - n * (2.0 * d.dot(n))
+}
+
+/// The sagittal section checked against its exact trace: the section passes its width on and its
+/// spread within `bound` of the spread and the normal turn it has to follow.
+fn sagittal_deviation(got: RayCone, traced: &SagittalTrace, bound: f64) -> Deviation {
+    let width = Deviation::new(relative(got.width, traced.width), bound);
+    let spread_error = (f64::from(got.spread_angle) - traced.spread).abs()
+        / (traced.spread.abs() + traced.normal_spread.abs());
+    width.and(Deviation::new(spread_error, bound))
+}
+
+/// `rf_refract_sagittal_cone`: spherical interfaces.
+pub(in crate::ray_cone) fn sagittal_curved() -> Reference<Args, RayCone> {
+    Reference::new(
+        Kind::ExactGeometry,
+        "convex and concave unit spheres: the sagittal section's two boundary rays (across the plane of incidence) refracted exactly in 3-D at their own hits, the normal spread taken from those hits; within 4 (|w| + |spread|) / (cos i cos t) relative, the second-order terms",
+        || (any::<bool>(), prop_oneof![0.4f64..0.95, 1.05f64..2.5], 0.0f64..1.2, -5.0f64..-3.0, -2.0e-3f64..2.0e-3).boxed(),
+        |&(convex, eta, incidence, width, spread), refract| {
+            let curvature = if convex { 1.0 } else { -1.0 };
+            let mut case = Case::new(incidence, 10f64.powf(width), spread, eta);
+            let eta = f64::from(case.eta);
+            let (sin_i, cos_i) = case.incidence().sin_cos();
+            let cos_t = (1.0 - eta * eta * sin_i * sin_i).max(0.0).sqrt();
+            if cos_t < 0.3 {
+                return None;
+            }
+            let d = case.direction.as_dvec3();
+            let cone = (f64::from(case.cone.width), f64::from(case.cone.spread_angle));
+            let traced = trace_sagittal(d, curvature, cone, |d, n| crate::exact::snell(d, n, eta))?;
+            case.normal_spread = traced.normal_spread as f32;
+            let refracted = refract(case.arguments());
+            // Coddington's equation is the first-order term; the sphere's sag, the boundary rays'
+            // own incidence and the asin of the spread are second order in the width and the
+            // spread (in radii), magnified by at most 1 / (cos i cos t). 1e-4 for the f32 rounding
+            // of a handful of operations.
+            let bound = 4.0 * (cone.0.abs() + cone.1.abs()) / (cos_i * cos_t) + 1.0e-4;
+            Some(sagittal_deviation(refracted, &traced, bound))
+        },
+    )
+}
+
+/// `rf_refract_sagittal_cone`: the OptiX Toolkit at normal incidence.
+pub(in crate::ray_cone) fn sagittal_normal_incidence() -> Reference<Args, RayCone> {
+    Reference::new(
+        Kind::PeerOriginal,
+        "normal incidence on curved surfaces, where the two sections are one: the OptiX Toolkit's thin form (n_out / n_in) (angle + k |w|) - k |w| with beta = k |w|, to f32 rounding; the width passes unchanged",
+        || (0.4f64..2.5, -10.0f64..10.0, -6.0f64..-3.0, -2.0e-3f64..2.0e-3).boxed(),
+        |&(eta, curvature, width, spread), refract| {
+            let (eta, width, spread) = (eta as f32, 10f64.powf(width) as f32, spread as f32);
+            let beta = (curvature * f64::from(width)) as f32;
+            let cone = RayCone { width, spread_angle: spread };
+            let got = refract((cone, Vec3::Z, Vec3::NEG_Z, beta, eta));
+            let (eta, spread, beta) = (f64::from(eta), f64::from(spread), f64::from(beta));
+            let thin_form = eta * (spread + beta) - beta;
+            // cos i = cos t = 1 exactly; two products and two sums round: gamma(4) of the terms.
+            let bound = gamma(4) * (eta * spread.abs() + (eta + 1.0) * beta.abs());
+            let spread_deviation = Deviation::within(f64::from(got.spread_angle), thin_form, bound);
+            Some(spread_deviation.and(Deviation::within(f64::from(got.width), f64::from(width), 0.0)))
+        },
+    )
+}
+
+/// `rf_refract_sagittal_cone`: total internal reflection.
+pub(in crate::ray_cone) fn sagittal_total_internal_reflection() -> Reference<Args, RayCone> {
+    Reference::new(
+        Kind::ExactGeometry,
+        "past the critical angle (eta sin i > 1) on convex and concave unit spheres: the sagittal boundary rays reflected exactly in 3-D at their own hits, against spread + 2 cos i beta (the sagittal mirror equation); within 4 (|w| + |spread|) / cos i relative",
+        || (any::<bool>(), 1.05f64..3.0, 0.0f64..1.0, -5.0f64..-3.0, -2.0e-3f64..2.0e-3).boxed(),
+        |&(convex, eta, past, width, spread), refract| {
+            let curvature = if convex { 1.0 } else { -1.0 };
+            // An incidence between the critical angle (plus a margin for rounding) and 1.3 rad.
+            let critical = (1.0 / eta).asin() + 1.0e-4;
+            let incidence = critical + past * (1.3 - critical).max(0.0);
+            let mut case = Case::new(incidence, 10f64.powf(width), spread, eta);
+            let d = case.direction.as_dvec3();
+            let cone = (f64::from(case.cone.width), f64::from(case.cone.spread_angle));
+            let traced = trace_sagittal(d, curvature, cone, |d, n| Some(mirrored(d, n)))?;
+            case.normal_spread = traced.normal_spread as f32;
+            let reflected = refract(case.arguments());
+            // As the refraction: second order in the width and the spread, over cos i.
+            let bound = 4.0 * (cone.0.abs() + cone.1.abs()) / case.incidence().cos() + 1.0e-4;
+            (traced.min_landing_cos > 0.05).then(|| sagittal_deviation(reflected, &traced, bound))
         },
     )
 }
