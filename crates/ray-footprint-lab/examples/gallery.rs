@@ -292,6 +292,7 @@ impl Gallery<'_, '_> {
         let materials = [
             Mode::ConeCurvature,
             Mode::ConeRefraction,
+            Mode::ConeSections,
             Mode::ConeRoughness,
             Mode::RayDiff,
         ];

@@ -1,9 +1,9 @@
 //! How large a pixel's footprint on the ground plane is when seen through the glass sphere of the
 //! materials scene (`Camera::glass`), at the lab's two image sizes: the exact footprint against
-//! the refracted ray cone of the `cone_refraction` mode, and against a cone that also carries a
-//! second width across the plane of incidence. It explains the quality lab's glass figures: an
-//! isotropic `textureGrad` filters at the footprint's longer axis, so a cone wider than that axis
-//! blurs.
+//! the refracted ray cone alone (RTG II ch. 10, the section in the plane of incidence), and
+//! against the two sections the `cone_refraction` mode carries (that cone and the section across
+//! the plane of incidence). It explains the quality lab's glass figures: an isotropic
+//! `textureGrad` filters at the footprint's longer axis, so a cone wider than that axis blurs.
 //!
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example glass_footprint
@@ -17,16 +17,18 @@
 //!   per pixel by central differences (`ray_footprint_cases::exact::derivative`, which also traces
 //!   the rays 0.02 pixel away for its error estimate), and the footprint's longer axis is the
 //!   larger singular value of that Jacobian.
-//! - *Cone*: the library's f32 functions as the renderer calls them: the pinhole cone of the ray,
-//!   refracted at both surfaces by `refract_ray_cone` with the normal's turn across the slanted
-//!   footprint, its footprint on the ground `|width| / |n . d|`. `refract_ray_cone` carries the
-//!   width in the plane of incidence (the tangential section of the beam).
-//! - *Two widths*: the same cone, and beside it the width across the plane of incidence (the
-//!   sagittal section), which a refraction keeps while turning its spread by Coddington's sagittal
-//!   equation to first order (below). For a sphere both surfaces share one plane of incidence,
-//!   so the two sections stay the beam's axes; on the ground they span an ellipse whose longer
-//!   axis is the footprint. *Larger width*: the larger of the two widths over `|n . d|` on the
-//!   ground, a footprint that needs no direction for the sections.
+//! - *Cone*: the library's f32 functions: the pinhole cone of the ray, refracted at both surfaces
+//!   by `refract_ray_cone` with the normal's turn across the slanted footprint, its footprint on
+//!   the ground `|width| / |n . d|` (the `cone_refraction` mode before it carried a second
+//!   section). `refract_ray_cone` carries the width in the plane of incidence (the tangential
+//!   section of the beam).
+//! - *Two widths*: the same cone, and beside it the section across the plane of incidence (the
+//!   sagittal section), refracted at both surfaces by `refract_sagittal_cone` (Coddington's
+//!   sagittal equation to first order), as the renderer's `cone_refraction` mode carries it. For a
+//!   sphere both surfaces share one plane of incidence, so the two sections stay the beam's axes;
+//!   on the ground they span an ellipse whose longer axis is the footprint (`two_section_width`
+//!   over `|n . d|`). *Larger width*: the larger of the two widths over `|n . d|` on the ground, a
+//!   footprint that needs no direction for the sections.
 //!
 //! Each size prints, per 10-degree band of the incidence angle at the sphere's front, the mean of
 //! `log2(footprint / exact longer axis)` in mip levels (positive: too wide, a blur), and over
@@ -34,7 +36,8 @@
 
 use glam::{DVec2, DVec3, Vec3};
 use ray_footprint::ray_cone::{
-    pinhole_ray_cone_for_ray, propagate, refract_ray_cone, width_at, world_footprint, RayCone,
+    pinhole_ray_cone_for_ray, propagate, refract_ray_cone, refract_sagittal_cone, two_section_width,
+    width_at, world_footprint, RayCone,
 };
 use ray_footprint_cases::exact::{derivative, snell};
 use ray_footprint_lab::quality::footprint::singular_values;
@@ -199,9 +202,10 @@ fn longer_axis(a: DVec3, b: DVec3) -> f64 {
     singular_values(on_ground(a), on_ground(b)).0
 }
 
-/// The cone leaving the sphere, as the renderer's `cone_refraction` mode carries it: `eye_cone`,
-/// the ray's pinhole cone, refracted at the front and at the back, each time with the normal's turn across the
-/// slanted footprint (`rt_normal_spread`, curvature `1 / radius` on the outward normal's side).
+/// The tangential section leaving the sphere, as the renderer's `cone_refraction` mode carries it:
+/// `eye_cone`, the ray's pinhole cone, refracted at the front and at the back, each time with the
+/// normal's turn across the slanted footprint (`rt_normal_spread`, curvature `1 / radius` on the
+/// outward normal's side).
 fn refracted_cone(eye_cone: RayCone, path: &Path) -> RayCone {
     let index = GLASS_INDEX;
     let curvature = 1.0 / GLASS_RADIUS;
@@ -221,39 +225,34 @@ fn refracted_cone(eye_cone: RayCone, path: &Path) -> RayCone {
     refract_at(inside, path.back, path.inside, index)
 }
 
-/// The spread a refraction gives the sagittal section of a beam (the width across the plane of
-/// incidence): `eta spread + (eta cos i - cos t) curvature width`, Coddington's sagittal equation
-/// to first order, with `curvature` positive where the surface is convex toward the incoming
-/// beam. The width itself is kept. At normal incidence this is the tangential section's
-/// `eta (spread + beta) - beta` with `beta = curvature width`.
-fn sagittal_spread(width: f64, spread: f64, cos_incidence: f64, eta: f64, curvature: f64) -> f64 {
-    let cos_transmitted = (1.0 - eta * eta * (1.0 - cos_incidence * cos_incidence)).sqrt();
-    eta * spread + (eta * cos_incidence - cos_transmitted) * curvature * width
-}
-
 /// The footprint of a beam with the tangential section `cone` (leaving the sphere) and the
-/// sagittal section carried from `eye_cone` (a pinhole cone, of width 0): the longer axis of the ellipse its two sections span
-/// on the ground, each projected along the leaving ray; and the larger width slanted.
+/// sagittal section carried from `eye_cone` (a pinhole cone: the two sections start equal) by
+/// `refract_sagittal_cone` at both surfaces, each with the normal's turn `curvature * |width|`
+/// across it: `two_section_width` of the two sections on the ground, over `|n . d|`, the longer axis
+/// of their ellipse there; and the larger width slanted.
 fn two_width_footprint(eye_cone: RayCone, path: &Path, cone: RayCone) -> Sections {
-    let index = f64::from(GLASS_INDEX);
-    let radius = f64::from(GLASS_RADIUS);
-    let eye_spread = f64::from(eye_cone.spread_angle);
-    let (front_distance, front_normal) = path.front;
-    let (back_distance, back_normal) = path.back;
-    let mut width = eye_spread * front_distance;
-    let cos_front = -front_normal.dot(path.direction);
-    let inside_spread = sagittal_spread(width, eye_spread, cos_front, 1.0 / index, 1.0 / radius);
-    width += inside_spread * back_distance;
-    let cos_back = back_normal.dot(path.inside);
-    let leaving_spread = sagittal_spread(width, inside_spread, cos_back, index, -1.0 / radius);
-    width += leaving_spread * path.to_ground;
-    let across = path.direction.cross(front_normal).normalize();
-    let along = across.cross(path.leaving);
-    let tangential_width = f64::from(width_at(cone, path.to_ground as f32));
-    let onto_ground = |axis: DVec3| axis - path.leaving * (axis.y / path.leaving.y);
+    let curvature = 1.0 / GLASS_RADIUS;
+    let refract_at = |section: RayCone, (distance, normal): (f64, DVec3), direction: DVec3, eta: f32| {
+        let at_hit = propagate(section, distance as f32, 0.0);
+        let normal_spread = curvature * at_hit.width.abs();
+        refract_sagittal_cone(at_hit, normal.as_vec3(), direction.as_vec3(), normal_spread, eta)
+    };
+    let inside = refract_at(eye_cone, path.front, path.direction, 1.0 / GLASS_INDEX);
+    let leaving = refract_at(inside, path.back, path.inside, GLASS_INDEX);
+    let axis = path.direction.cross(path.front.1).as_vec3();
+    let to_ground = path.to_ground as f32;
+    let (tangential_width, sagittal_width) = (width_at(cone, to_ground), width_at(leaving, to_ground));
+    let slant = path.leaving.y.abs();
+    let width = two_section_width(
+        tangential_width,
+        sagittal_width,
+        axis,
+        Vec3::Y,
+        path.leaving.as_vec3(),
+    );
     Sections {
-        ellipse: longer_axis(onto_ground(along * tangential_width), onto_ground(across * width)),
-        larger_width: tangential_width.abs().max(width.abs()) / path.leaving.y.abs(),
+        ellipse: f64::from(width) / slant,
+        larger_width: f64::from(tangential_width.abs().max(sagittal_width.abs())) / slant,
     }
 }
 

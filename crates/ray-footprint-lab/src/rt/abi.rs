@@ -146,8 +146,10 @@ pub struct RtPixelRecord {
     pub cone_uv_dx: glam::Vec2,
     /// `.dy` of the same call: the minor axis.
     pub cone_uv_dy: glam::Vec2,
-    /// Always 0.
-    pub pad: [u32; 2],
+    /// On glass, `rf_refract_sagittal_cone((width, cone.spread_angle), normal, direction,
+    /// curvature * |width|, eta)`: the section across the plane of incidence (the sagittal one)
+    /// leaving the hit beside `refracted` in the `cone_sections` mode; 0 elsewhere.
+    pub sagittal: RayCone,
 }
 
 /// What the renderer measured at a pixel's primary hit with the `ray_diff` and `wireframe`
@@ -237,7 +239,7 @@ pub fn layouts() -> Vec<shader_proptest::layout::StructLayout> {
     vec![
         rust_layout!(RtPushConstants as "RtPushConstants" { eye, tan_half_fov_y, right, aspect, up, texture_size, forward, mode, cone, width, height, pixel_offset, flags, pad }),
         rust_layout!(RtDiffRecord as "RtDiffRecord" { eye_d_direction_dx, lod, eye_d_direction_dy, offset_lod, barycentric_dx, barycentric_dy, uv_dx, uv_dy, neighbour_right, coverage, neighbour_below, pad0, offset_dx, pad1, offset_dy, pad2, offset_uv_dx, offset_uv_dy, deltas, pad3, cone_deltas, pad4 }),
-        rust_layout!(RtPixelRecord as "RtPixelRecord" { normal, t, direction, instance, barycentrics, primitive, hit, cone, width, footprint, texel_density, base_lod, lod, gradient, curvature, curvature_spread, reflected, diff, roughness_spread, eta, normal_spread, total_internal_reflection, refracted, cone_uv_dx, cone_uv_dy, pad }),
+        rust_layout!(RtPixelRecord as "RtPixelRecord" { normal, t, direction, instance, barycentrics, primitive, hit, cone, width, footprint, texel_density, base_lod, lod, gradient, curvature, curvature_spread, reflected, diff, roughness_spread, eta, normal_spread, total_internal_reflection, refracted, cone_uv_dx, cone_uv_dy, sagittal }),
         rust_layout!(RtUniforms as "RtUniforms" { view_inv, proj_inv, wireframe }),
     ]
 }

@@ -8,12 +8,12 @@ use std::fmt;
 /// Every mode traces the same rays and records the same per-pixel values
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
 /// reflection off a mirror widens its cone by the surface curvature and roughness, whether glass
-/// refracts the cone, whether a reflected or refracted ray carries a ray differential, and whether
-/// the wireframe is drawn. Every mode reflects and refracts the same rays. The ray-differential
+/// refracts the cone (and its second section), whether a reflected or refracted ray carries a ray
+/// differential, and whether the wireframe is drawn. Every mode reflects and refracts the same rays. The ray-differential
 /// modes carry the differential through mirrors and glass (Igehy's reflection and refraction); the
 /// re-intersection of `BaryGradients` needs a primary hit: what the mirror reflects is sampled at
-/// the ray-cone LOD in it. The cone modes other than `ConeRefraction` carry the cone through glass
-/// as if the glass were not there.
+/// the ray-cone LOD in it. The cone modes other than `ConeRefraction` and `ConeSections` carry the
+/// cone through glass as if the glass were not there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u32)]
 pub enum Mode {
@@ -65,11 +65,18 @@ pub enum Mode {
     /// fitted shape operator's: the triangle's edge curvature of least magnitude when
     /// the three agree in sign, 0 when they do not (its `ray_cone.h`, `minTriangleCurvature`).
     ConeMinCurvature = 12,
+    /// Ray-cone LOD as `ConeRefraction`, the beam carried as two sections: glass refracts the
+    /// cone in the plane of incidence as `ConeRefraction` does and the section across it by
+    /// Coddington's sagittal equation (`rf_refract_sagittal_cone`), and the ray carries that
+    /// section's axis; a surface is filtered at the round cone whose footprint is as long as the
+    /// longer axis of the sections' ellipse on it (`rf_two_section_width`). RTG II's cone alone
+    /// spreads both ways as in the plane of incidence, which off the normal is too wide.
+    ConeSections = 13,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 13] = [
+    pub const ALL: [Mode; 14] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
@@ -81,6 +88,7 @@ impl Mode {
         Mode::BaryGradients,
         Mode::Wireframe,
         Mode::ConeRefraction,
+        Mode::ConeSections,
         Mode::ConeRoughness,
         Mode::ConeAnisotropic,
     ];
@@ -106,6 +114,7 @@ impl Mode {
             Mode::ConeRoughness => "cone_roughness",
             Mode::ConeAnisotropic => "cone_anisotropic",
             Mode::ConeMinCurvature => "cone_min_curvature",
+            Mode::ConeSections => "cone_sections",
         }
     }
 
@@ -125,6 +134,7 @@ impl Mode {
             Mode::ConeRoughness => "as cone_curvature, rough mirrors widening the reflected cone",
             Mode::ConeAnisotropic => "textureGrad with the cone's elliptical footprint",
             Mode::ConeMinCurvature => "as cone_curvature, the OptiX Toolkit's least edge curvature",
+            Mode::ConeSections => "as cone_refraction, glass refracting the beam's two sections",
         }
     }
 
@@ -143,13 +153,14 @@ impl fmt::Display for Mode {
 impl Mode {
     /// What the payload of the mode's colour-only shaders carries beyond the colour and the bounce
     /// depth: the ray cone in the modes that read it (every mode but mip 0 and the ray-differential
-    /// modes: the level of detail, or in the gradient modes that of what the mirror reflects), and
-    /// the ray differential in the ray-differential modes, which carry it through mirrors and
-    /// glass and never read the cone.
+    /// modes: the level of detail, or in the gradient modes that of what the mirror reflects), the
+    /// sagittal section and its axis in `ConeSections`, and the ray differential in the
+    /// ray-differential modes, which carry it through mirrors and glass and never read the cone.
     pub fn payload(self) -> Payload {
         let differential = matches!(self, Mode::RayDiff | Mode::RayDiffIsotropic);
         Payload {
             cone: self != Mode::Mip0 && !differential,
+            sagittal: self == Mode::ConeSections,
             differential,
         }
     }
@@ -161,6 +172,9 @@ impl Mode {
         if payload.cone {
             defines.push(("RT_PAYLOAD_CONE", String::new()));
         }
+        if payload.sagittal {
+            defines.push(("RT_PAYLOAD_SAGITTAL", String::new()));
+        }
         if payload.differential {
             defines.push(("RT_PAYLOAD_DIFF", String::new()));
         }
@@ -169,11 +183,14 @@ impl Mode {
 }
 
 /// What a mode's colour-only payload carries beyond the colour and the bounce depth (16 bytes):
-/// mip 0's payload is 16 bytes, a cone mode's 24, a ray-differential mode's 64.
+/// mip 0's payload is 16 bytes, a cone mode's 24, `cone_sections`' 44, a ray-differential
+/// mode's 64.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Payload {
     /// The ray cone (8 bytes).
     pub cone: bool,
+    /// The sagittal section and its axis (20 bytes).
+    pub sagittal: bool,
     /// The ray differential: origin and direction changes per pixel step, without the pads of
     /// `RfRayDiff` (48 bytes).
     pub differential: bool,

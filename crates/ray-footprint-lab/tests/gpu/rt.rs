@@ -3,7 +3,7 @@
 //! The GLSL, the Slang and the HLSL closest-hit shaders and the WGSL ray-query shader record, per
 //! pixel, the primary hit (distance, normal, barycentrics, instance, triangle), every ray-cone
 //! value they computed there, the ray-differential, re-intersection and wireframe values, the material's values (a
-//! mirror's roughness spread; on glass the index ratio, the normal's spread and the refracted cone)
+//! mirror's roughness spread; on glass the index ratio, the normal's spread, the refracted cone and its sagittal section)
 //! and the anisotropic cone gradients, on the gallery and on the materials scene. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
 //! uniforms; each function is given exactly the inputs the shader gave it, so each comparison
@@ -357,7 +357,7 @@ fn gallery_views() -> Vec<View> {
 fn material_views() -> Vec<View> {
     let (small, default) = ((WIDTH, HEIGHT), WireframeSettings::default());
     vec![
-        (Camera::glass(), Mode::ConeRefraction, default, small, Vec2::ZERO),
+        (Camera::glass(), Mode::ConeSections, default, small, Vec2::ZERO),
         (
             Camera::materials(),
             Mode::ConeRoughness,
@@ -888,7 +888,7 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
 
 /// The material's values and the anisotropic cone gradients, recomputed by the mirror from the
 /// inputs the shader used: a mirror's roughness spread; on glass the index ratio, the normal's
-/// spread and the refracted cone; zeros where the material has none.
+/// spread, the refracted cone and its sagittal section; zeros where the material has none.
 fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixelRecord, stats: &mut Stats) {
     let r = record;
     match material {
@@ -908,10 +908,16 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     match material {
         Material::Glass { index_of_refraction } => check_refraction(index_of_refraction, r, stats),
         _ => {
-            let none = (r.eta, r.normal_spread, r.total_internal_reflection, r.refracted);
+            let none = (
+                r.eta,
+                r.normal_spread,
+                r.total_internal_reflection,
+                r.refracted,
+                r.sagittal,
+            );
             assert_eq!(
                 none,
-                (0.0, 0.0, 0, RayCone::default()),
+                (0.0, 0.0, 0, RayCone::default(), RayCone::default()),
                 "no refraction off glass: {r:?}"
             );
         }
@@ -929,11 +935,10 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
         (gradient_args, gradients),
         r,
     );
-    assert_eq!(r.pad, [0; 2], "pads are 0");
 }
 
-/// A glass hit's index ratio, the normal's spread across the footprint and the refracted cone,
-/// against the mirror on the shader's inputs.
+/// A glass hit's index ratio, the normal's spread across the footprint, the refracted cone and its
+/// sagittal section, against the mirror on the shader's inputs.
 fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mut Stats) {
     let r = record;
     let (n, d) = (r.normal, r.direction);
@@ -982,4 +987,15 @@ fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mu
     stats.total_internal_reflections += r.total_internal_reflection as usize;
     let check = suite::ray_cone::refract_ray_cone().check();
     compare_with(stats, "refracted cone", check, (args, refracted), r);
+    // rf_refract_sagittal_cone of the same cone, with the curvature times |width| (one correctly
+    // rounded product), with the suite's own tolerance.
+    let sagittal_args = (at_hit, n, d, r.curvature * r.width.abs(), r.eta);
+    let sagittal_check = suite::ray_cone::refract_sagittal_cone().check();
+    compare_with(
+        stats,
+        "sagittal section",
+        sagittal_check,
+        (sagittal_args, r.sagittal),
+        r,
+    );
 }

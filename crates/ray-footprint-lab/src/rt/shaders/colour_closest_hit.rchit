@@ -1,8 +1,8 @@
 // Closest hit of the colour-only shaders: shades the hit as closest_hit.rchit does, with the same
 // functions (rt_common.glsl), in the render mode RT_COLOUR_MODE (an RT_MODE_* value the renderer
 // defines), so that the compiler keeps only what that mode computes; records nothing. The payload
-// carries only what the mode reads (colour_payload.glsl): the functions get a zero cone or
-// differential in its place, which the mode never reads.
+// carries only what the mode reads (colour_payload.glsl): the functions get a zero cone, sagittal
+// section or differential in its place, which the mode never reads.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "rt_common.glsl"
@@ -21,6 +21,15 @@ RfRayCone rt_payload_cone() {
 #endif
 }
 
+// The sagittal section the ray carries, or a zero one where the mode needs none.
+RtSagittal rt_payload_sagittal() {
+#ifdef RT_PAYLOAD_SAGITTAL
+    return RtSagittal(payload.sagittal_cone, payload.sagittal_axis);
+#else
+    return RtSagittal(RfRayCone(0.0, 0.0), vec3(0.0));
+#endif
+}
+
 // The differential the ray carries, or a zero one where the mode needs none.
 RfRayDiff rt_payload_diff() {
 #ifdef RT_PAYLOAD_DIFF
@@ -33,11 +42,15 @@ RfRayDiff rt_payload_diff() {
 void main() {
     RtHit hit = rt_current_hit(payload.depth);
     if (rt_passes_on(hit)) {
-        RtBounce bounce = rt_bounce(RT_COLOUR_MODE, hit, rt_payload_cone(), rt_payload_diff());
+        RtBounce bounce = rt_bounce(RT_COLOUR_MODE, hit, rt_payload_cone(), rt_payload_diff(), rt_payload_sagittal());
         next.colour = vec3(0.0);
         next.depth = hit.depth + 1u;
 #ifdef RT_PAYLOAD_CONE
         next.cone = bounce.cone;
+#endif
+#ifdef RT_PAYLOAD_SAGITTAL
+        next.sagittal_cone = bounce.sagittal.cone;
+        next.sagittal_axis = bounce.sagittal.axis;
 #endif
 #ifdef RT_PAYLOAD_DIFF
         next.diff = rt_colour_diff(bounce.diff);
@@ -47,5 +60,6 @@ void main() {
         payload.colour = bounce.weight * next.colour;
         return;
     }
-    payload.colour = rt_surface_colour(RT_COLOUR_MODE, hit, rt_payload_cone(), rt_payload_diff());
+    RfRayCone arriving = rt_arriving_cone(RT_COLOUR_MODE, hit, rt_payload_cone(), rt_payload_sagittal());
+    payload.colour = rt_surface_colour(RT_COLOUR_MODE, hit, arriving, rt_payload_diff());
 }

@@ -1,6 +1,7 @@
 // ray-footprint ray-tracing renderer: the payload of the colour-only shaders (colour_*.r*), which
 // carries only what the render mode needs: the colour and the bounce depth always, the ray cone
-// where RT_PAYLOAD_CONE is defined, the ray differential where RT_PAYLOAD_DIFF is. The renderer
+// where RT_PAYLOAD_CONE is defined, the sagittal section's cone and axis (rt_shading.glsl's
+// RtSagittal) where RT_PAYLOAD_SAGITTAL is, the ray differential where RT_PAYLOAD_DIFF is. The renderer
 // defines them per mode (Mode::payload in src/rt/mode.rs). Declarations and conversions only, so a
 // layout probe can include it.
 
@@ -23,6 +24,10 @@ struct RtColourPayload {
     uint depth;
 #ifdef RT_PAYLOAD_CONE
     RfRayCone cone;
+#endif
+#ifdef RT_PAYLOAD_SAGITTAL
+    RfRayCone sagittal_cone;
+    vec3 sagittal_axis;
 #endif
 #ifdef RT_PAYLOAD_DIFF
     RtColourDiff diff;

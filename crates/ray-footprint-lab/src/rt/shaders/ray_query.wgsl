@@ -58,6 +58,13 @@ const RT_MODE_CONE_ANISOTROPIC: u32 = 11u;
 // shape operator's: the triangle's edge curvature of least magnitude when the three agree in sign,
 // 0 when they do not (its ray_cone.h, minTriangleCurvature).
 const RT_MODE_CONE_MIN_CURVATURE: u32 = 12u;
+// Ray-cone LOD as ConeRefraction, the beam carried as two sections: glass refracts the cone in the
+// plane of incidence as ConeRefraction does and the section across it by Coddington's sagittal
+// equation (rf_refract_sagittal_cone), and the ray carries that section's axis; a surface is
+// filtered at the round cone whose footprint is as long as the longer axis of the sections' ellipse
+// on it (rf_two_section_width). RTG II's cone alone spreads both ways as in the plane of incidence,
+// which off the normal is too wide.
+const RT_MODE_CONE_SECTIONS: u32 = 13u;
 
 // The material id (Material::id) of Material::Textured.
 const RT_MATERIAL_TEXTURED: u32 = 0u;
@@ -242,8 +249,10 @@ struct RtPixelRecord {
     cone_uv_dx: vec2<f32>,
     // .dy of the same call: the minor axis.
     cone_uv_dy: vec2<f32>,
-    // Always 0.
-    pad: vec2<u32>,
+    // On glass, rf_refract_sagittal_cone((width, cone.spread_angle), normal, direction, curvature *
+    // |width|, eta): the section across the plane of incidence (the sagittal one) leaving the hit
+    // beside refracted in the cone_sections mode; 0 elsewhere.
+    sagittal: RfRayCone,
 }
 
 // Per-frame uniforms of the ray-tracing renderer (a uniform buffer at binding 7): the inverse view
@@ -344,6 +353,8 @@ fn rt_measure(tri: RtTriangle, material: u32, parameter: f32, barycentrics: vec2
             record.eta);
         record.total_internal_reflection = select(0u, 1u, refracted.total_internal_reflection);
         record.refracted = refracted.cone;
+        record.sagittal = rf_refract_sagittal_cone(rf_propagate(cone, t, 0.0), normal, direction,
+            curvature * abs(width), record.eta);
     }
     let cone_uv = rf_anisotropic_cone_gradients(width, direction, tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1],
         tri.uv[2]);

@@ -60,6 +60,13 @@ const uint RT_MODE_CONE_ANISOTROPIC = 11u;
 // shape operator's: the triangle's edge curvature of least magnitude when the three agree in sign,
 // 0 when they do not (its ray_cone.h, minTriangleCurvature).
 const uint RT_MODE_CONE_MIN_CURVATURE = 12u;
+// Ray-cone LOD as ConeRefraction, the beam carried as two sections: glass refracts the cone in the
+// plane of incidence as ConeRefraction does and the section across it by Coddington's sagittal
+// equation (rf_refract_sagittal_cone), and the ray carries that section's axis; a surface is
+// filtered at the round cone whose footprint is as long as the longer axis of the sections' ellipse
+// on it (rf_two_section_width). RTG II's cone alone spreads both ways as in the plane of incidence,
+// which off the normal is too wide.
+const uint RT_MODE_CONE_SECTIONS = 13u;
 
 // The material id (Material::id) of Material::Textured.
 const uint RT_MATERIAL_TEXTURED = 0u;
@@ -244,8 +251,10 @@ struct RtPixelRecord {
     vec2 cone_uv_dx;
     // .dy of the same call: the minor axis.
     vec2 cone_uv_dy;
-    // Always 0.
-    uvec2 pad;
+    // On glass, rf_refract_sagittal_cone((width, cone.spread_angle), normal, direction, curvature *
+    // |width|, eta): the section across the plane of incidence (the sagittal one) leaving the hit
+    // beside refracted in the cone_sections mode; 0 elsewhere.
+    RfRayCone sagittal;
 };
 
 // Per-frame uniforms of the ray-tracing renderer (a uniform buffer at binding 7): the inverse view

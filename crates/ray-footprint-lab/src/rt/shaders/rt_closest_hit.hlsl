@@ -4,8 +4,8 @@
 // stages' shading, compiled through slangc's GLSL compatibility, `import glsl;`), and has the
 // entry point: on a primary hit it records every value measured there (rt_measure); then it shades
 // in the push constants' mode: a mirror or glass traces the ray rt_bounce gives (reflected or
-// refracted, its cone, and in the ray-differential modes its differential), every other surface is
-// textured as the mode says. Include it after the library modules and the renderer's generated
+// refracted, its cone and sagittal section, and in the ray-differential modes its differential),
+// every other surface is textured as the mode says, at the cone rt_arriving_cone gives. Include it after the library modules and the renderer's generated
 // declarations (rt_abi) in the including file's language: every rf_ call it makes is a call of
 // those modules.
 //
@@ -54,10 +54,10 @@ void main(inout RtPayload payload, in BuiltInTriangleIntersectionAttributes attr
             payload.diff);
     }
     if (rt_passes_on(hit)) {
-        RtBounce bounce = rt_bounce(pc.mode, hit, payload.hit.cone, payload.diff);
+        RtBounce bounce = rt_bounce(pc.mode, hit, payload.hit.cone, payload.diff, payload.sagittal);
         RfHitPayload on = { float3(0.0, 0.0, 0.0), payload.hit.weight * bounce.weight, bounce.cone, hit.depth + 1u,
             0u };
-        RtPayload next = { on, bounce.diff };
+        RtPayload next = { on, bounce.diff, bounce.sagittal };
         RayDesc ray;
         ray.Origin = bounce.origin;
         ray.TMin = 0.0;
@@ -67,7 +67,8 @@ void main(inout RtPayload payload, in BuiltInTriangleIntersectionAttributes attr
         payload.hit.colour = next.hit.colour;
         return;
     }
-    payload.hit.colour = payload.hit.weight * rt_surface_colour(pc.mode, hit, payload.hit.cone, payload.diff);
+    RfRayCone arriving = rt_arriving_cone(pc.mode, hit, payload.hit.cone, payload.sagittal);
+    payload.hit.colour = payload.hit.weight * rt_surface_colour(pc.mode, hit, arriving, payload.diff);
 }
 
 #endif // RT_CLOSEST_HIT_HLSL

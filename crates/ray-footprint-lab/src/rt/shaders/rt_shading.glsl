@@ -16,13 +16,29 @@
 #ifndef RT_SHADING_GLSL
 #define RT_SHADING_GLSL
 
-// The recording shaders' ray payload: the library's cone payload and the ray's differential
-// (Igehy), which the ray-differential modes carry through the mirror. A primary ray carries the
-// eye-ray differential (rt_eye_diff).
+// The section of a ray's beam across the plane of incidence of the last refraction (the sagittal
+// section), which RT_MODE_CONE_SECTIONS carries beside the cone (the tangential section, in that
+// plane): its cone and its axis, the unit cross(direction, normal) of that refraction. A round beam
+// (a primary ray's, or any before glass) has both sections equal and no axis (zero).
+struct RtSagittal {
+    RfRayCone cone;
+    vec3 axis;
+};
+
+// The recording shaders' ray payload: the library's cone payload, the ray's differential (Igehy),
+// which the ray-differential modes carry through the mirror, and the sagittal section. A primary
+// ray carries the eye-ray differential (rt_eye_diff) and its cone as a round sagittal section
+// (rt_round_sagittal).
 struct RtPayload {
     RfHitPayload hit;
     RfRayDiff diff;
+    RtSagittal sagittal;
 };
+
+// The sagittal section of a round beam of cone `cone`: the cone itself, no axis.
+RtSagittal rt_round_sagittal(RfRayCone cone) {
+    return RtSagittal(cone, vec3(0.0));
+}
 
 // A triangle's vertices.
 struct RtTriangle {
@@ -203,7 +219,7 @@ float rt_roughness_spread(RtHit hit) {
 // Whether `mode` widens reflected (and refracted) cones by the surface's curvature.
 bool rt_follows_curvature(uint mode) {
     return mode == RT_MODE_CONE_CURVATURE || mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_CONE_ROUGHNESS
-        || mode == RT_MODE_CONE_MIN_CURVATURE || mode == RT_MODE_CONE_ANISOTROPIC;
+        || mode == RT_MODE_CONE_MIN_CURVATURE || mode == RT_MODE_CONE_ANISOTROPIC || mode == RT_MODE_CONE_SECTIONS;
 }
 
 // The spread angle a reflection off the hit adds to `cone` in `mode`: the curvature's (JCGT 2021)
@@ -241,10 +257,76 @@ RfRefractedRayCone rt_refract_cone(RtHit hit, RfRayCone cone, float eta) {
         eta);
 }
 
-// The cone of the ray a glass hit passes on in `mode`: refracted in RT_MODE_CONE_REFRACTION, and in
-// the others carried on as if the glass were not there.
-RfRayCone rt_glass_cone(uint mode, RtHit hit, RfRayCone cone, float eta) {
-    return mode == RT_MODE_CONE_REFRACTION ? rt_refract_cone(hit, cone, eta).cone : rf_propagate(cone, hit.t, 0.0);
+// The normal's turn across the sagittal section `section` at the hit, as rf_refract_sagittal_cone
+// takes it: the curvature times the section's width |width| (it lies in the tangent plane: no
+// slant), positive where the surface is convex on the side the stored normal points to.
+float rt_sagittal_normal_spread(RtHit hit, RfRayCone section) {
+    return rt_curvature(hit) * abs(rf_width_at(section, hit.t));
+}
+
+// The sagittal section leaving a glass hit with index ratio eta, from the section `section` across
+// the plane of incidence (Coddington's sagittal equation; on total internal reflection the
+// reflected section).
+RfRayCone rt_refract_sagittal(RtHit hit, RfRayCone section, float eta) {
+    return rf_refract_sagittal_cone(rf_propagate(section, hit.t, 0.0), hit.normal, hit.direction,
+        rt_sagittal_normal_spread(hit, section), eta);
+}
+
+// The two sections of a ray's beam: the cone (the tangential section) and the sagittal section.
+struct RtSections {
+    RfRayCone cone;
+    RtSagittal sagittal;
+};
+
+// The sections leaving a glass hit with index ratio eta in RT_MODE_CONE_SECTIONS. The new sagittal
+// axis is the unit cross(direction, normal) (kept at normal incidence, where there is no plane of
+// incidence); where it lies nearer the carried cone's axis than the carried sagittal one (more than
+// 45 degrees from it, as for a round beam's zero axis), the carried sections swap roles first. The
+// section in the plane of incidence is refracted by rt_refract_cone, the one across it by
+// rt_refract_sagittal.
+RtSections rt_refract_sections(RtHit hit, RfRayCone cone, RtSagittal sagittal, float eta) {
+    vec3 across = cross(hit.direction, hit.normal);
+    float across_length = length(across);
+    vec3 axis = across_length > RF_MIN_MAGNITUDE ? across / across_length : sagittal.axis;
+    bool swap = abs(dot(axis, sagittal.axis)) < 0.70710678;
+    RfRayCone tangential = swap ? sagittal.cone : cone;
+    RfRayCone section = swap ? cone : sagittal.cone;
+    return RtSections(rt_refract_cone(hit, tangential, eta).cone, RtSagittal(rt_refract_sagittal(hit, section, eta),
+        axis));
+}
+
+// The sections of the ray a glass hit passes on in `mode`: both refracted in RT_MODE_CONE_SECTIONS
+// (rt_refract_sections); in RT_MODE_CONE_REFRACTION the cone refracted (rt_refract_cone) and the
+// sagittal section, which that mode does not read, carried on; in the others both carried on as if
+// the glass were not there.
+RtSections rt_glass_sections(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagittal, float eta) {
+    if (mode == RT_MODE_CONE_SECTIONS) {
+        return rt_refract_sections(hit, cone, sagittal, eta);
+    }
+    RfRayCone leaving = mode == RT_MODE_CONE_REFRACTION ? rt_refract_cone(hit, cone, eta).cone
+                                                        : rf_propagate(cone, hit.t, 0.0);
+    return RtSections(leaving, RtSagittal(rf_propagate(sagittal.cone, hit.t, 0.0), sagittal.axis));
+}
+
+// The sections of the ray a mirror reflects in `mode`: each widened by rt_reflection_spread of its own
+// width (RTG Eq. 35), the sagittal axis mirrored with the ray.
+RtSections rt_mirror_sections(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagittal) {
+    RfRayCone reflected = rf_propagate(cone, hit.t, rt_reflection_spread(mode, hit, cone));
+    RfRayCone section = rf_propagate(sagittal.cone, hit.t, rt_reflection_spread(mode, hit, sagittal.cone));
+    return RtSections(reflected, RtSagittal(section, reflect(sagittal.axis, hit.normal)));
+}
+
+// The cone a surface reached by the ray carrying `cone` and `sagittal` is filtered with: in
+// RT_MODE_CONE_SECTIONS the round cone whose footprint is as long as the longer axis of the two
+// sections' ellipse on the surface (rf_two_section_width; the same as `cone` for a round beam), at
+// the hit (spread 0, so rf_width_at gives its width at any t); in the other modes `cone`.
+RfRayCone rt_arriving_cone(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagittal) {
+    if (mode != RT_MODE_CONE_SECTIONS) {
+        return cone;
+    }
+    float width = rf_two_section_width(rf_width_at(cone, hit.t), rf_width_at(sagittal.cone, hit.t), sagittal.axis,
+        hit.normal, hit.direction);
+    return RfRayCone(width, 0.0);
 }
 
 // The anisotropic textureGrad gradients of the footprint of `cone` at the hit (JCGT 2021, the
@@ -363,7 +445,7 @@ vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     case RT_MODE_CONE_ANISOTROPIC:
         return rt_sample_grad(uv, rt_cone_uv_gradients(hit, cone));
     default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME, RT_MODE_CONE_REFRACTION,
-             // RT_MODE_CONE_ROUGHNESS
+             // RT_MODE_CONE_ROUGHNESS, RT_MODE_CONE_SECTIONS (at rt_arriving_cone's cone)
         return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone)).rgb;
     }
 }
@@ -391,13 +473,14 @@ bool rt_passes_on(RtHit hit) {
 }
 
 // The ray a hit passes on: where it starts and where it goes, the share of the light it brings
-// back, its cone and its differential.
+// back, its cone, its differential and its sagittal section.
 struct RtBounce {
     vec3 origin;
     vec3 direction;
     float weight;
     RfRayCone cone;
     RfRayDiff diff;
+    RtSagittal sagittal;
 };
 
 // A hash of four words to four (Jarzynski, Olano, "Hash Functions for GPU Rendering", JCGT 9(3),
@@ -467,19 +550,19 @@ vec3 rt_leaving_origin(RtHit hit, vec3 direction) {
     return hit.origin + hit.t * hit.direction + side * hit.normal;
 }
 
-// The ray a mirror or glass passes on from the ray carrying `cone` and `diff` in `mode`. A mirror
-// reflects it (rt_mirror_direction) and 90% of the light; its cone leaves by RTG Eq. 35, widened by
-// rt_reflection_spread. Glass refracts it (rt_glass_direction) and passes all of the light on; its
-// cone is rt_glass_cone. In the ray-differential modes it carries the reflected or refracted
-// differential (Igehy).
-RtBounce rt_bounce(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
+// The ray a mirror or glass passes on from the ray carrying `cone`, `diff` and `sagittal` in `mode`.
+// A mirror reflects it (rt_mirror_direction) and 90% of the light; its sections leave by RTG Eq. 35,
+// widened by rt_reflection_spread (rt_mirror_sections). Glass refracts it (rt_glass_direction) and
+// passes all of the light on; its sections are rt_glass_sections. In the ray-differential modes it
+// carries the reflected or refracted differential (Igehy).
+RtBounce rt_bounce(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff, RtSagittal sagittal) {
     bool glass = hit.material.kind == RT_MATERIAL_GLASS;
     float eta = glass ? rt_relative_index(hit) : 0.0;
     vec3 direction = glass ? rt_glass_direction(hit, eta) : rt_mirror_direction(hit);
-    RfRayCone leaving = glass ? rt_glass_cone(mode, hit, cone, eta)
-                              : rf_propagate(cone, hit.t, rt_reflection_spread(mode, hit, cone));
-    return RtBounce(rt_leaving_origin(hit, direction), direction, glass ? 1.0 : RT_MIRROR_REFLECTANCE, leaving,
-        rt_carries_diff(mode) ? rt_bounced_diff(hit, diff, eta) : diff);
+    RtSections leaving = glass ? rt_glass_sections(mode, hit, cone, sagittal, eta)
+                               : rt_mirror_sections(mode, hit, cone, sagittal);
+    return RtBounce(rt_leaving_origin(hit, direction), direction, glass ? 1.0 : RT_MIRROR_REFLECTANCE, leaving.cone,
+        rt_carries_diff(mode) ? rt_bounced_diff(hit, diff, eta) : diff, leaving.sagittal);
 }
 
 // The ray-differential, re-intersection and wireframe values of a primary hit reached by the eye
@@ -505,8 +588,8 @@ RtDiffRecord rt_measure_diff(RtHit hit, RfRayDiff eye, float footprint) {
 // (footprint and texel density, base LOD and LOD, RTG Eq. 34; the textureGrad gradient; the
 // triangle's curvature and the spread it gives a reflection, JCGT 2021; the reflected cone with the
 // roughness spread, RTG Eq. 35), the ray-differential, re-intersection and wireframe values
-// (rt_measure_diff), the refraction of the cone on glass (RTG II ch. 10) and the anisotropic cone
-// gradients (JCGT 2021).
+// (rt_measure_diff), the refraction of the cone on glass (RTG II ch. 10) and of its sagittal
+// section (rt_refract_sagittal), and the anisotropic cone gradients (JCGT 2021).
 RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
     RtTriangle tri = hit.tri;
     float width = rf_width_at(cone, hit.t);
@@ -519,12 +602,13 @@ RtPixelRecord rt_measure(RtHit hit, RfRayCone cone, RfRayDiff eye) {
     float eta = glass ? rt_relative_index(hit) : 0.0;
     RfRefractedRayCone refracted = glass ? rt_refract_cone(hit, cone, eta) : RfRefractedRayCone(RfRayCone(0.0, 0.0),
         false);
+    RfRayCone sagittal = glass ? rt_refract_sagittal(hit, cone, eta) : RfRayCone(0.0, 0.0);
     RfDerivatives2 cone_uv = rt_cone_uv_gradients(hit, cone);
     return RtPixelRecord(hit.normal, hit.t, hit.direction, hit.mesh, hit.barycentrics, hit.primitive, 1u, cone,
         width, footprint, density, base_lod, rt_cone_lod(hit, cone), rt_cone_gradient(hit, cone), rt_curvature(hit),
         spread, rf_propagate(cone, hit.t, spread + 2.0 * roughness_spread), rt_measure_diff(hit, eye, footprint),
         roughness_spread, eta, glass ? rt_normal_spread(hit, cone) : 0.0, refracted.total_internal_reflection ? 1u : 0u,
-        refracted.cone, cone_uv.dx, cone_uv.dy, uvec2(0u));
+        refracted.cone, cone_uv.dx, cone_uv.dy, sagittal);
 }
 
 // The record of a ray that hit nothing.
@@ -532,7 +616,8 @@ RtPixelRecord rt_miss_record(vec3 direction, RfRayCone cone) {
     RtDiffRecord none = RtDiffRecord(vec3(0.0), 0.0, vec3(0.0), 0.0, vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0),
         vec3(0.0), 0.0, vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0u, vec2(0.0), vec2(0.0), vec3(0.0), 0u, vec3(0.0), 0u);
     return RtPixelRecord(vec3(0.0), 0.0, direction, 0u, vec2(0.0), 0u, 0u, cone, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-        0.0, RfRayCone(0.0, 0.0), none, 0.0, 0.0, 0.0, 0u, RfRayCone(0.0, 0.0), vec2(0.0), vec2(0.0), uvec2(0u));
+        0.0, RfRayCone(0.0, 0.0), none, 0.0, 0.0, 0.0, 0u, RfRayCone(0.0, 0.0), vec2(0.0), vec2(0.0),
+        RfRayCone(0.0, 0.0));
 }
 
 // Sky colour for a ray leaving the scene in `direction`.
