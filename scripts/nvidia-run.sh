@@ -310,7 +310,7 @@ quality() {
         printf '%s\n' "${STEPS[@]}"
         for size in "$@"; do
             echo "$size: $(grep -m1 '^goals (' "$out/quality-$size.log")"
-            grep -F -- '- **MISSED**' "$out/quality-$size.log"
+            grep -F -- '- **MISSED**' "$out/quality-$size.log" || true
         done
     } | tee "$out/quality-summary.txt"
 }
