@@ -73,6 +73,11 @@ pub fn snell(d: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
     (k >= 0.0).then(|| d * eta - facing * (eta * cosine + k.sqrt()))
 }
 
+/// `v` mirrored at the plane with unit normal `n`: `v - 2 (v . n) n`, a direction's reflection.
+pub fn mirrored(v: DVec3, n: DVec3) -> DVec3 {
+    v - n * (2.0 * v.dot(n))
+}
+
 /// Where the ray `origin + s direction` meets the plane through `point` with normal `normal`.
 pub fn plane_hit(origin: DVec3, direction: DVec3, point: DVec3, normal: DVec3) -> DVec3 {
     origin + direction * ((point - origin).dot(normal) / direction.dot(normal))

@@ -1,8 +1,8 @@
 //! How large a pixel's footprint on the ground plane is when seen through the glass sphere of the
 //! materials scene (`Camera::glass`), at the lab's two image sizes: the exact footprint against
-//! the refracted ray cone alone (RTG II ch. 10, the section in the plane of incidence), and
-//! against the two sections the `cone_refraction` mode carries (that cone and the section across
-//! the plane of incidence). It explains the quality lab's glass figures: an isotropic
+//! the refracted ray cone alone (RTG II ch. 10, the section in the plane of incidence: the
+//! `cone_refraction` mode), and against the two sections the `cone_sections` mode carries (that
+//! cone and the section across the plane of incidence). It explains the quality lab's glass figures: an isotropic
 //! `textureGrad` filters at the footprint's longer axis, so a cone wider than that axis blurs.
 //!
 //! ```text
@@ -19,12 +19,11 @@
 //!   larger singular value of that Jacobian.
 //! - *Cone*: the library's f32 functions: the pinhole cone of the ray, refracted at both surfaces
 //!   by `refract_ray_cone` with the normal's turn across the slanted footprint, its footprint on
-//!   the ground `|width| / |n . d|` (the `cone_refraction` mode before it carried a second
-//!   section). `refract_ray_cone` carries the width in the plane of incidence (the tangential
-//!   section of the beam).
+//!   the ground `|width| / |n . d|`, as the `cone_refraction` mode carries it. `refract_ray_cone`
+//!   carries the width in the plane of incidence (the tangential section of the beam).
 //! - *Two widths*: the same cone, and beside it the section across the plane of incidence (the
 //!   sagittal section), refracted at both surfaces by `refract_sagittal_cone` (Coddington's
-//!   sagittal equation to first order), as the renderer's `cone_refraction` mode carries it. For a
+//!   sagittal equation to first order), as the renderer's `cone_sections` mode carries it. For a
 //!   sphere both surfaces share one plane of incidence, so the two sections stay the beam's axes;
 //!   on the ground they span an ellipse whose longer axis is the footprint (`two_section_width`
 //!   over `|n . d|`). *Larger width*: the larger of the two widths over `|n . d|` on the ground, a
@@ -202,10 +201,10 @@ fn longer_axis(a: DVec3, b: DVec3) -> f64 {
     singular_values(on_ground(a), on_ground(b)).0
 }
 
-/// The tangential section leaving the sphere, as the renderer's `cone_refraction` mode carries it:
-/// `eye_cone`, the ray's pinhole cone, refracted at the front and at the back, each time with the
-/// normal's turn across the slanted footprint (`rt_normal_spread`, curvature `1 / radius` on the
-/// outward normal's side).
+/// The tangential section leaving the sphere, as the renderer's `cone_refraction` and
+/// `cone_sections` modes carry it: `eye_cone`, the ray's pinhole cone, refracted at the front and
+/// at the back, each time with the normal's turn across the slanted footprint (`rt_normal_spread`,
+/// curvature `1 / radius` on the outward normal's side).
 fn refracted_cone(eye_cone: RayCone, path: &Path) -> RayCone {
     let index = GLASS_INDEX;
     let curvature = 1.0 / GLASS_RADIUS;

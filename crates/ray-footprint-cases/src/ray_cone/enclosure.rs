@@ -197,15 +197,25 @@ pub(super) fn refraction_decided(&(_, normal, direction, _, eta): &RefractArgs) 
     side_decided && reflection_decided
 }
 
-pub(super) fn refract_ray_cone(args: &RefractArgs) -> Vec<Interval> {
+/// `facing` (a refraction for one normal orientation) with the normal spread as the ray sees it:
+/// negated where the normal faces away from the ray, the hull of both where `dot(n, d)` is within
+/// rounding of 0.
+fn either_facing(
+    args: &RefractArgs,
+    facing: fn(&RefractArgs, Interval, f32) -> Vec<Interval>,
+) -> Vec<Interval> {
     let &(_, normal, direction, beta, _) = args;
     let cosine = interval3(normal).dot(interval3(direction));
     select(
         cosine.lo > 0.0,
         cosine.hi > 0.0,
-        || refract_facing(args, cosine, -beta),
-        || refract_facing(args, cosine, beta),
+        || facing(args, cosine, -beta),
+        || facing(args, cosine, beta),
     )
+}
+
+pub(super) fn refract_ray_cone(args: &RefractArgs) -> Vec<Interval> {
+    either_facing(args, refract_facing)
 }
 
 /// `rf_refract_sagittal_cone` for one normal orientation (`facing_spread`): the hull of the
@@ -237,14 +247,7 @@ fn sagittal_facing(
 }
 
 pub(super) fn refract_sagittal_cone(args: &RefractArgs) -> Vec<Interval> {
-    let &(_, normal, direction, beta, _) = args;
-    let cosine = interval3(normal).dot(interval3(direction));
-    select(
-        cosine.lo > 0.0,
-        cosine.hi > 0.0,
-        || sagittal_facing(args, cosine, -beta),
-        || sagittal_facing(args, cosine, beta),
-    )
+    either_facing(args, sagittal_facing)
 }
 
 /// `rf_two_section_width`, in the same order of operations.

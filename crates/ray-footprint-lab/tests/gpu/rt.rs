@@ -2,9 +2,10 @@
 //!
 //! The GLSL, the Slang and the HLSL closest-hit shaders and the WGSL ray-query shader record, per
 //! pixel, the primary hit (distance, normal, barycentrics, instance, triangle), every ray-cone
-//! value they computed there, the ray-differential, re-intersection and wireframe values, the material's values (a
-//! mirror's roughness spread; on glass the index ratio, the normal's spread, the refracted cone and its sagittal section)
-//! and the anisotropic cone gradients, on the gallery and on the materials scene. The Rust mirror
+//! value they computed there, the ray-differential, re-intersection and wireframe values, the
+//! material's values (a mirror's roughness spread; on glass the index ratio, the normal's spread,
+//! the refracted cone and its sagittal section) and the anisotropic cone gradients, on the gallery
+//! and on the materials scene. The Rust mirror
 //! recomputes each value from the same hit data, the scene's own vertices and the frame's
 //! uniforms; each function is given exactly the inputs the shader gave it, so each comparison
 //! measures one library function, within the tolerance its record in `ray-footprint-cases` derives

@@ -129,6 +129,17 @@ fn sampled_longer_axis(a: DVec3, b: DVec3, n: DVec3, d: DVec3) -> f64 {
     reach(0.5 * (low + high))
 }
 
+/// The relative error of `rf_two_section_width` for the unit normal and direction `n`, `d`: the
+/// f32 axis is off the exact one by its rounding (u), the unit inputs by theirs (`unit_excess`);
+/// every term of the eigenvalue is at most twice the eigenvalue, so the evaluation's twenty-odd
+/// roundings stay within 24 u of it, except the tilts' (`n . t`), whose absolute error (4 u)
+/// becomes `4 u |tilt| / lambda <= 4 u / c` relative once squared; the square roots halve what is
+/// left.
+fn two_section_error(n: Vec3, d: Vec3) -> f64 {
+    let cosine = n.as_dvec3().normalize().dot(d.as_dvec3().normalize()).abs();
+    (24.0 + 8.0 / cosine) * U + 4.0 * unit_excess(n, d)
+}
+
 /// `rf_two_section_width`: the ellipse's rays intersected with the surface.
 pub(in crate::ray_cone) fn two_section_width_sampled() -> Reference<TwoSectionArgs, f32> {
     Reference::new(
@@ -142,14 +153,9 @@ pub(in crate::ray_cone) fn two_section_width_sampled() -> Reference<TwoSectionAr
             let (n, d) = (args.3.as_dvec3().normalize(), args.4.as_dvec3().normalize());
             let (sagittal_axis, tangential_axis) = section_axes(n, d, turn);
             let (w_t, w_s) = (f64::from(args.0), f64::from(args.1));
-            let cosine = n.dot(d).abs();
-            let exact = cosine * sampled_longer_axis(tangential_axis * w_t, sagittal_axis * w_s, n, d);
-            // The f32 axis is off the exact one by its rounding (u), the unit inputs by theirs
-            // (unit_excess); every term of the eigenvalue is at most twice the eigenvalue, so the
-            // evaluation's twenty-odd roundings stay within 24 u of it, except the tilts' (n . t),
-            // whose absolute error (4 u) becomes 4 u |tilt| / lambda <= 4 u / c relative once
-            // squared; the square roots halve what is left. 1.01 for the search's own error.
-            let relative = (24.0 + 8.0 / cosine) * U + 4.0 * unit_excess(args.3, args.4);
+            let exact = n.dot(d).abs() * sampled_longer_axis(tangential_axis * w_t, sagittal_axis * w_s, n, d);
+            // 1.01 for the search's own error.
+            let relative = two_section_error(args.3, args.4);
             Some(Deviation::within(f64::from(got), exact, 1.01 * relative * exact))
         },
     )
@@ -169,10 +175,9 @@ pub(in crate::ray_cone) fn two_section_width_limits() -> Reference<TwoSectionArg
             let head_on = two_section_width((w_t, w_s, sagittal_axis.as_vec3(), n32, -n32));
             let given = two_section_width((w_t, w_s, sagittal_axis.as_vec3(), n32, d32));
             let swapped = two_section_width((w_s, w_t, tangential_axis.as_vec3(), n32, d32));
-            // As the sampled reference: 24 u and the tilts' 4 u / c, twice for the swap (both
-            // sides round); head on every tilt is within 4 u of 0.
-            let cosine = n.dot(d).abs();
-            let relative = (24.0 + 8.0 / cosine) * U + 4.0 * unit_excess(n32, d32);
+            // Twice the error for the swap (both sides round); head on every tilt is within 4 u
+            // of 0.
+            let relative = two_section_error(n32, d32);
             let larger = f64::from(w_t.abs().max(w_s.abs()));
             let round = Deviation::within(f64::from(round), f64::from(w_t.abs()), relative * f64::from(w_t.abs()));
             let head_on = Deviation::within(f64::from(head_on), larger, 32.0 * U * larger);

@@ -3,6 +3,7 @@
 //! Toolkit's thin form, the limit cases, and the roughness mapping's closed form.
 
 use super::{rotated, scatter_cone, snell, Scattered, Surface};
+use crate::exact;
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
 use glam::{DVec2, DVec3, Vec3};
 use proptest::prelude::*;
@@ -240,18 +241,35 @@ pub(in crate::ray_cone) fn refract_first_order() -> Reference<Args, RefractedRay
     )
 }
 
+/// Normal incidence on a curved surface: an index ratio, a curvature, `log10` of the width and a
+/// spread, small enough for the OptiX Toolkit's thin form.
+fn normal_incidence() -> BoxedStrategy<(f64, f64, f64, f64)> {
+    (0.4f64..2.5, -10.0f64..10.0, -6.0f64..-3.0, -2.0e-3f64..2.0e-3).boxed()
+}
+
+/// The f32 arguments of a [`normal_incidence`] case: the cone head on at `+z`, the normal spread
+/// `curvature * width` (the thin form's `k |w|`).
+fn normal_incidence_args((eta, curvature, width, spread): (f64, f64, f64, f64)) -> Args {
+    let width = 10f64.powf(width) as f32;
+    let beta = (curvature * f64::from(width)) as f32;
+    let cone = RayCone {
+        width,
+        spread_angle: spread as f32,
+    };
+    (cone, Vec3::Z, Vec3::NEG_Z, beta, eta as f32)
+}
+
 /// `rf_refract_ray_cone`: the OptiX Toolkit at normal incidence.
 pub(in crate::ray_cone) fn refract_optix() -> Reference<Args, RefractedRayCone> {
     Reference::new(
         Kind::PeerOriginal,
         "normal incidence on curved surfaces: the OptiX Toolkit's thin form (n_out / n_in) (angle + k |w|) - k |w| with beta = k |w|, within (eta q)^3 for q = (spread + beta) / 2; the width passes unchanged",
-        || (0.4f64..2.5, -10.0f64..10.0, -6.0f64..-3.0, -2.0e-3f64..2.0e-3).boxed(),
-        |&(eta, curvature, width, spread), refract| {
-            let (eta, width, spread) = (eta as f32, 10f64.powf(width) as f32, spread as f32);
-            let beta = (curvature * f64::from(width)) as f32;
-            let cone = RayCone { width, spread_angle: spread };
-            let refracted = refract((cone, Vec3::Z, Vec3::NEG_Z, beta, eta));
-            let (eta, spread, beta) = (f64::from(eta), f64::from(spread), f64::from(beta));
+        normal_incidence,
+        |&inputs, refract| {
+            let args = normal_incidence_args(inputs);
+            let refracted = refract(args);
+            let (cone, _, _, beta, eta) = args;
+            let (eta, spread, beta, width) = (f64::from(eta), f64::from(cone.spread_angle), f64::from(beta), cone.width);
             let thin_form = eta * (spread + beta) - beta;
             // The construction gives 2 asin(eta sin q) - beta, which differs from the thin form by
             // O(q^3): below (eta q)^3; plus 1e-6 relative for the f32 rounding.
@@ -371,11 +389,6 @@ fn trace_sagittal(
     })
 }
 
-/// The mirror image of the direction `d` at a surface with unit normal `n`.
-fn mirrored(d: DVec3, n: DVec3) -> DVec3 {
-    d - n * (2.0 * d.dot(n))
-}
-
 /// The sagittal section checked against its exact trace: the section passes its width on and its
 /// spread within `bound` of the spread and the normal turn it has to follow.
 fn sagittal_deviation(got: RayCone, traced: &SagittalTrace, bound: f64) -> Deviation {
@@ -402,7 +415,7 @@ pub(in crate::ray_cone) fn sagittal_curved() -> Reference<Args, RayCone> {
             }
             let d = case.direction.as_dvec3();
             let cone = (f64::from(case.cone.width), f64::from(case.cone.spread_angle));
-            let traced = trace_sagittal(d, curvature, cone, |d, n| crate::exact::snell(d, n, eta))?;
+            let traced = trace_sagittal(d, curvature, cone, |d, n| exact::snell(d, n, eta))?;
             case.normal_spread = traced.normal_spread as f32;
             let refracted = refract(case.arguments());
             // Coddington's equation is the first-order term; the sphere's sag, the boundary rays'
@@ -420,13 +433,12 @@ pub(in crate::ray_cone) fn sagittal_normal_incidence() -> Reference<Args, RayCon
     Reference::new(
         Kind::PeerOriginal,
         "normal incidence on curved surfaces, where the two sections are one: the OptiX Toolkit's thin form (n_out / n_in) (angle + k |w|) - k |w| with beta = k |w|, to f32 rounding; the width passes unchanged",
-        || (0.4f64..2.5, -10.0f64..10.0, -6.0f64..-3.0, -2.0e-3f64..2.0e-3).boxed(),
-        |&(eta, curvature, width, spread), refract| {
-            let (eta, width, spread) = (eta as f32, 10f64.powf(width) as f32, spread as f32);
-            let beta = (curvature * f64::from(width)) as f32;
-            let cone = RayCone { width, spread_angle: spread };
-            let got = refract((cone, Vec3::Z, Vec3::NEG_Z, beta, eta));
-            let (eta, spread, beta) = (f64::from(eta), f64::from(spread), f64::from(beta));
+        normal_incidence,
+        |&inputs, refract| {
+            let args = normal_incidence_args(inputs);
+            let got = refract(args);
+            let (cone, _, _, beta, eta) = args;
+            let (eta, spread, beta, width) = (f64::from(eta), f64::from(cone.spread_angle), f64::from(beta), cone.width);
             let thin_form = eta * (spread + beta) - beta;
             // cos i = cos t = 1 exactly; two products and two sums round: gamma(4) of the terms.
             let bound = gamma(4) * (eta * spread.abs() + (eta + 1.0) * beta.abs());
@@ -450,7 +462,7 @@ pub(in crate::ray_cone) fn sagittal_total_internal_reflection() -> Reference<Arg
             let mut case = Case::new(incidence, 10f64.powf(width), spread, eta);
             let d = case.direction.as_dvec3();
             let cone = (f64::from(case.cone.width), f64::from(case.cone.spread_angle));
-            let traced = trace_sagittal(d, curvature, cone, |d, n| Some(mirrored(d, n)))?;
+            let traced = trace_sagittal(d, curvature, cone, |d, n| Some(exact::mirrored(d, n)))?;
             case.normal_spread = traced.normal_spread as f32;
             let reflected = refract(case.arguments());
             // As the refraction: second order in the width and the spread, over cos i.

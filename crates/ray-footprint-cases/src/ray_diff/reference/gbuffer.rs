@@ -4,7 +4,7 @@
 
 use super::super::{enclosure, GBufferArgs};
 use super::{components, listed, widths};
-use crate::exact::{log_uniform, tangent, towards, unit};
+use crate::exact::{log_uniform, mirrored, tangent, towards, unit};
 use crate::reference::{Kind, Reference, U};
 use glam::{DMat3, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
@@ -111,11 +111,6 @@ impl Scene {
     }
 }
 
-/// `e` mirrored at the plane with unit normal `n`.
-fn reflected(e: DVec3, n: DVec3) -> DVec3 {
-    e - n * (2.0 * e.dot(n))
-}
-
 /// How far the f32 sample `s` moves the hit `t e` and the reflected direction from the exact
 /// `(e, t, n)` (both formulas evaluated in f64 on the rounded inputs).
 fn input_rounding(s: GBufferSample, (e, t, n): (DVec3, f64, DVec3)) -> (f64, f64) {
@@ -125,7 +120,7 @@ fn input_rounding(s: GBufferSample, (e, t, n): (DVec3, f64, DVec3)) -> (f64, f64
         s.normal.as_dvec3(),
     );
     let position = (e32 * t32 - e * t).length();
-    let direction = (e32 - n32 * (2.0 * n32.dot(e32)) - reflected(e, n)).length();
+    let direction = (e32 - n32 * (2.0 * n32.dot(e32)) - mirrored(e, n)).length();
     (position, direction)
 }
 
@@ -154,7 +149,7 @@ pub(in crate::ray_diff) fn gbuffer_ray_diff() -> Reference<GBufferArgs, RayDiff>
             };
             let direction = |i: usize| {
                 let (e, _, n) = scene.sample(i);
-                reflected(e, n)
+                mirrored(e, n)
             };
             let expected = listed(
                 &[hit(x1) - hit(x0), hit(y1) - hit(y0), direction(x1) - direction(x0), direction(y1) - direction(y0)],

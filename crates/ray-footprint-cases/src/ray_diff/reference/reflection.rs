@@ -5,7 +5,7 @@
 use super::super::{enclosure, Camera};
 use super::camera::image_plane_point;
 use super::{components, listed, widths};
-use crate::exact::{derivative, log_uniform, snell, towards, unit};
+use crate::exact::{derivative, log_uniform, mirrored, snell, towards, unit};
 use crate::reference::{Deviation, Kind, Reference};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
@@ -96,11 +96,6 @@ pub(in crate::ray_diff) fn normal_derivatives(
             Some(components(got, &listed(&[ex.value, ey.value], 0), |i| bounds[i] + error))
         },
     )
-}
-
-/// `v` mirrored at the plane with unit normal `n`.
-fn mirrored(v: DVec3, n: DVec3) -> DVec3 {
-    v - n * (2.0 * v.dot(n))
 }
 
 /// `rf_reflect_ray_diff`: the exact reflection, differentiated.
