@@ -1161,13 +1161,14 @@ pub fn refract_ray_cone(
 
 /// The sagittal section of a cone crossing a refraction: the section across the plane of incidence,
 /// which [`refract_ray_cone`] (the section in that plane, the tangential one) does not follow.
-/// Coddington's sagittal equation (Kingslake, *Lens Design Fundamentals*, ch. 4; Born and Wolf,
-/// *Principles of Optics*, §4.6), `n' / s' - n / s = (n' cos t - n cos i) k`, written for a cone of
-/// width `w` and spread `alpha` and divided by `n'`: the width is kept and
-/// `spread' = eta alpha + (eta cos i - cos t) beta`, with `beta = k w` the normal's turn across the
-/// section (the section lies in the surface's tangent plane, so it is not slanted). At normal
-/// incidence this is the tangential section's `eta (alpha + beta) - beta` ([`refract_ray_cone`] to
-/// first order): the two sections differ only off the normal.
+/// Coddington's sagittal equation for a thin astigmatic pencil (Coddington 1829; as stated in
+/// Kingslake and Johnson, *Lens Design Fundamentals*, 2nd ed., 2010, on astigmatism),
+/// `n' / s' - n / s = (n' cos t - n cos i) k` for a surface of curvature `k` across the plane of
+/// incidence, written for a cone of width `w` and spread `alpha` and divided by `n'`: the width is
+/// kept and `spread' = eta alpha + (eta cos i - cos t) beta`, with `beta = k w` the normal's turn
+/// across the section (the section lies in the surface's tangent plane, so it is not slanted).
+/// At normal incidence this is the tangential section's `eta (alpha + beta) - beta`
+/// ([`refract_ray_cone`] to first order): the two sections differ only off the normal.
 ///
 /// Arguments as [`refract_ray_cone`] takes them, for the sagittal section: `cone` at the hit, unit
 /// `normal` and `direction`, `normal_spread_angle` the normal's turn across the section, positive
