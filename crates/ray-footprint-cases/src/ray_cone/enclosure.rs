@@ -132,6 +132,12 @@ fn boundary_ray(inputs: &BoundaryInputs, side: f64) -> BoundaryRay {
     }
 }
 
+/// `normal_tilt`: half the clamped normal spread, with the width's sign.
+fn normal_tilt(width: f32, facing_spread: f32) -> Interval {
+    let signed_half = if width < 0.0 { -0.5 } else { 0.5 };
+    Interval::c(signed_half) * Interval::exact(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD))
+}
+
 /// The transmitted cone (its clamps cover the part of `eta sin i`'s interval above 1).
 fn transmitted_cone(cone: RayCone, incidence: Interval2, facing_spread: f32, index: f32) -> Vec<Interval> {
     let limit = (Interval::c(f64::from(MAX_INCIDENCE_ANGLE))
@@ -140,9 +146,7 @@ fn transmitted_cone(cone: RayCone, incidence: Interval2, facing_spread: f32, ind
     let half_spread = (Interval::c(0.5) * Interval::exact(cone.spread_angle))
         .max(-limit)
         .min(limit);
-    let signed_half = if cone.width < 0.0 { -0.5 } else { 0.5 };
-    let tilt = Interval::c(signed_half)
-        * Interval::exact(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD));
+    let tilt = normal_tilt(cone.width, facing_spread);
     let inputs = BoundaryInputs {
         incidence,
         transmitted: refracted_sin_cos(incidence, index),
@@ -227,10 +231,7 @@ fn sagittal_facing(
 ) -> Vec<Interval> {
     let incidence = incidence_sin_cos(normal, direction, cosine);
     let index = eta.max(0.0);
-    let signed_half = if cone.width < 0.0 { -0.5 } else { 0.5 };
-    let turn = Interval::c(2.0)
-        * (Interval::c(signed_half)
-            * Interval::exact(facing_spread.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD)));
+    let turn = Interval::c(2.0) * normal_tilt(cone.width, facing_spread);
     let spread = Interval::exact(cone.spread_angle);
     let sin_t = Interval::exact(index) * incidence.0[0];
     let leaving_spread = select(

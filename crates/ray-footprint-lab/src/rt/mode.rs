@@ -9,10 +9,10 @@ use std::fmt;
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
 /// reflection off a mirror widens its cone by the surface curvature and roughness, whether glass
 /// refracts the cone (and its second section), whether a reflected or refracted ray carries a ray
-/// differential, and whether the wireframe is drawn. Every mode reflects and refracts the same rays. The ray-differential
-/// modes carry the differential through mirrors and glass (Igehy's reflection and refraction); the
-/// re-intersection of `BaryGradients` needs a primary hit: what the mirror reflects is sampled at
-/// the ray-cone LOD in it. The cone modes other than `ConeRefraction` and `ConeSections` carry the
+/// differential, and whether the wireframe is drawn. Every mode reflects and refracts the same
+/// rays. The ray-differential modes carry the differential through mirrors and glass (Igehy's
+/// reflection and refraction); the re-intersection of `BaryGradients` needs a primary hit: what
+/// the mirror reflects is sampled at the ray-cone LOD in it. The cone modes other than `ConeRefraction` and `ConeSections` carry the
 /// cone through glass as if the glass were not there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[repr(u32)]

@@ -113,10 +113,11 @@ fn section_axes(n: DVec3, d: DVec3, turn: f64) -> (DVec3, DVec3) {
 fn sampled_longer_axis(a: DVec3, b: DVec3, n: DVec3, d: DVec3) -> f64 {
     let reach = |phi: f64| plane_hit(a * phi.cos() + b * phi.sin(), d, DVec3::ZERO, n).length();
     let step = PI / 3600.0;
-    let best = (0..3600)
+    let (best, _) = (0..3600)
         .map(|k| f64::from(k) * step)
-        .max_by(|x, y| reach(*x).total_cmp(&reach(*y)))
-        .unwrap_or(0.0);
+        .map(|phi| (phi, reach(phi)))
+        .max_by(|x, y| x.1.total_cmp(&y.1))
+        .unwrap_or((0.0, 0.0));
     let (mut low, mut high) = (best - step, best + step);
     for _ in 0..100 {
         let (left, right) = (low + (high - low) / 3.0, high - (high - low) / 3.0);

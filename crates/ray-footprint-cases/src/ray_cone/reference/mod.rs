@@ -84,18 +84,24 @@ impl Surface {
         let centre = DVec2::new(0.0, -r);
         let b = (start - centre).dot(d);
         let c = start.x * start.x + start.y * (start.y + 2.0 * r);
-        let discriminant = b * b - c;
-        if discriminant < 0.0 {
-            return None;
-        }
-        let q = -b - b.signum() * discriminant.sqrt();
-        let point = [q, c / q]
+        let point = quadratic_roots(b, c)?
             .into_iter()
             .filter(|&s| s > 0.0 && s.is_finite())
             .map(|s| start + d * s)
             .min_by(|a, b| a.length().total_cmp(&b.length()))?;
         Some((point, (point - centre) / r))
     }
+}
+
+/// The two roots of `s^2 + 2 b s + c = 0`, `q = -b - sign(b) sqrt(b^2 - c)` and `c / q`, each
+/// without cancellation; `None` where they are not real.
+fn quadratic_roots(b: f64, c: f64) -> Option<[f64; 2]> {
+    let discriminant = b * b - c;
+    if discriminant < 0.0 {
+        return None;
+    }
+    let q = -b - b.signum() * discriminant.sqrt();
+    Some([q, c / q])
 }
 
 /// A cone after a surface, measured across its scattered central ray through the hit.

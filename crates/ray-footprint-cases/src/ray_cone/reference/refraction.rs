@@ -2,7 +2,7 @@
 //! exactly in f64 through flat and spherical interfaces, the first-order formulas, the OptiX
 //! Toolkit's thin form, the limit cases, and the roughness mapping's closed form.
 
-use super::{rotated, scatter_cone, snell, Scattered, Surface};
+use super::{quadratic_roots, rotated, scatter_cone, snell, Scattered, Surface};
 use crate::exact;
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
 use glam::{DVec2, DVec3, Vec3};
@@ -370,12 +370,8 @@ fn trace_sagittal(
     let offset = start - centre;
     let b = offset.dot(direction);
     let c = start.length_squared() + 2.0 * radius * start.z;
-    let discriminant = b * b - c;
-    if discriminant < 0.0 {
-        return None;
-    }
-    let q = -b - b.signum() * discriminant.sqrt();
-    let nearest = if (c / q).abs() < q.abs() { c / q } else { q };
+    let [first, second] = quadratic_roots(b, c)?;
+    let nearest = if second.abs() < first.abs() { second } else { first };
     let hit = start + direction * nearest;
     let normal = (hit - centre) / radius;
     let central = scatter(d, DVec3::Z)?;

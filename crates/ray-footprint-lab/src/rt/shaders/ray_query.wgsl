@@ -349,12 +349,11 @@ fn rt_measure(tri: RtTriangle, material: u32, parameter: f32, barycentrics: vec2
     if material == RT_MATERIAL_GLASS {
         record.eta = select(parameter, 1.0 / parameter, dot(normal, direction) < 0.0);
         record.normal_spread = curvature * footprint;
-        let refracted = rf_refract_ray_cone(rf_propagate(cone, t, 0.0), normal, direction, record.normal_spread,
-            record.eta);
+        let at_hit = rf_propagate(cone, t, 0.0);
+        let refracted = rf_refract_ray_cone(at_hit, normal, direction, record.normal_spread, record.eta);
         record.total_internal_reflection = select(0u, 1u, refracted.total_internal_reflection);
         record.refracted = refracted.cone;
-        record.sagittal = rf_refract_sagittal_cone(rf_propagate(cone, t, 0.0), normal, direction,
-            curvature * abs(width), record.eta);
+        record.sagittal = rf_refract_sagittal_cone(at_hit, normal, direction, curvature * abs(width), record.eta);
     }
     let cone_uv = rf_anisotropic_cone_gradients(width, direction, tri.p[0], tri.p[1], tri.p[2], tri.uv[0], tri.uv[1],
         tri.uv[2]);
