@@ -1,10 +1,12 @@
 //! Pixel-footprint math for GPU ray tracers and raymarchers: ray cones, ray differentials and
-//! anti-aliased barycentric wireframe, as WGSL, GLSL and Slang modules to include in your shaders,
-//! with a Rust mirror of every function and of every struct that crosses the CPU/GPU boundary.
+//! anti-aliased barycentric wireframe, as WGSL, GLSL, Slang and HLSL modules to include in your
+//! shaders, with a Rust mirror of every function and of every struct that crosses the CPU/GPU
+//! boundary.
 //!
-//! The WGSL, the GLSL, the Slang and the Rust give the same answers: the workspace's `ray-footprint-lab`
-//! runs every shader function on a Vulkan device (Mesa's lavapipe in CI) through the
-//! `shader-proptest` harness and compares the results with the mirror, function by function.
+//! The WGSL, the GLSL, the Slang, the HLSL and the Rust give the same answers: the workspace's
+//! `ray-footprint-lab` runs every shader function on a Vulkan device (Mesa's lavapipe in CI)
+//! through the `shader-proptest` harness and compares the results with the mirror, function by
+//! function.
 #![deny(missing_docs)]
 
 pub mod abi;

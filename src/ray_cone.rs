@@ -49,6 +49,8 @@ pub struct RayCone {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
 pub struct PackedRayCone(pub u32);
 
+// ---- Packing ----
+
 /// Packs a cone into two f16 (`packHalf2x16` / `pack2x16float`), each value first clamped to
 /// `[-F16_MAX, F16_MAX]` so that no finite value becomes infinite. Rounds to nearest, ties to even.
 ///
@@ -94,6 +96,8 @@ pub fn unpack_ray_cone(packed: PackedRayCone) -> RayCone {
         spread_angle: f16::value((packed.0 >> 16) as u16),
     }
 }
+
+// ---- Primary cones from cameras (RTG Eq. 30) ----
 
 /// `2 * tan(fov_y / 2) / H` with the clamps of [`pixel_spread_angle`].
 fn pixel_tan_ratio(fov_y: f32, image_height: f32) -> f32 {
@@ -259,6 +263,8 @@ pub fn thin_lens_ray_cone(pixel_spread_angle: f32, aperture: f32, focus_distance
     }
 }
 
+// ---- Propagation (RTG Eq. 35) ----
+
 /// Cone width after travelling `t` along the ray: `width + spread_angle * t` (RTG Eq. 35, first line).
 ///
 /// # Examples
@@ -300,6 +306,8 @@ pub fn propagate(cone: RayCone, t: f32, surface_spread_angle: f32) -> RayCone {
         spread_angle: cone.spread_angle + surface_spread_angle,
     }
 }
+
+// ---- Surface spread from G-buffer derivatives (RTG Eq. 31-33) ----
 
 /// `sqrt(dot(dn_dx, dn_dx) + dot(dn_dy, dn_dy))`.
 fn normal_derivative_length(dn_dx: Vec3, dn_dy: Vec3) -> f32 {
@@ -386,6 +394,8 @@ pub fn curvature_sign(dp_dx: Vec3, dp_dy: Vec3, dn_dx: Vec3, dn_dy: Vec3) -> f32
 pub fn surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f32, k2: f32) -> f32 {
     2.0 * k1 * curvature_sign * normal_spread_angle + k2
 }
+
+// ---- Curvature from vertex normals (JCGT 2021; Rusinkiewicz 2004) ----
 
 /// Curvature along one triangle edge from its vertex normals (JCGT 2021, Sec. 3):
 /// `k = dot(n_j - n_i, p_j - p_i) / |p_j - p_i|^2`; 1/R on a sphere of radius R with outward normals.
@@ -692,6 +702,8 @@ pub fn curvature_spread_angle(curvature: f32, width: f32, normal: Vec3, directio
     2.0 * curvature * width / facing_cos(normal, direction)
 }
 
+// ---- Footprint and texture LOD (RTG Eq. 34) ----
+
 /// World-space footprint on the surface, slant-corrected (ray-cone tutorial, after RTG Eq. 34):
 /// `|width + spread_angle * t| / max(|dot(normal, direction)|, MIN_COS)`.
 ///
@@ -938,6 +950,8 @@ pub fn environment_lod(spread_angle: f32, map_height: f32) -> f32 {
         .max(MIN_MAGNITUDE)
         .log2()
 }
+
+// ---- Refraction and roughness (RTG II ch. 10; JCGT 2021) ----
 
 /// Largest angle, in radians, between a boundary ray of a refracted cone and the surface normal:
 /// `pi / 2 - 1e-4`, so that every boundary ray meets the surface with `|cos| >= MIN_COS` (see

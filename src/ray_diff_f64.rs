@@ -64,6 +64,8 @@ fn plane_barycentrics_f64(origin: DVec3, direction: DVec3, p0: DVec3, p1: DVec3,
     DVec3::new(1.0 - uv.x - uv.y, uv.x, uv.y)
 }
 
+// ---- Re-intersection in double precision (wireframe tutorial) ----
+
 /// [`crate::ray_diff::intersect_triangle_plane`] computed in f64: f32 in, f32 out.
 ///
 /// # Examples

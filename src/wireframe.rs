@@ -175,6 +175,8 @@ pub const WIREFRAME_STIPPLE: WireframeSettings = WireframeSettings {
     screen_space: true,
 };
 
+// ---- Settings from the host ----
+
 /// Turns the host-shareable mirror back into settings: every integer flag becomes `flag != 0`
 /// (the wireframe tutorial's `unpackWireframeSettings`).
 ///
@@ -200,6 +202,8 @@ pub fn unpack_wireframe_settings(io: WireframeSettingsIo) -> WireframeSettings {
         screen_space: io.screen_space != 0,
     }
 }
+
+// ---- Coverage (wireframe tutorial) ----
 
 /// Position along the nearest edge (wireframe tutorial, `edgePosition`):
 /// `e = max(b.x, b.y, b.z)`, 1 at a vertex and 0.5 at an edge middle (1/3 at the centroid).

@@ -48,6 +48,8 @@ dvec3 rf_plane_barycentrics_f64(dvec3 origin, dvec3 direction, dvec3 p0, dvec3 p
     return dvec3(double(1.0) - uv.x - uv.y, uv.x, uv.y);
 }
 
+// ---- Re-intersection in double precision (wireframe tutorial) ----
+
 // rf_intersect_triangle_plane computed in double: float in, float out.
 vec3 rf_intersect_triangle_plane_f64(vec3 origin, vec3 direction, vec3 p0, vec3 p1, vec3 p2) {
     return vec3(rf_plane_barycentrics_f64(dvec3(origin), dvec3(direction), dvec3(p0), dvec3(p1), dvec3(p2)));

@@ -75,6 +75,8 @@ double3 rf_plane_barycentrics_f64(double3 origin, double3 direction, double3 p0,
     return double3(double(1.0) - uv.x - uv.y, uv.x, uv.y);
 }
 
+// ---- Re-intersection in double precision (wireframe tutorial) ----
+
 // rf_intersect_triangle_plane evaluated in double, with float arguments and result.
 float3 rf_intersect_triangle_plane_f64(float3 origin, float3 direction, float3 p0, float3 p1, float3 p2) {
     return float3(rf_plane_barycentrics_f64(double3(origin), double3(direction), double3(p0), double3(p1), double3(p2)));

@@ -96,12 +96,16 @@ static const RfWireframeSettings RF_WIREFRAME_WIRE_LINE = { float2(1.0, 1.0), 0.
 static const RfWireframeSettings RF_WIREFRAME_STIPPLE = { float2(1.0, 1.0), 0.5, 1.0, true, 0.5, 20, true };
 // end of generated code
 
+// ---- Settings from the host ----
+
 // The settings with real bools from the host's integers: each flag is true when it is not 0.
 RfWireframeSettings rf_unpack_wireframe_settings(RfWireframeSettingsIo io) {
     RfWireframeSettings settings = { io.thickness_var, io.thickness, io.smoothing, io.stipple != 0,
         io.stipple_length, io.stipple_repeats, io.screen_space != 0 };
     return settings;
 }
+
+// ---- Coverage (wireframe tutorial) ----
 
 // How far along the nearest edge the point is: the largest barycentric, 1 at a vertex and 0.5 halfway
 // along an edge.

@@ -46,6 +46,8 @@ fn rf_plane_barycentrics_f64(
     return vec3<f64>(1.0lf - uv.x - uv.y, uv.x, uv.y);
 }
 
+// ---- Re-intersection in double precision (wireframe tutorial) ----
+
 // rf_intersect_triangle_plane computed in f64: f32 in, f32 out.
 fn rf_intersect_triangle_plane_f64(
     origin: vec3<f32>, direction: vec3<f32>, p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>,

@@ -88,11 +88,15 @@ const RF_WIREFRAME_WIRE_LINE: RfWireframeSettings = RfWireframeSettings(vec2<f32
 const RF_WIREFRAME_STIPPLE: RfWireframeSettings = RfWireframeSettings(vec2<f32>(1.0, 1.0), 0.5, 1.0, true, 0.5, 20, true);
 // end of generated code
 
+// ---- Settings from the host ----
+
 // Settings from the host-shareable mirror: every integer flag becomes flag != 0.
 fn rf_unpack_wireframe_settings(io: RfWireframeSettingsIo) -> RfWireframeSettings {
     return RfWireframeSettings(io.thickness_var, io.thickness, io.smoothing, io.stipple != 0,
         io.stipple_length, io.stipple_repeats, io.screen_space != 0);
 }
+
+// ---- Coverage (wireframe tutorial) ----
 
 // Position along the nearest edge: max(b.x, b.y, b.z); 1 at a vertex, 0.5 at an edge middle.
 fn rf_edge_position(barycentrics: vec3<f32>) -> f32 {

@@ -2,7 +2,8 @@
 //! `SHADER_PROPTEST_DEVICE` names another) with the validation layer on: any validation message
 //! fails a test.
 //!
-//! - [`agreement`]: every shader function against its Rust mirror, in WGSL, GLSL and Slang;
+//! - [`agreement`]: every shader function against its Rust mirror, in WGSL, GLSL, Slang and HLSL
+//!   (compiled by glslang and by slangc);
 //! - [`chains`]: reflection chains followed by a ray cone and a ray differential in a shader of
 //!   the lab's own, against its Rust mirror and against each other, in WGSL, GLSL and Slang;
 //! - [`abi`]: the shared structs echoed through storage buffers and push constants, bit for bit;
