@@ -1,6 +1,8 @@
 //! Property tests for shader functions: run a WGSL, GLSL, Slang or HLSL function on a real Vulkan
 //! device over hundreds of thousands of generated inputs and compare every result with a Rust twin
-//! of the same function; and check that a Rust struct has exactly the byte layout of its shader twin.
+//! of the same function, or with the function's own result for a transformed input where it has
+//! no twin ([`MetamorphicCheck`], with the `gpu` feature); and check that a Rust struct has
+//! exactly the byte layout of its shader twin.
 //!
 //! The crate's README (`crates/shader-proptest/README.md`) walks through a first test, what a
 //! failure says, checks of functions that use a library's shader modules, and which tolerance
@@ -111,9 +113,10 @@ pub use value::{Args, ShaderType, StructType, Value};
 pub use gpu::WgpuDevice;
 #[cfg(feature = "gpu")]
 pub use gpu::{
-    barrier_shader_writes, barrier_shader_writes_to_host, echo, evaluate, run_checks, vulkan, Buffer, Check,
-    ComputeKernel, DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location, Object, Outcome, Owner,
-    Phase, PhaseTimes, PreparedCheck, Report, RunConfig, DEVICE_ENV, MAX_VACUOUS, SEED_ENV,
+    barrier_shader_writes, barrier_shader_writes_to_host, case_seed, echo, evaluate, run_checks, vulkan,
+    Buffer, Check, ComputeKernel, DeviceRequest, Error, Failure, FunctionCheck, Gpu, Location,
+    MetamorphicCheck, Object, Outcome, Owner, Phase, PhaseTimes, PreparedCheck, Report, RunConfig,
+    DEVICE_ENV, MAX_VACUOUS, SEED_ENV,
 };
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

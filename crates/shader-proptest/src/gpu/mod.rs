@@ -14,7 +14,8 @@ mod suite;
 mod wgpu_device;
 
 pub use check::{
-    evaluate, Check, Failure, FunctionCheck, Outcome, PreparedCheck, Report, RunConfig, MAX_VACUOUS, SEED_ENV,
+    case_seed, evaluate, Check, Failure, FunctionCheck, MetamorphicCheck, Outcome, PreparedCheck, Report,
+    RunConfig, MAX_VACUOUS, SEED_ENV,
 };
 pub use compute::ComputeKernel;
 pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};

@@ -2,6 +2,7 @@
 //! against what a device that flushes subnormals may compute, and how many cases a tolerance
 //! could not have failed (the vacuous share).
 
+use super::oracle::Oracle;
 use super::FunctionCheck;
 use crate::value::{Args, Value};
 
@@ -31,14 +32,18 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// Compares the shader's result `got` for `args` with the mirror's, within the tolerance: the
     /// largest error as a fraction of its tolerance, or what differs.
     pub fn compare(&self, args: &A, got: &R) -> Result<f32, String> {
-        let expected = components(&self.mirror(args.clone()));
-        let mut bounds = Vec::new();
-        self.tolerance.bounds(args, &expected, &mut bounds);
-        let verdict = self.judge_case(args, &components(got), &expected, &bounds);
+        let verdict = self.judge_result(args, got, &self.mirror(args.clone()));
         match verdict.disagreement {
             None => Ok(verdict.max_ratio),
             Some(reason) => Err(reason),
         }
+    }
+
+    /// Judges the shader's result `got` for `args` against the result `expected` of it (the
+    /// mirror's, or a relation's), within the tolerance.
+    pub(super) fn judge_result(&self, args: &A, got: &R, expected: &R) -> Verdict {
+        let (expected, bounds) = self.expected_and_bounds(args, expected.clone());
+        self.judge_case(args, &components(got), &expected, &bounds)
     }
 
     /// Judges the device's components `got` for `args` against the mirror's `expected` within
@@ -50,17 +55,22 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     /// ([`with_subnormals_flushed`]). Each component must then be within its bound of one of these
     /// results or of `expected` (a device may flush in one operation and not in another, so
     /// components may follow different ones; a copied input, for one, is never flushed). The
-    /// verdict of the second judgement where it accepts the case, else of the first.
+    /// verdict of the second judgement where it accepts the case, else of the first. (A relation's
+    /// expected result comes from the same device as the result judged, flushing or not: it is
+    /// judged once.)
     pub(super) fn judge_case(&self, args: &A, got: &[f32], expected: &[f32], bounds: &[f32]) -> Verdict {
         let first = judge(args.is_finite(), got, expected, bounds);
+        let Oracle::Mirror(mirror) = &self.oracle else {
+            return first;
+        };
         if first.disagreement.is_none() {
             return first;
         }
         let mut allowed = vec![(expected.to_vec(), bounds.to_vec())];
         if let Some(flushed) = flush_subnormals(args) {
-            allowed.push(self.expected_and_bounds(&flushed, self.mirror(flushed.clone())));
+            allowed.push(self.expected_and_bounds(&flushed, mirror(flushed.clone())));
         }
-        if let Some(result) = with_subnormals_flushed(|| self.mirror(args.clone())) {
+        if let Some(result) = with_subnormals_flushed(|| mirror(args.clone())) {
             allowed.push(self.expected_and_bounds(args, result));
         }
         match judge_each_component(args.is_finite(), got, &allowed) {

@@ -1,21 +1,27 @@
-//! Checks: a shader function against its Rust mirror, on batches of generated cases.
+//! Checks: a shader function against its Rust mirror, or against itself under a transformation of
+//! its inputs ([`MetamorphicCheck`]), on batches of generated cases.
 //!
 //! A check generates each batch of cases from its own seed with a proptest strategy, on as many
 //! threads as the machine has, while the device runs the previous batch: one dispatch of a
 //! generated kernel per batch and shader, each batch generated once however many shaders (the
 //! function in several languages) it runs on ([`batches`]). Every output component is compared
 //! with the mirror's within the check's [`Tolerance`]; for finite inputs both outputs must be
-//! finite too ([`judge`]). A failing case is shrunk through the random words its strategy drew,
+//! finite too ([`judge`]). The expected result is the mirror's, or, for a metamorphic check,
+//! what the device's result for the case as given says the transformed case's must be
+//! ([`oracle`]: each case then runs twice in the same dispatch). A failing case is shrunk through the random words its strategy drew,
 //! many candidates per dispatch ([`shrink`]), and reported with its inputs, both outputs, the
 //! tolerance, the seed that replays the run and the kernel's source ([`report`]).
 
 mod batches;
 mod config;
 mod judge;
+mod metamorphic;
+mod oracle;
 mod report;
 mod shrink;
 
 pub use config::{RunConfig, SEED_ENV};
+pub use metamorphic::{case_seed, MetamorphicCheck};
 pub use report::{Failure, Outcome, Report, MAX_VACUOUS};
 
 use super::call::compile_call;
@@ -29,6 +35,7 @@ use crate::signature::Call;
 use crate::tolerance::Tolerance;
 use crate::value::{Args, Value};
 use batches::{generate, Generator, Lane, Stats, MAX_REJECTIONS};
+use oracle::Oracle;
 use proptest::prelude::any;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
 use proptest::test_runner::{RngAlgorithm, TestRng};
@@ -115,7 +122,7 @@ pub struct FunctionCheck<A, R> {
     function: String,
     strategy: Arc<dyn Fn() -> BoxedStrategy<A> + Send + Sync>,
     generator: Arc<Generator<A>>,
-    mirror: Arc<dyn Fn(A) -> R + Send + Sync>,
+    oracle: Oracle<A, R>,
     tolerance: Tolerance<A>,
 }
 
@@ -131,15 +138,17 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     where
         S: Strategy<Value = A> + 'static,
     {
-        FunctionCheck::with_parts(function.into(), strategy, Arc::new(mirror), Tolerance::Exact)
+        let mirror = Oracle::Mirror(Arc::new(mirror));
+        FunctionCheck::with_parts(function.into(), strategy, mirror, Tolerance::Exact)
     }
 
-    /// A check of `mirror` within `tolerance` on the cases of `strategy`: the boxed strategy that
-    /// shrinking replays, and the generator that makes batches through the strategy's own type.
+    /// A check against `oracle` within `tolerance` on the cases of `strategy`: the boxed strategy
+    /// that shrinking replays, and the generator that makes batches through the strategy's own
+    /// type.
     fn with_parts<S>(
         function: String,
         strategy: impl Fn() -> S + Send + Sync + 'static,
-        mirror: Arc<dyn Fn(A) -> R + Send + Sync>,
+        oracle: Oracle<A, R>,
         tolerance: Tolerance<A>,
     ) -> FunctionCheck<A, R>
     where
@@ -157,7 +166,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
                 }
                 Ok(())
             }),
-            mirror,
+            oracle,
             tolerance,
         }
     }
@@ -186,7 +195,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         FunctionCheck::with_parts(
             self.function.clone(),
             perturbed,
-            Arc::clone(&self.mirror),
+            self.oracle.clone(),
             self.tolerance.clone(),
         )
     }
@@ -207,7 +216,7 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         FunctionCheck::with_parts(
             self.function.clone(),
             filtered,
-            Arc::clone(&self.mirror),
+            self.oracle.clone(),
             self.tolerance.clone(),
         )
     }
@@ -219,7 +228,11 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
 
     /// The mirror's result for `args`.
     pub fn mirror(&self, args: A) -> R {
-        (self.mirror)(args)
+        match &self.oracle {
+            Oracle::Mirror(mirror) => mirror(args),
+            // A check against a relation is a `MetamorphicCheck`'s, which never lends it out.
+            Oracle::Relation { .. } => unreachable!("a metamorphic check has no mirror"),
+        }
     }
 
     /// A strategy for the check's arguments.

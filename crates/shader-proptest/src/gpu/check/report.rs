@@ -35,9 +35,13 @@ pub struct Failure {
     pub reason: String,
     /// The (shrunk) arguments.
     pub input: String,
-    /// The mirror's result for them.
+    /// For a [`MetamorphicCheck`](super::MetamorphicCheck): the arguments transformed, the case
+    /// whose result is judged.
+    pub transformed: Option<String>,
+    /// The mirror's result for the arguments; for a metamorphic check, the result the relation
+    /// expects of the transformed arguments (from the shader's result for the arguments as given).
     pub mirror: String,
-    /// The shader's result for them.
+    /// The shader's result for the arguments (for a metamorphic check, for the transformed ones).
     pub shader: String,
     /// The check's tolerance.
     pub tolerance: String,
@@ -205,12 +209,18 @@ impl fmt::Display for Report {
         }
         write!(f, "  on {}", self.device)?;
         if let Outcome::Failed(failure) = &self.outcome {
+            write!(f, "\n  {}\n  input:     {}", failure.reason, failure.input)?;
+            match &failure.transformed {
+                None => write!(f, "\n  mirror:    {}", failure.mirror)?,
+                Some(transformed) => write!(
+                    f,
+                    "\n  transformed: {transformed}\n  expected:  {} (from the shader's result for the input)",
+                    failure.mirror
+                )?,
+            }
             write!(
                 f,
-                "\n  {}\n  input:     {}\n  mirror:    {}\n  shader:    {}\n  tolerance: {}\n  {}\n  replay with {SEED_ENV}={:#x}\n  kernel:\n{}",
-                failure.reason,
-                failure.input,
-                failure.mirror,
+                "\n  shader:    {}\n  tolerance: {}\n  {}\n  replay with {SEED_ENV}={:#x}\n  kernel:\n{}",
                 failure.shader,
                 failure.tolerance,
                 shrinking(failure),
@@ -240,7 +250,11 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         Failure {
             reason: shrunk.reason,
             input: format!("{:?}", shrunk.args),
-            mirror: format!("{:?}", self.mirror(shrunk.args.clone())),
+            transformed: self
+                .oracle
+                .transformed(&shrunk.args)
+                .map(|transformed| format!("{transformed:?}")),
+            mirror: format!("{:?}", shrunk.expected),
             shader: format!("{:?}", shrunk.shader),
             tolerance: format!("{:?}", self.tolerance),
             disagreeing,

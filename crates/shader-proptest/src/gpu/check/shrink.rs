@@ -18,6 +18,7 @@
 
 use super::batches::{generate, Mismatch};
 use super::config::{batch_runner, RunConfig};
+use super::oracle::Judged;
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
 use crate::gpu::device::Error;
@@ -50,8 +51,10 @@ pub(super) struct Shrunk<A, R> {
     pub args: A,
     /// Why it fails.
     pub reason: String,
-    /// The shader's result for it.
+    /// The shader's result for it (for a relation, for the transformed case).
     pub shader: R,
+    /// The result expected of it: the mirror's, or the relation's.
+    pub expected: R,
     /// The case as generated.
     pub generated: A,
     /// Moves to a simpler failing case.
@@ -88,8 +91,8 @@ struct Shrinker<'a, A: Args, R: Value> {
     used: usize,
     searches: Vec<WordSearch>,
     args: A,
-    reason: String,
-    shader: R,
+    /// The current case's judgement: the shader's result, the expected one and why they differ.
+    judged: Judged<R>,
     steps: usize,
     dispatches: usize,
 }
@@ -106,6 +109,8 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
     ) -> Result<Shrunk<A, R>, Error> {
         let (generated, words) = self.recorded(seed, &mismatch)?;
         let strategy = (self.strategy)();
+        let mut judged = self.run_judged(pipeline, &[&generated])?.remove(0);
+        judged.disagreement = Some(mismatch.reason);
         let mut shrinker = Shrinker {
             check: self,
             strategy,
@@ -113,9 +118,8 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
             batch: config.batch,
             used: 0,
             searches: Vec::new(),
-            shader: self.run_one(pipeline, &generated)?,
+            judged,
             args: generated.clone(),
-            reason: mismatch.reason,
             words,
             steps: 0,
             dispatches: 0,
@@ -130,10 +134,12 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
                 "its strategy's random draws do not replay: it draws a generator of its own, as prop_perturb does",
             )),
         };
+        let judged = shrinker.judged;
         Ok(Shrunk {
             args: shrinker.args,
-            reason: shrinker.reason,
-            shader: shrinker.shader,
+            reason: judged.disagreement.expect("the current case fails"),
+            shader: judged.shader,
+            expected: judged.expected,
             generated,
             steps: shrinker.steps,
             dispatches: shrinker.dispatches,
@@ -154,13 +160,28 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         Ok((failing, words))
     }
 
-    /// The shader's result for one case.
-    fn run_one(&self, pipeline: &dyn Dispatch, args: &A) -> Result<R, Error> {
+    /// Runs `cases` on `pipeline` in one dispatch and judges each: the shader's result, the
+    /// result expected of it and why they differ.
+    fn run_judged(&self, pipeline: &dyn Dispatch, cases: &[&A]) -> Result<Vec<Judged<R>>, Error> {
         let mut input = Vec::new();
-        args.write(&mut input);
-        let run = KernelRun::per_case(1, &input, R::TYPE.words());
+        cases.iter().for_each(|args| self.oracle.encode(args, &mut input));
+        let invocations = cases.len() * self.oracle.invocations();
+        let run = KernelRun::per_case(invocations, &input, R::TYPE.words());
         let output = pipeline.dispatch(run, &mut PhaseTimes::default())?;
-        Ok(R::read(&mut &output[..]))
+        let mut words = &output[..];
+        Ok(cases
+            .iter()
+            .map(|args| {
+                let (shader, related) = self.oracle.read(args, &mut words);
+                let expected = related.unwrap_or_else(|| self.mirror((*args).clone()));
+                let disagreement = self.judge_result(args, &shader, &expected).disagreement;
+                Judged {
+                    shader,
+                    expected,
+                    disagreement,
+                }
+            })
+            .collect())
     }
 }
 
@@ -398,11 +419,10 @@ impl<A: Args, R: Value> Shrinker<'_, A, R> {
                     None => None,
                 };
                 match (joint, joint_result) {
-                    (Some((words, args)), Some((shader, Some(reason)))) => {
+                    (Some((words, args)), Some(judged)) if judged.disagreement.is_some() => {
                         self.words = words;
                         self.args = args;
-                        self.reason = reason;
-                        self.shader = shader;
+                        self.judged = judged;
                         self.steps += moves.len();
                         self.measure();
                     }
@@ -470,22 +490,17 @@ impl<A: Args, R: Value> Shrinker<'_, A, R> {
 
     /// What this round's results say about word `word`: the candidate of the word closest to its
     /// origin that still fails (its index), and the closest to the current word known to pass.
-    fn learn(
-        &mut self,
-        word: usize,
-        candidates: &[Candidate<A>],
-        results: &[(R, Option<String>)],
-    ) -> Option<usize> {
+    fn learn(&mut self, word: usize, candidates: &[Candidate<A>], results: &[Judged<R>]) -> Option<usize> {
         let origin = self.searches[word].origin;
         let of_word = || (0..candidates.len()).filter(|&i| candidates[i].word == word);
         let best = of_word()
-            .filter(|&i| results[i].1.is_some())
+            .filter(|&i| results[i].disagreement.is_some())
             .min_by_key(|&i| distance(origin, candidates[i].value));
         let limit = best.map_or(distance(origin, self.words[word]), |i| {
             distance(origin, candidates[i].value)
         });
         let passing = of_word()
-            .filter(|&i| results[i].1.is_none())
+            .filter(|&i| results[i].disagreement.is_none())
             .map(|i| distance(origin, candidates[i].value))
             .filter(|&d| d < limit)
             .max();
@@ -495,37 +510,25 @@ impl<A: Args, R: Value> Shrinker<'_, A, R> {
     }
 
     /// Makes `candidate`, which fails with `result`, the current case.
-    fn adopt(&mut self, candidate: &Candidate<A>, result: &(R, Option<String>)) {
+    fn adopt(&mut self, candidate: &Candidate<A>, result: &Judged<R>) {
         self.words[candidate.word] = candidate.value;
         self.args = candidate.args.clone();
-        self.shader = result.0.clone();
-        self.reason = result.1.clone().expect("an adopted candidate fails");
+        assert!(result.disagreement.is_some(), "an adopted candidate fails");
+        self.judged = result.clone();
         self.steps += 1;
         self.measure();
     }
 
-    /// Runs `cases` in dispatches of at most a batch: each case's result and why it disagrees.
-    fn evaluate<'c>(
-        &mut self,
-        cases: impl IntoIterator<Item = &'c A>,
-    ) -> Result<Vec<(R, Option<String>)>, Error>
+    /// Runs `cases` in dispatches of at most a batch: each case's judgement.
+    fn evaluate<'c>(&mut self, cases: impl IntoIterator<Item = &'c A>) -> Result<Vec<Judged<R>>, Error>
     where
         A: 'c,
     {
         let cases: Vec<&A> = cases.into_iter().collect();
         let mut results = Vec::with_capacity(cases.len());
         for chunk in cases.chunks(self.batch) {
-            let mut input = Vec::new();
-            chunk.iter().for_each(|args| args.write(&mut input));
-            let run = KernelRun::per_case(chunk.len(), &input, R::TYPE.words());
-            let output = self.pipeline.dispatch(run, &mut PhaseTimes::default())?;
+            results.extend(self.check.run_judged(self.pipeline, chunk)?);
             self.dispatches += 1;
-            let mut words = &output[..];
-            for args in chunk {
-                let shader = R::read(&mut words);
-                let reason = self.check.compare(args, &shader).err();
-                results.push((shader, reason));
-            }
         }
         Ok(results)
     }
