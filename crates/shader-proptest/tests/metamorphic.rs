@@ -1,6 +1,6 @@
 //! Metamorphic checks on the device: a falloff with no Rust twin checked against itself under a
 //! uniform scale of every length, in WGSL, GLSL and HLSL; a falloff that is not scale-invariant
-//! is reported with the case, its transform, the expected and the shader's results, shrunk.
+//! is reported with the case, its transform, and the shader's results for both, shrunk.
 
 use shader_proptest::{case_seed, Gpu, Language, MetamorphicCheck, Outcome, RunConfig, Shader, Tolerance};
 

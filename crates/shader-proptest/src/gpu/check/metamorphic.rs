@@ -12,15 +12,18 @@ use proptest::strategy::{BoxedStrategy, Strategy};
 use std::sync::Arc;
 
 /// A shader function checked against itself: for every case `x` the device computes `f(x)` and
-/// `f(transform(x))`, and `f(transform(x))` must be within the tolerance of `expected(x, f(x))`.
-/// It needs no Rust twin of the function, only a property it has: invariance under a
-/// translation, a rotation or a uniform scale, equivariance (a footprint that scales with the
-/// scene, a direction that turns with it), a sign or an order that does not matter.
+/// `f(transform(x))`, and `restore(x, f(transform(x)))`, the second result taken back to the
+/// case's own terms, must be within the tolerance of `f(x)`. It needs no Rust twin of the
+/// function, only a property it has: invariance under a translation, a rotation or a uniform
+/// scale, equivariance (a footprint that scales with the scene: `restore` divides by the scale;
+/// a direction that turns with it: `restore` turns it back), a sign or an order that does not
+/// matter.
 ///
 /// Everything else is a [`FunctionCheck`]'s: cases from a proptest strategy in batches (each
 /// case and its transform in one dispatch), the validation layer, the tolerance (its bound for a
-/// case is computed from the case as given and the expected components), the vacuous share, and
-/// a failure shrunk to a simpler case and reported with the seed that replays it. A
+/// case is computed from the case as given and `f(x)`'s components), the vacuous share (against
+/// the spread of `f(x)`, in the case's own terms), and a failure shrunk to a simpler case and
+/// reported with the seed that replays it. A
 /// transformation with a random parameter (a scale, a rotation) draws it from the case itself,
 /// [`case_seed`], so that a case and its transform replay and shrink together.
 ///
@@ -53,29 +56,29 @@ pub struct MetamorphicCheck<A, R> {
 }
 
 impl<A: Args, R: Value> MetamorphicCheck<A, R> {
-    /// A check that `function(transform(x))` is `expected(x, function(x))` for the cases `x`
-    /// from the strategies `strategy` makes (one per generating thread), bit-exact until
+    /// A check that `restore(x, function(transform(x)))` is `function(x)` for the cases `x` from
+    /// the strategies `strategy` makes (one per generating thread), bit-exact until
     /// [`MetamorphicCheck::tolerance`] says otherwise.
     pub fn new<S>(
         function: impl Into<String>,
         strategy: impl Fn() -> S + Send + Sync + 'static,
         transform: impl Fn(&A) -> A + Send + Sync + 'static,
-        expected: impl Fn(&A, R) -> R + Send + Sync + 'static,
+        restore: impl Fn(&A, R) -> R + Send + Sync + 'static,
     ) -> MetamorphicCheck<A, R>
     where
         S: Strategy<Value = A> + 'static,
     {
         let relation = Oracle::Relation {
             transform: Arc::new(transform),
-            expected: Arc::new(expected),
+            restore: Arc::new(restore),
         };
         MetamorphicCheck {
             check: FunctionCheck::with_parts(function.into(), strategy, relation, Tolerance::Exact),
         }
     }
 
-    /// The same check with `tolerance`: the largest `|function(transform(x)) - expected(x,
-    /// function(x))|` per component, its bounds computed from `x` and the expected components.
+    /// The same check with `tolerance`: the largest `|restore(x, function(transform(x))) -
+    /// function(x)|` per component, its bounds computed from `x` and `function(x)`'s components.
     pub fn tolerance(self, tolerance: Tolerance<A>) -> MetamorphicCheck<A, R> {
         MetamorphicCheck {
             check: self.check.tolerance(tolerance),
@@ -191,7 +194,7 @@ mod tests {
             "half",
             || (-1.0f32..1.0,),
             |&(x,)| (2.0 * x,),
-            |_, half| 2.0 * half,
+            |_, half| 0.5 * half,
         )
     }
 
@@ -222,7 +225,7 @@ mod tests {
 
     /// A device that breaks the property above 1.5 fails where the transformed case crosses it,
     /// and the case shrinks toward 0 until it just does: `x` just above 0.75, transformed to
-    /// just above 1.5, with the expected result from the device's result for `x`.
+    /// just above 1.5, whose result halved is held to the device's result for `x`.
     #[test]
     fn a_broken_relation_is_shrunk_to_its_edge() {
         let device = Half { wrong_above: 1.5 };
@@ -237,8 +240,8 @@ mod tests {
             .expect("shrinks");
         let (x,) = shrunk.args;
         assert!(x > 0.75 && x < 0.751, "shrunk to {x}");
-        assert_eq!(shrunk.shader, 2.0 * x * 0.25);
-        assert_eq!(shrunk.expected, 2.0 * (x * 0.5));
+        assert_eq!(shrunk.shader, 0.5 * (2.0 * x * 0.25));
+        assert_eq!(shrunk.expected, x * 0.5);
         let failure = check.check.failure(shrunk, lane.stats.disagreeing, String::new());
         assert_eq!(failure.transformed, Some(format!("({:?},)", 2.0 * x)));
     }

@@ -10,18 +10,19 @@ pub(super) type Mirror<A, R> = dyn Fn(A) -> R + Send + Sync;
 /// How a case is changed: the case the device runs beside it.
 pub(super) type Transform<A> = dyn Fn(&A) -> A + Send + Sync;
 
-/// What the transformed case's result should be, from the case and the device's result for it.
-pub(super) type Expected<A, R> = dyn Fn(&A, R) -> R + Send + Sync;
+/// The transformed case's result taken back to the case's own terms (a scale undone, a rotation
+/// turned back), given the case.
+pub(super) type Restore<A, R> = dyn Fn(&A, R) -> R + Send + Sync;
 
 /// The expected result of each case.
 pub(super) enum Oracle<A, R> {
     /// The mirror's result for the case, known before the device runs it.
     Mirror(Arc<Mirror<A, R>>),
-    /// The device runs each case twice, as given and transformed; the transformed case's result
-    /// is expected to be `expected(case, result as given)`.
+    /// The device runs each case twice, as given and transformed; the transformed case's result,
+    /// restored, is expected to be the result as given.
     Relation {
         transform: Arc<Transform<A>>,
-        expected: Arc<Expected<A, R>>,
+        restore: Arc<Restore<A, R>>,
     },
 }
 
@@ -29,9 +30,9 @@ impl<A, R> Clone for Oracle<A, R> {
     fn clone(&self) -> Self {
         match self {
             Oracle::Mirror(mirror) => Oracle::Mirror(Arc::clone(mirror)),
-            Oracle::Relation { transform, expected } => Oracle::Relation {
+            Oracle::Relation { transform, restore } => Oracle::Relation {
                 transform: Arc::clone(transform),
-                expected: Arc::clone(expected),
+                restore: Arc::clone(restore),
             },
         }
     }
@@ -40,10 +41,9 @@ impl<A, R> Clone for Oracle<A, R> {
 /// The device's result for a case, the result expected of it, and why they disagree, if they do.
 #[derive(Clone)]
 pub(super) struct Judged<R> {
-    /// The device's result: for a relation, its result for the transformed case.
+    /// The device's result: for a relation, its result for the transformed case, restored.
     pub shader: R,
-    /// The mirror's result, or for a relation what the device's result for the case as given
-    /// says the transformed case's must be.
+    /// The mirror's result, or for a relation the device's result for the case as given.
     pub expected: R,
     /// What differs beyond the tolerance.
     pub disagreement: Option<String>,
@@ -68,14 +68,15 @@ impl<A: Args, R: Value> Oracle<A, R> {
     }
 
     /// Reads the device's results for `args` from `words` (advancing it): the result to judge
-    /// (for a relation, the transformed case's), and for a relation the result expected of it.
+    /// (for a relation, the transformed case's, restored), and for a relation the result expected
+    /// of it (the case's as given).
     pub fn read(&self, args: &A, words: &mut &[u32]) -> (R, Option<R>) {
         match self {
             Oracle::Mirror(_) => (R::read(words), None),
-            Oracle::Relation { expected, .. } => {
+            Oracle::Relation { restore, .. } => {
                 let given = R::read(words);
                 let transformed = R::read(words);
-                (transformed, Some(expected(args, given)))
+                (restore(args, transformed), Some(given))
             }
         }
     }

@@ -35,13 +35,12 @@ pub struct Failure {
     pub reason: String,
     /// The (shrunk) arguments.
     pub input: String,
-    /// For a [`MetamorphicCheck`](super::MetamorphicCheck): the arguments transformed, the case
-    /// whose result is judged.
+    /// For a [`MetamorphicCheck`](super::MetamorphicCheck): the arguments transformed.
     pub transformed: Option<String>,
-    /// The mirror's result for the arguments; for a metamorphic check, the result the relation
-    /// expects of the transformed arguments (from the shader's result for the arguments as given).
+    /// The mirror's result for the arguments; for a metamorphic check, the shader's.
     pub mirror: String,
-    /// The shader's result for the arguments (for a metamorphic check, for the transformed ones).
+    /// The shader's result for the arguments; for a metamorphic check, its result for the
+    /// transformed arguments, restored to the arguments' own terms.
     pub shader: String,
     /// The check's tolerance.
     pub tolerance: String,
@@ -214,13 +213,17 @@ impl fmt::Display for Report {
                 None => write!(f, "\n  mirror:    {}", failure.mirror)?,
                 Some(transformed) => write!(
                     f,
-                    "\n  transformed: {transformed}\n  expected:  {} (from the shader's result for the input)",
+                    "\n  transformed: {transformed}\n  expected:  {} (the shader's result for the input)",
                     failure.mirror
                 )?,
             }
+            let restored = match failure.transformed {
+                Some(_) => " (its result for the transformed input, restored)",
+                None => "",
+            };
             write!(
                 f,
-                "\n  shader:    {}\n  tolerance: {}\n  {}\n  replay with {SEED_ENV}={:#x}\n  kernel:\n{}",
+                "\n  shader:    {}{restored}\n  tolerance: {}\n  {}\n  replay with {SEED_ENV}={:#x}\n  kernel:\n{}",
                 failure.shader,
                 failure.tolerance,
                 shrinking(failure),
