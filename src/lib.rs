@@ -18,6 +18,7 @@ pub mod bad_input {}
 ///
 #[doc = include_str!("degenerate.md")]
 pub mod degenerate {}
+pub mod mip;
 #[cfg(feature = "naga_oil")]
 pub mod naga_oil;
 /// How each function is proven: agreement, independent references, degenerate rows.
@@ -39,6 +40,8 @@ mod readme_examples {}
 pub mod shaders;
 #[cfg(feature = "shader-proptest")]
 mod values;
+#[cfg(feature = "wgpu")]
+pub mod wgpu;
 pub mod wireframe;
 
 /// Struct layout verification (feature `validate`), from the `shader-proptest` crate: compare a
