@@ -3,7 +3,7 @@
 //! function's signature held against the Rust types; each fails with an error that says which,
 //! before any case runs.
 
-use super::device::Error;
+use super::error::Error;
 use crate::layout::compare;
 use crate::shader::Shader;
 use crate::signature::{mismatch, Call};

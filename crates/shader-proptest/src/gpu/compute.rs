@@ -3,7 +3,8 @@
 //! The buffers and their descriptor set are made by the first dispatch and reused by the next
 //! ones while they are large enough.
 
-use super::device::{Error, Gpu};
+use super::device::Gpu;
+use super::error::Error;
 use super::lock;
 use super::phases::{Phase, PhaseTimes};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};

@@ -6,6 +6,7 @@ mod check;
 mod compute;
 mod device;
 mod echo;
+mod error;
 mod phases;
 mod resources;
 mod submission;
@@ -17,8 +18,9 @@ pub use check::{
     evaluate, Check, Failure, FunctionCheck, Outcome, PreparedCheck, Report, RunConfig, MAX_VACUOUS, SEED_ENV,
 };
 pub use compute::ComputeKernel;
-pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
+pub use device::{DeviceRequest, Gpu, DEVICE_ENV};
 pub use echo::echo;
+pub use error::{vulkan, Error};
 pub use phases::{Phase, PhaseTimes};
 pub use resources::{barrier_shader_writes, barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
 pub use suite::run_checks;

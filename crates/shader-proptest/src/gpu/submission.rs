@@ -2,7 +2,7 @@
 //! with its pool and fence, that threads take one each, over the queues the device was created
 //! with.
 
-use super::device::{vulkan, Error};
+use super::error::{vulkan, Error};
 use super::lock;
 use ash::vk;
 use std::sync::atomic::{AtomicUsize, Ordering};

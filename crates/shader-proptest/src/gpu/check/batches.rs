@@ -6,7 +6,7 @@ use super::config::{batch_runner, RunConfig};
 use super::judge::{count_vacuous, Vacuous};
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use crate::gpu::phases::{Phase, PhaseTimes};
 use crate::value::{Args, Value};
 use proptest::strategy::Strategy;

@@ -20,7 +20,7 @@ use super::batches::{generate, Mismatch};
 use super::config::{batch_runner, RunConfig};
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use crate::gpu::phases::PhaseTimes;
 use crate::value::{Args, Value};
 use proptest::prelude::Rng;
