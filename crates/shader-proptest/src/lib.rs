@@ -95,6 +95,7 @@ pub mod spirv;
 #[cfg(feature = "gpu")]
 pub mod strategy;
 pub mod tolerance;
+mod tool;
 pub mod value;
 
 #[cfg(feature = "gpu")]
