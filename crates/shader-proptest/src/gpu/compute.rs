@@ -8,7 +8,7 @@ use super::error::Error;
 use super::lock;
 use super::phases::{Phase, PhaseTimes};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
-use crate::kernel::WORKGROUP_SIZE;
+use crate::back::WORKGROUP_SIZE;
 use ash::vk;
 use std::sync::Mutex;
 use std::time::Instant;
