@@ -5,7 +5,7 @@
 
 use super::device::Gpu;
 use super::error::Error;
-use super::lock;
+use super::lock::lock;
 use super::phases::{Phase, PhaseTimes};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
 use crate::back::WORKGROUP_SIZE;

@@ -1,7 +1,7 @@
 //! A Vulkan device with the validation layer on: any validation message fails the run.
 
 use super::error::{vulkan, Error};
-use super::lock;
+use super::lock::lock;
 use super::submission::{Submission, SUBMITTERS};
 use crate::shader::Feature;
 use ash::vk;

@@ -7,6 +7,7 @@ mod compute;
 mod device;
 mod echo;
 mod error;
+mod lock;
 mod phases;
 mod resources;
 mod submission;
@@ -26,9 +27,3 @@ pub use resources::{barrier_shader_writes, barrier_shader_writes_to_host, Buffer
 pub use suite::run_checks;
 #[cfg(feature = "wgpu")]
 pub use wgpu_device::WgpuDevice;
-
-/// Locks `mutex`, whose data stays valid if a holder panicked: the device's validation messages
-/// (a panic elsewhere must not lose them), its submitters and queues, and a kernel's buffers.
-pub(crate) fn lock<T>(mutex: &std::sync::Mutex<T>) -> std::sync::MutexGuard<'_, T> {
-    mutex.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
-}

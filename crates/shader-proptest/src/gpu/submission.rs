@@ -3,7 +3,7 @@
 //! with.
 
 use super::error::{vulkan, Error};
-use super::lock;
+use super::lock::lock;
 use ash::vk;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, MutexGuard};
