@@ -30,40 +30,16 @@ pub mod degenerate;
 pub mod exact;
 pub mod fuzzing;
 pub mod order;
+pub mod pages;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
 mod record;
+mod records;
 pub mod reference;
 pub mod special;
 pub mod strategy;
 pub mod wireframe;
 
 pub use record::{Function, IllConditioned, Promises, Record};
-
-use ray_footprint::shaders::Module;
-use std::sync::OnceLock;
-
-/// Every record, in module order (built once): each module gathers its sections' records.
-pub fn records() -> &'static [Box<dyn Function>] {
-    static RECORDS: OnceLock<Vec<Box<dyn Function>>> = OnceLock::new();
-    RECORDS.get_or_init(|| {
-        [
-            ray_cone::records(),
-            ray_diff::records(),
-            ray_diff_f64::records(),
-            wireframe::records(),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
-    })
-}
-
-/// The records of `module`, in the module's order.
-pub fn module_records(module: Module) -> impl Iterator<Item = &'static dyn Function> {
-    records()
-        .iter()
-        .filter(move |record| record.module() == module)
-        .map(AsRef::as_ref)
-}
+pub use records::{module_records, records};

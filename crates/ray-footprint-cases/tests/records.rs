@@ -6,8 +6,8 @@
 mod common;
 
 use common::assert_generated_block;
-use ray_footprint_cases::degenerate::render;
 use ray_footprint_cases::order::check_order;
+use ray_footprint_cases::pages::degenerate_table;
 use ray_footprint_cases::records;
 use std::path::Path;
 
@@ -47,7 +47,7 @@ const END: &str = "<!-- end of degenerate table -->";
 
 #[test]
 fn the_docs_show_the_degenerate_table() {
-    let block = format!("\n{}\n", render(records()));
+    let block = format!("\n{}\n", degenerate_table(records()));
     assert_generated_block(Path::new(DOC), START, END, &block, "src/degenerate.md");
 }
 
