@@ -717,7 +717,7 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
         record,
     );
     let settings = inputs.uniforms.wireframe.settings.unpack();
-    let coverage_check = suite::wireframe::process_wireframe().check();
+    let coverage_check = suite::wireframe::coverage::process_wireframe::record().check();
     compare_with(
         stats,
         "coverage",
