@@ -26,6 +26,7 @@ macro_rules! records {
 }
 
 pub mod agreement;
+pub mod conditioning;
 pub mod degenerate;
 pub mod exact;
 pub mod fuzzing;

@@ -407,18 +407,7 @@ pub(crate) fn determinant(direction: Interval3, p0: Interval3, p1: Interval3, p2
     (p1 - p0).cross(p2 - p0).dot(direction)
 }
 
-/// Bits to which a divisor must be known for its quotient to be well-conditioned: a relative
-/// width of the divisor's enclosure of at most 2^-10. Beyond that (a ray parallel to the triangle
-/// within rounding, a sliver, an object-space direction lost to the cancellation of a far origin)
-/// the clamped quotient's enclosure is as wide as the outputs themselves, so those inputs are
-/// checked separately, for finite outputs within the documented clamp (the edge-case suite).
-pub const WELL_CONDITIONED: f64 = 1.0 / 1024.0;
-
-/// Whether a quotient by `k` is well-conditioned ([`WELL_CONDITIONED`]); an exact 0 is, since both
-/// sides then take the clamp.
-pub(crate) fn well_conditioned(k: Interval) -> bool {
-    k.relative_width() <= WELL_CONDITIONED
-}
+pub use crate::conditioning::{well_conditioned, WELL_CONDITIONED};
 
 /// Why a ray against a triangle is left out of a check ([`determinant_well_conditioned`]).
 pub(super) const PARALLEL_WITHIN_ROUNDING: &str =

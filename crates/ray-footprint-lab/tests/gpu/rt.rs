@@ -20,7 +20,9 @@ use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, R
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_cases as suite;
-use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, hit_curvature_error};
+use ray_footprint_cases::ray_cone::curvature::curvature_spread_angle::curvature_spread_angle_error;
+use ray_footprint_cases::ray_cone::curvature::isotropic_curvature::hit_curvature_error;
+use ray_footprint_cases::ray_cone::footprint::shared::area_corners;
 use ray_footprint_lab::rt::abi::{
     self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
 };
@@ -549,7 +551,7 @@ fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelReco
     let push = &inputs.push;
     // The primary cone: the push constant's spread narrowed by the ray's cosine to the view axis.
     let cone_args = (push.cone.pixel_spread_angle, record.direction, push.forward);
-    let cone_check = suite::ray_cone::pinhole_ray_cone_for_ray().check();
+    let cone_check = suite::ray_cone::cameras::pinhole_ray_cone_for_ray::record().check();
     compare_with(
         stats,
         "primary cone",
@@ -843,7 +845,7 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let size = Vec2::splat(push.texture_size);
     let lod_args = (r.base_lod, r.width, size, n, d);
     let lod = rc::texture_lod(r.base_lod, r.width, size, n, d);
-    let lod_check = suite::ray_cone::texture_lod().check();
+    let lod_check = suite::ray_cone::footprint::texture_lod::record().check();
     stats.compare("lod", r.lod, lod, lod_check.bounds(&lod_args, &lod)[0], r);
 
     // texture_gradient of footprint * density: two correctly rounded products, the same on both
@@ -895,7 +897,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     match material {
         Material::Mirror { roughness } => {
             // roughness_spread_angle: the suite's own tolerance, on the mesh's roughness.
-            let check = suite::ray_cone::roughness_spread_angle().check();
+            let check = suite::ray_cone::refraction::roughness_spread_angle::record().check();
             compare_with(
                 stats,
                 "roughness spread",
@@ -986,12 +988,12 @@ fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mu
     };
     assert!(r.total_internal_reflection <= 1, "a flag: {r:?}");
     stats.total_internal_reflections += r.total_internal_reflection as usize;
-    let check = suite::ray_cone::refract_ray_cone().check();
+    let check = suite::ray_cone::refraction::refract_ray_cone::record().check();
     compare_with(stats, "refracted cone", check, (args, refracted), r);
     // rf_refract_sagittal_cone of the same cone, with the curvature times |width| (one correctly
     // rounded product), with the suite's own tolerance.
     let sagittal_args = (at_hit, n, d, r.curvature * r.width.abs(), r.eta);
-    let sagittal_check = suite::ray_cone::refract_sagittal_cone().check();
+    let sagittal_check = suite::ray_cone::refraction::refract_sagittal_cone::record().check();
     compare_with(
         stats,
         "sagittal section",

@@ -48,7 +48,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// `rf_edge_position`.
+/// The reference of `rf_edge_position`.
 fn reference() -> Reference<(Vec3,), f32> {
     Reference::new(
         Kind::Identity,

@@ -92,7 +92,7 @@ fn edge_ramp_component() -> impl Strategy<Value = (f32, f32, f32)> {
         })
 }
 
-/// `rf_edge_ramp`.
+/// The reference of `rf_edge_ramp`.
 fn reference() -> Reference<(Vec3, Vec3, Vec3), Vec3> {
     Reference::new(
         Kind::ClosedForm,

@@ -48,7 +48,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// `rf_edge_thickness`.
+/// The reference of `rf_edge_thickness`.
 fn reference() -> Reference<(Vec2, f32), f32> {
     Reference::new(
         Kind::ClosedForm,

@@ -56,7 +56,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// `rf_line_width`.
+/// The reference of `rf_line_width`.
 fn reference() -> Reference<(Vec3, f32, f32, Vec3), f32> {
     Reference::new(
         Kind::ClosedForm,

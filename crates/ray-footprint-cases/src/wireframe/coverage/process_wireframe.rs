@@ -98,7 +98,7 @@ fn process_wireframe_error(settings: WireframeSettings, b: Vec3, deltas: Vec3) -
     line_width_error(pixel_deltas, half_width, half_width_error, ramp_width, b)
 }
 
-/// `rf_process_wireframe`.
+/// The reference of `rf_process_wireframe`.
 fn reference() -> Reference<(WireframeSettings, Vec3, Vec3), f32> {
     Reference::new(
         Kind::ClosedForm,

@@ -43,7 +43,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// `rf_stipple`.
+/// The reference of `rf_stipple`.
 fn reference() -> Reference<(i32, f32, f32), f32> {
     Reference::new(
         Kind::ClosedForm,

@@ -103,7 +103,7 @@ fn settings_io() -> BoxedStrategy<WireframeSettingsIo> {
         .boxed()
 }
 
-/// `rf_unpack_wireframe_settings`.
+/// The reference of `rf_unpack_wireframe_settings`.
 fn reference() -> Reference<(WireframeSettingsIo,), WireframeSettings> {
     Reference::new(
         Kind::Identity,

@@ -1,5 +1,4 @@
-//! The independent references of the ray-cone records ([`crate::reference`]), by section, and the
-//! plane of incidence they trace rays in.
+//! The plane of incidence that the references of reflections and refractions trace rays in.
 //!
 //! In the plane of incidence a surface passes through the origin with its normal `+y` there, and
 //! every ray comes from `+y`. A cone's boundary ray on side `sigma` (+1 or -1) crosses the line
@@ -7,39 +6,11 @@
 //! `sigma * spread / 2`; after the surface, each boundary ray is measured across the scattered
 //! central ray: its offset on the line through the hit and its angle.
 
-mod camera;
-mod lod;
-mod propagation;
-mod refraction;
-mod shape;
-
-pub(super) use camera::{
-    orthographic_ray_cone, pack_ray_cone, pinhole_ray_cone, pinhole_ray_cone_for_ray, pixel_spread_angle,
-    pixel_spread_angle_from_proj_inv, pixel_spread_angle_small, pixel_spread_angle_small_approximation,
-    thin_lens_ray_cone, unpack_ray_cone,
-};
-pub(super) use lod::{
-    environment_lod, texel_density, texture_gradient, texture_lod, triangle_base_lod, triangle_uv_area2,
-    triangle_world_area2, two_section_width_limits, two_section_width_sampled, world_footprint,
-};
-pub(super) use propagation::{
-    curvature_sign, curvature_spread_angle, edge_curvature, normal_spread_angle, normal_spread_angle_small,
-    propagate_curved, propagate_planar, surface_spread_angle, triangle_curvature, width_at,
-};
-pub(super) use refraction::{
-    refract_curved, refract_first_order, refract_flat, refract_index_one, refract_negated, refract_optix,
-    refract_total_internal_reflection, roughness_closed_form, roughness_monotone, roughness_small,
-    sagittal_curved, sagittal_normal_incidence, sagittal_total_internal_reflection,
-};
-pub(super) use shape::{
-    isotropic_curvature_directions, normal_curvature_euler, principal_curvatures_euler,
-    principal_direction_cylinder, shape_operator_linear_normals, shape_operator_quadric,
-};
-
+use crate::exact::{derivative, Derivative};
 use glam::DVec2;
 
 /// `v` turned counter-clockwise by `angle`.
-fn rotate(v: DVec2, angle: f64) -> DVec2 {
+pub(crate) fn rotate(v: DVec2, angle: f64) -> DVec2 {
     let (sin, cos) = angle.sin_cos();
     DVec2::new(v.x * cos - v.y * sin, v.x * sin + v.y * cos)
 }
@@ -50,13 +21,13 @@ fn cross(a: DVec2, b: DVec2) -> f64 {
 }
 
 /// The mirror image of the direction `d` at a surface with unit normal `n`.
-fn reflect(d: DVec2, n: DVec2) -> DVec2 {
+pub(crate) fn reflect(d: DVec2, n: DVec2) -> DVec2 {
     d - n * (2.0 * d.dot(n))
 }
 
 /// Snell's law for a unit direction `d` meeting a surface with unit normal `n` (facing the ray),
 /// `eta = n_incident / n_transmitted`; `None` on total internal reflection.
-fn snell(d: DVec2, n: DVec2, eta: f64) -> Option<DVec2> {
+pub(crate) fn snell(d: DVec2, n: DVec2, eta: f64) -> Option<DVec2> {
     let cos_i = -d.dot(n);
     let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
     (k >= 0.0).then(|| d * eta + n * (eta * cos_i - k.sqrt()))
@@ -66,8 +37,8 @@ fn snell(d: DVec2, n: DVec2, eta: f64) -> Option<DVec2> {
 /// (`curvature` 0) or a circle of radius `1 / |curvature|`, convex towards `+y` (where the rays
 /// come from) when `curvature > 0`.
 #[derive(Clone, Copy, Debug)]
-struct Surface {
-    curvature: f64,
+pub(crate) struct Surface {
+    pub(crate) curvature: f64,
 }
 
 impl Surface {
@@ -95,7 +66,7 @@ impl Surface {
 
 /// The two roots of `s^2 + 2 b s + c = 0`, `q = -b - sign(b) sqrt(b^2 - c)` and `c / q`, each
 /// without cancellation; `None` where they are not real.
-fn quadratic_roots(b: f64, c: f64) -> Option<[f64; 2]> {
+pub(crate) fn quadratic_roots(b: f64, c: f64) -> Option<[f64; 2]> {
     let discriminant = b * b - c;
     if discriminant < 0.0 {
         return None;
@@ -106,18 +77,18 @@ fn quadratic_roots(b: f64, c: f64) -> Option<[f64; 2]> {
 
 /// A cone after a surface, measured across its scattered central ray through the hit.
 #[derive(Clone, Copy, Debug)]
-struct Scattered {
+pub(crate) struct Scattered {
     /// Offset of the upper boundary ray minus that of the lower one, on the line through the hit.
-    width: f64,
+    pub(crate) width: f64,
     /// Angle of the upper boundary ray minus that of the lower one.
-    spread: f64,
+    pub(crate) spread: f64,
     /// Angle by which the normal turns from the lower boundary's hit to the upper one's, positive
     /// where the normals spread apart.
-    normal_spread: f64,
+    pub(crate) normal_spread: f64,
     /// Smallest cosine at which a boundary ray meets the surface (from the ray's side).
-    min_landing_cos: f64,
+    pub(crate) min_landing_cos: f64,
     /// Smallest `|cos|` between a scattered boundary ray and the normal at its hit.
-    min_leaving_cos: f64,
+    pub(crate) min_leaving_cos: f64,
 }
 
 /// One boundary ray after the surface: offset and angle across the scattered central ray, normal
@@ -136,7 +107,7 @@ struct Boundary {
 /// says ([`mirrored`] for a reflection, [`rotated`] for a refraction). `scatter` gives a ray's
 /// direction after the surface from its incoming one and the unit normal at its hit, or `None`
 /// where it does not leave (total internal reflection of a refracted ray).
-fn scatter_cone(
+pub(crate) fn scatter_cone(
     surface: Surface,
     d: DVec2,
     t: f64,
@@ -183,12 +154,48 @@ fn scatter_cone(
 
 /// The mirror image of `across` at the surface `+y`: a reflected cone's sides keep their order
 /// along the mirror image of the incoming `across`.
-fn mirrored(across: DVec2, _central: DVec2) -> DVec2 {
+pub(crate) fn mirrored(across: DVec2, _central: DVec2) -> DVec2 {
     DVec2::new(across.x, -across.y)
 }
 
 /// `across` of a refracted cone: the refracted central ray turned by a quarter turn, as the
 /// incoming `across` is the incoming one (a refraction keeps the orientation).
-fn rotated(_across: DVec2, central: DVec2) -> DVec2 {
+pub(crate) fn rotated(_across: DVec2, central: DVec2) -> DVec2 {
     rotate(central, std::f64::consts::FRAC_PI_2)
+}
+
+/// The reflected cone's first order in its size: central differences of the cone `(h w, h s)`
+/// scattered by `surface` (`h -> 0`), as `(width, spread)`, with step `step`.
+pub(crate) fn reflected_first_order(
+    surface: Surface,
+    d: DVec2,
+    t: f64,
+    cone: (f64, f64),
+    step: f64,
+) -> Derivative<DVec2> {
+    let reflected = |h: f64| {
+        scatter_cone(
+            surface,
+            d,
+            t,
+            (h * cone.0, h * cone.1),
+            |d, n| Some(reflect(d, n)),
+            mirrored,
+        )
+        .map_or(DVec2::NAN, |s| DVec2::new(s.width, s.spread))
+    };
+    derivative(reflected, step, 1.0)
+}
+
+/// A step `h` that keeps the scaled cone `h * cone` at the hit within 1e-6 of a point: its
+/// spread, its width (`|width| + |spread| t`) and that width's footprint over the radius of
+/// curvature (`/ cos^2`) below 1e-6. Central differences are then exact to `O(1e-12)` relative.
+pub(crate) fn step(cone: (f64, f64), t: f64, curvature: f64, cosine: f64) -> f64 {
+    let size = cone.0.abs() + cone.1.abs() * t;
+    let scale = cone
+        .1
+        .abs()
+        .max(size)
+        .max(size * curvature.abs() / (cosine * cosine));
+    1.0e-6 / scale.max(1.0e-300)
 }
