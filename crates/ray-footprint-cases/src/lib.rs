@@ -17,14 +17,6 @@
 //!
 //! Not published: the product (`ray-footprint`) is the shader modules and the Rust mirror.
 
-/// `records![function, ...]`: the records the named functions make, boxed, in the order given;
-/// each section of a module lists its own functions with it.
-macro_rules! records {
-    ($($function:ident),+ $(,)?) => {
-        vec![$(Box::new($function()) as Box<dyn $crate::Function>,)+]
-    };
-}
-
 pub mod agreement;
 pub mod conditioning;
 pub mod degenerate;

@@ -618,7 +618,7 @@ fn compare_lod(
     compare_with(
         stats,
         value,
-        suite::ray_diff::lod_isotropic().check(),
+        suite::ray_diff::derivatives::lod_isotropic::record().check(),
         ((texels,), lod),
         record,
     );
@@ -639,17 +639,16 @@ fn check_differentials(
     record: &RtPixelRecord,
     stats: &mut Stats,
 ) {
-    use suite::ray_diff as checks;
     let (d, push, uniforms) = (&record.diff, &inputs.push, &inputs.uniforms);
     let size = Vec2::new(push.width as f32, push.height as f32);
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let matrices = (pixel, size, uniforms.view_inv, uniforms.proj_inv);
     let eye = RayDiff::new(Vec3::ZERO, Vec3::ZERO, d.eye_d_direction_dx, d.eye_d_direction_dy);
-    let eye_check = checks::eye_ray_diff_from_matrices().check();
+    let eye_check = suite::ray_diff::camera::eye_ray_diff_from_matrices::record().check();
     compare_with(stats, "eye ray diff", eye_check, (matrices, eye), record);
     let barycentric = Derivatives2::new(d.barycentric_dx, d.barycentric_dy);
     let transfer_args = (eye, record.direction, record.t, p[0], p[1], p[2]);
-    let barycentric_check = checks::barycentric_derivatives().check();
+    let barycentric_check = suite::ray_diff::derivatives::barycentric_derivatives::record().check();
     compare_with(
         stats,
         "barycentric derivs",
@@ -662,7 +661,7 @@ fn check_differentials(
     compare_with(
         stats,
         "uv gradients",
-        checks::texture_derivatives().check(),
+        suite::ray_diff::derivatives::texture_derivatives::record().check(),
         (uv_args, gradients),
         record,
     );
@@ -674,7 +673,6 @@ fn check_differentials(
 /// each against the mirror on the shader's inputs. The scene's instances have identity
 /// transforms, so the world-to-object matrix is the identity; primary rays start at the eye.
 fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelRecord, stats: &mut Stats) {
-    use suite::ray_diff as checks;
     let (d, push) = (&record.diff, &inputs.push);
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let next = NeighbourDirections {
@@ -696,13 +694,13 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
     compare_with(
         stats,
         "bary offsets",
-        checks::barycentric_offsets().check(),
+        suite::ray_diff::reintersection::barycentric_offsets::record().check(),
         (offset_args, offsets),
         record,
     );
     let gradients = Derivatives2::new(d.offset_uv_dx, d.offset_uv_dy);
     let uv_args = (offsets, uv[0], uv[1], uv[2]);
-    let uv_check = checks::uv_gradients_from_offsets().check();
+    let uv_check = suite::ray_diff::reintersection::uv_gradients_from_offsets::record().check();
     compare_with(
         stats,
         "offset uv gradients",
@@ -714,7 +712,7 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
     compare_with(
         stats,
         "bary deltas",
-        checks::barycentric_deltas().check(),
+        suite::ray_diff::reintersection::barycentric_deltas::record().check(),
         (offset_args, d.deltas),
         record,
     );
@@ -728,7 +726,7 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
         record,
     );
     let cone_args = (record.footprint, p[0], p[1], p[2]);
-    let cone_check = checks::cone_barycentric_deltas().check();
+    let cone_check = suite::ray_diff::cones::cone_barycentric_deltas::record().check();
     compare_with(
         stats,
         "cone deltas",
@@ -930,7 +928,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let gradient_args = (r.width, r.direction, p[0], p[1], p[2], uv[0], uv[1], uv[2]);
     let gradients = Derivatives2::new(r.cone_uv_dx, r.cone_uv_dy);
-    let gradient_check = suite::ray_diff::anisotropic_cone_gradients().check();
+    let gradient_check = suite::ray_diff::cones::anisotropic_cone_gradients::record().check();
     compare_with(
         stats,
         "cone uv gradients",

@@ -107,7 +107,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     ])
 }
 
-/// `rf_two_section_width`, in the same order of operations.
+/// `rf_two_section_width` in interval arithmetic, in the same order of operations.
 fn enclosure(
     &(tangential_width, sagittal_width, axis, normal, direction): &(f32, f32, Vec3, Vec3, Vec3),
 ) -> Interval {
