@@ -30,9 +30,10 @@ pub mod ray_diff_f64;
 mod record;
 mod records;
 pub mod reference;
+pub mod sections;
 pub mod special;
 pub mod strategy;
 pub mod wireframe;
 
 pub use record::{Function, IllConditioned, Promises, Record};
-pub use records::{module_records, records};
+pub use records::{module_records, records, section_files};

@@ -1,4 +1,5 @@
-//! Every record, gathered once from the modules in the order of [`Module::ALL`].
+//! Every record, gathered once from the modules in the order of [`Module::ALL`], and the files of
+//! each module's section folders.
 
 use crate::record::Function;
 use crate::{ray_cone, ray_diff, ray_diff_f64, wireframe};
@@ -27,4 +28,15 @@ pub fn module_records(module: Module) -> impl Iterator<Item = &'static dyn Funct
         .iter()
         .filter(move |record| record.module() == module)
         .map(AsRef::as_ref)
+}
+
+/// Every file of `module`'s section folders, as `(folder, file stem)`, as the build script found
+/// them: what [`crate::sections::check_sections`] holds to the module's banners.
+pub fn section_files(module: Module) -> &'static [(&'static str, &'static str)] {
+    match module {
+        Module::RayCone => ray_cone::SECTION_FILES,
+        Module::RayDiff => ray_diff::SECTION_FILES,
+        Module::RayDiffF64 => ray_diff_f64::SECTION_FILES,
+        Module::Wireframe => wireframe::SECTION_FILES,
+    }
 }
