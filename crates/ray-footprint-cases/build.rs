@@ -35,9 +35,12 @@ fn main() {
     }
 }
 
-/// The `.rs` files (by stem) and the folders of `folder`, each sorted by name; nothing for a
-/// folder that does not exist.
-fn entries(folder: &Path) -> (Vec<(String, PathBuf)>, Vec<(String, PathBuf)>) {
+/// A file (by its stem) or a folder, and its path.
+type Entry = (String, PathBuf);
+
+/// The `.rs` files and the folders of `folder`, each sorted by name; nothing for a folder that
+/// does not exist.
+fn entries(folder: &Path) -> (Vec<Entry>, Vec<Entry>) {
     let (mut files, mut folders) = (Vec::new(), Vec::new());
     let Ok(read) = std::fs::read_dir(folder) else {
         return (files, folders);
@@ -89,6 +92,10 @@ fn declarations(module: Module, folder: &Path) -> String {
         writeln!(code, "\n/// The functions of the section in `src/{stem}/{section}/`, a case file each, and what they share.").expect("a String");
         writeln!(code, "pub mod {section} {{").expect("a String");
         for (name, path) in &files {
+            if name == section {
+                // A section may be named for its one function (`transfer/transfer.rs`).
+                writeln!(code, "    #[allow(clippy::module_inception)]").expect("a String");
+            }
             declare(&mut code, "    ", name, path);
             if let Some(&function) = functions.iter().find(|&&function| function == name) {
                 case_files.push((function, section.clone()));

@@ -1,6 +1,7 @@
-//! The degenerate-input table (the root crate's `src/degenerate.md`): for each function, the
-//! degenerate inputs its record documents ([`crate::Record::degenerate`]) and their outputs, run
-//! through the Rust mirror and through the shader function in every language.
+//! The degenerate inputs of each function: the rows its record documents
+//! ([`crate::Record::degenerate`]) and their outputs, run through the Rust mirror and through the
+//! shader function in every language; [`crate::pages::degenerate_table`] renders them
+//! into the root crate's `src/degenerate.md`.
 //!
 //! Three kinds of rows:
 //! - a documented value ([`value`]): the mirror returns exactly that value, each shader within the

@@ -6,7 +6,7 @@
 //! precision rules allow the device (and that the mirror makes), so both results lie inside. A
 //! function's re-evaluation, in the module's order of operations, is in its case file; where the
 //! mirror calls another public function, the enclosure calls that function's. The references'
-//! bounds take the mirror's rounding from the same enclosures ([`reference`]).
+//! bounds take the mirror's rounding from the same enclosures (`reference.rs`).
 //!
 //! The module declarations and the record list are written by the build script from the folders.
 

@@ -2,11 +2,11 @@
 //! and its reference.
 
 use crate::degenerate::{mirror, same, value, INF, NAN};
+use crate::ray_cone::cameras::shared::{camera, pixel_angle, tan_ratio_error};
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{fov_y, pixels};
-use crate::ray_cone::cameras::shared::{camera, pixel_angle, tan_ratio_error};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MAX_FOV_Y};
 use ray_footprint::shaders::Module;

@@ -2,17 +2,17 @@
 //! record and its references.
 
 use crate::degenerate::{mirror, same, INF, NAN};
+use crate::ray_cone::cameras::shared::{camera, pixel_angle, pixel_height, tan_ratio_error};
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{fov_y, pixels};
-use crate::ray_cone::cameras::shared::{camera, pixel_angle, pixel_height, tan_ratio_error};
+use glam::dcamera::rh::proj::opengl;
+use glam::DVec4;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MAX_FOV_Y};
 use ray_footprint::shaders::Module;
 use shader_proptest::{Args, Value};
-use glam::DVec4;
-use glam::dcamera::rh::proj::opengl;
 
 /// The record of `rf_pixel_spread_angle_small`.
 pub fn record() -> Record<impl Args + Perturb, impl Value> {

@@ -31,9 +31,7 @@ pub fn record() -> Record<IsotropicCurvatureArgs, f32> {
                 .boxed()
         },
     )
-    .enclosure(|&(principal_curvatures,)| {
-        vec![enclosure(interval2(principal_curvatures))]
-    })
+    .enclosure(|&(principal_curvatures,)| vec![enclosure(interval2(principal_curvatures))])
     .reference(isotropic_curvature_directions())
     .fuzz(|d| (d.vec2(),))
     .degenerate(vec![

@@ -89,11 +89,7 @@ fn normal_curvature_rows(along: impl Fn(Vec3) -> NormalCurvatureArgs) -> Vec<Row
 }
 
 /// `rf_normal_curvature` with every argument an interval.
-fn enclosure(
-    p: [Interval3; 3],
-    shape_operator: Interval3,
-    direction: Interval3,
-) -> Interval {
+fn enclosure(p: [Interval3; 3], shape_operator: Interval3, direction: Interval3) -> Interval {
     let (u, v) = shape_frame(p);
     let (a, b) = (direction.dot(u), direction.dot(v));
     let [e, f, g] = shape_operator.0;

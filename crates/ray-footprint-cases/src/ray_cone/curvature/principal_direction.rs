@@ -4,8 +4,8 @@
 use crate::conditioning::WELL_CONDITIONED;
 use crate::degenerate::value;
 use crate::ray_cone::curvature::shared::{
-    axis_in_plane, clamped_unit, conditioned_corners, enclosing, exact_shape_operator, principal_half_gap_radius,
-    shape_frame, shape_well_conditioned, unit_corners, Curved,
+    axis_in_plane, clamped_unit, conditioned_corners, enclosing, exact_shape_operator,
+    principal_half_gap_radius, shape_frame, shape_well_conditioned, unit_corners, Curved,
 };
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};

@@ -4,9 +4,8 @@
 
 use crate::degenerate::value;
 use crate::ray_cone::curvature::shared::{
-    conditioned_corners, enclosing, exact_frame, exact_shape_operator, shape_determinant, shape_normal_equations,
-    shape_well_conditioned,
-    unit_corners, Curved,
+    conditioned_corners, enclosing, exact_frame, exact_shape_operator, shape_determinant,
+    shape_normal_equations, shape_well_conditioned, unit_corners, Curved,
 };
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
@@ -43,8 +42,7 @@ pub fn record() -> Record<ShapeOperatorArgs, Vec3> {
     )
     .conditioned(SLIVER, |&(p0, p1, p2, ..)| shape_well_conditioned([p0, p1, p2]))
     .enclosure(|&(p0, p1, p2, n0, n1, n2)| {
-        enclosure([p0, p1, p2].map(interval3), [n0, n1, n2].map(interval3))
-            .components()
+        enclosure([p0, p1, p2].map(interval3), [n0, n1, n2].map(interval3)).components()
     })
     .reference(shape_operator_linear_normals())
     .reference(shape_operator_quadric())

@@ -3,7 +3,8 @@
 
 use crate::degenerate::value;
 use crate::ray_cone::footprint::shared::{
-    area_corners, triangle_with_uvs, Mapped, TriangleWithUvs, COLLINEAR_UVS, ZERO_AREA, ZERO_AREA_AND_COLLINEAR_UVS,
+    area_corners, triangle_with_uvs, Mapped, TriangleWithUvs, COLLINEAR_UVS, ZERO_AREA,
+    ZERO_AREA_AND_COLLINEAR_UVS,
 };
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};

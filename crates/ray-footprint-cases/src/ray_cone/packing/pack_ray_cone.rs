@@ -2,11 +2,11 @@
 //! reference.
 
 use crate::degenerate::{cone, mirror, value, INF};
+use crate::ray_cone::strategy::ray_cone;
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::one_argument;
-use crate::ray_cone::strategy::ray_cone;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, PackedRayCone, RayCone, F16_MAX};
 use ray_footprint::shaders::Module;

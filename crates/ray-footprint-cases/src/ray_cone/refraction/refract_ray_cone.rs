@@ -7,15 +7,17 @@
 use crate::degenerate::{cone, grazing, same, value, HEAD_ON, IN_PLANE};
 use crate::ray_cone::plane_of_incidence::Scattered;
 use crate::ray_cone::refraction::shared::{
-    either_facing, incidence_sin_cos, normal_incidence, normal_incidence_args, normal_tilt, refracted_sin_cos,
-    refraction_cases, refraction_conventions, refraction_decided, relative, Case, RefractArgs, REFRACTION_UNDECIDED,
-    THIRTY_DEGREES,
+    either_facing, incidence_sin_cos, normal_incidence, normal_incidence_args, normal_tilt,
+    refracted_sin_cos, refraction_cases, refraction_conventions, refraction_decided, relative, Case,
+    RefractArgs, REFRACTION_UNDECIDED, THIRTY_DEGREES,
 };
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
 use glam::Vec3;
 use proptest::prelude::*;
-use ray_footprint::ray_cone::{self as rc, RayCone, RefractedRayCone, MAX_INCIDENCE_ANGLE, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{
+    self as rc, RayCone, RefractedRayCone, MAX_INCIDENCE_ANGLE, MIN_COS, MIN_MAGNITUDE,
+};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{select, Interval, Interval2, IntervalVec};
 

@@ -7,9 +7,9 @@ use crate::degenerate::{cone, value, HEAD_ON, IN_PLANE};
 use crate::exact;
 use crate::ray_cone::plane_of_incidence::quadratic_roots;
 use crate::ray_cone::refraction::shared::{
-    either_facing, incidence_sin_cos, normal_incidence, normal_incidence_args, normal_tilt, refracted_sin_cos,
-    refraction_cases, refraction_conventions, refraction_decided, relative, Case, RefractArgs, REFRACTION_UNDECIDED,
-    THIRTY_DEGREES,
+    either_facing, incidence_sin_cos, normal_incidence, normal_incidence_args, normal_tilt,
+    refracted_sin_cos, refraction_cases, refraction_conventions, refraction_decided, relative, Case,
+    RefractArgs, REFRACTION_UNDECIDED, THIRTY_DEGREES,
 };
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};

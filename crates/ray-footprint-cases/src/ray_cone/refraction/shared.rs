@@ -22,7 +22,8 @@ pub type RefractArgs = (RayCone, Vec3, Vec3, f32, f32);
 pub(crate) const THIRTY_DEGREES: Vec3 = Vec3::new(0.5, 0.0, -0.866_025_4);
 
 /// Why a refraction's case may be ill-conditioned ([`refraction_decided`]).
-pub(crate) const REFRACTION_UNDECIDED: &str = "within rounding of grazing or of the critical angle: which side of \
+pub(crate) const REFRACTION_UNDECIDED: &str =
+    "within rounding of grazing or of the critical angle: which side of \
     the normal the ray meets, or whether it is totally internally reflected, may go either way";
 
 /// Index ratios: ordinary, 1, glass in and out, 0, and anything in the domain.

@@ -1,10 +1,9 @@
-//! The proof of [`eye_ray_diff`](ray_footprint::ray_diff::eye_ray_diff): its record, where it is checked, its enclosure and its reference.
+//! The proof of [`eye_ray_diff`](ray_footprint::ray_diff::eye_ray_diff): its record, where it is
+//! checked, its enclosure and its reference.
 
 use crate::degenerate::{parts, same, value};
 use crate::exact::derivative;
-use crate::ray_diff::camera::shared::{
-    camera, centre_camera, eye_ray_extent, pinhole, pixel_step, zero3,
-};
+use crate::ray_diff::camera::shared::{camera, centre_camera, eye_ray_extent, pinhole, pixel_step, zero3};
 use crate::ray_diff::camera::{eye_ray_direction, normalized_derivative};
 use crate::ray_diff::intervals;
 use crate::ray_diff::pinhole::{image_plane_point, Camera};
@@ -75,7 +74,10 @@ pub fn eye_ray_direction_derivatives(camera: &Camera) -> (Interval3, Interval3) 
     let extent = eye_ray_extent(image_size, fov);
     let dd_dx = interval3(right) * (Interval::c(2.0) * extent.0[0] / Interval::exact(size.x));
     let dd_dy = interval3(up) * -(Interval::c(2.0) * extent.0[1] / Interval::exact(size.y));
-    (normalized_derivative::enclosure(d, dd_dx), normalized_derivative::enclosure(d, dd_dy))
+    (
+        normalized_derivative::enclosure(d, dd_dx),
+        normalized_derivative::enclosure(d, dd_dy),
+    )
 }
 
 /// `rf_eye_ray_diff` in interval arithmetic, in the same order of operations.

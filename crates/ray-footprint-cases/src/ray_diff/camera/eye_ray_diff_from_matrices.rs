@@ -1,12 +1,13 @@
-//! The proof of [`eye_ray_diff_from_matrices`](ray_footprint::ray_diff::eye_ray_diff_from_matrices): its record, its enclosure and its reference.
+//! The proof of
+//! [`eye_ray_diff_from_matrices`](ray_footprint::ray_diff::eye_ray_diff_from_matrices): its record,
+//! its enclosure and its reference.
 
 use crate::degenerate::{parts, vulkan_inverse_projection};
 use crate::exact::{derivative, Derivative};
-use crate::ray_diff::camera::shared::{
-    matrices, matrix_camera, matrix_ray, matrix_rows,
-    ndc, pixel_ndc, pixel_step, zero3, Matrices,
-};
 use crate::ray_diff::camera::normalized_derivative;
+use crate::ray_diff::camera::shared::{
+    matrices, matrix_camera, matrix_ray, matrix_rows, ndc, pixel_ndc, pixel_step, zero3, Matrices,
+};
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::record::Record;
@@ -34,9 +35,7 @@ pub fn record() -> Record<Matrices, RayDiff> {
 }
 
 /// `rf_eye_ray_diff_from_matrices` in interval arithmetic, in the same order of operations.
-fn enclosure(
-    &(pixel, image_size, view_inv, proj_inv): &Matrices,
-) -> Vec<Interval> {
+fn enclosure(&(pixel, image_size, view_inv, proj_inv): &Matrices) -> Vec<Interval> {
     let size = image_size.max(Vec2::ONE);
     let ndc = pixel_ndc(pixel, image_size);
     let far_point = mat_vec(

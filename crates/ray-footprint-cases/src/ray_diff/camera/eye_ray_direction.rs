@@ -1,9 +1,8 @@
-//! The proof of [`eye_ray_direction`](ray_footprint::ray_diff::eye_ray_direction): its record, its enclosure and its reference.
+//! The proof of [`eye_ray_direction`](ray_footprint::ray_diff::eye_ray_direction): its record, its
+//! enclosure and its reference.
 
 use crate::degenerate::{mirror, value, NAN};
-use crate::ray_diff::camera::shared::{
-    camera, centre_camera, eye_ray_extent, pinhole, pixel_ndc,
-};
+use crate::ray_diff::camera::shared::{camera, centre_camera, eye_ray_extent, pinhole, pixel_ndc};
 use crate::ray_diff::pinhole::{image_plane_point, Camera};
 use crate::ray_diff::reference::{components, widths};
 use crate::record::Record;

@@ -1,9 +1,10 @@
-//! The proof of [`eye_ray_direction_from_matrices`](ray_footprint::ray_diff::eye_ray_direction_from_matrices): its record, its enclosure and its reference.
+//! The proof of
+//! [`eye_ray_direction_from_matrices`](ray_footprint::ray_diff::eye_ray_direction_from_matrices):
+//! its record, its enclosure and its reference.
 
 use crate::degenerate::vulkan_inverse_projection;
 use crate::ray_diff::camera::shared::{
-    matrices, matrix_camera, matrix_ray, matrix_ray_direction, matrix_rows,
-    ndc, pixel_ndc, Matrices,
+    matrices, matrix_camera, matrix_ray, matrix_ray_direction, matrix_rows, ndc, pixel_ndc, Matrices,
 };
 use crate::ray_diff::reference::{components, widths};
 use crate::record::Record;

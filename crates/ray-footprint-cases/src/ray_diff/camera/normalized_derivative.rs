@@ -1,4 +1,5 @@
-//! The proof of [`normalized_derivative`](ray_footprint::ray_diff::normalized_derivative): its record, its enclosure and its reference.
+//! The proof of [`normalized_derivative`](ray_footprint::ray_diff::normalized_derivative): its
+//! record, its enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::exact::{derivative, log_uniform, unit};

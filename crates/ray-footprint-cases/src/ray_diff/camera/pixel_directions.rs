@@ -1,9 +1,9 @@
-//! The proof of [`pixel_directions`](ray_footprint::ray_diff::pixel_directions): its record, its enclosure and its reference.
+//! The proof of [`pixel_directions`](ray_footprint::ray_diff::pixel_directions): its record, its
+//! enclosure and its reference.
 
 use crate::degenerate::vulkan_inverse_projection;
 use crate::ray_diff::camera::shared::{
-    matrices, matrix_camera, matrix_ray, matrix_ray_direction, matrix_rows,
-    ndc, pixel_ndc, Matrices,
+    matrices, matrix_camera, matrix_ray, matrix_ray_direction, matrix_rows, ndc, pixel_ndc, Matrices,
 };
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};

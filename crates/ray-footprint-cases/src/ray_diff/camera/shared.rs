@@ -189,7 +189,10 @@ pub(crate) fn pinhole() -> BoxedStrategy<Camera> {
 pub(crate) fn matrix_camera() -> BoxedStrategy<Matrices> {
     (
         pixel_of_an_image(),
-        (rounded_rotation(), (-100.0f32..100.0, -100.0f32..100.0, -100.0f32..100.0)),
+        (
+            rounded_rotation(),
+            (-100.0f32..100.0, -100.0f32..100.0, -100.0f32..100.0),
+        ),
         (0.05f32..3.0, 0.2f32..5.0, 0.01f32..10.0, any::<bool>()),
     )
         .prop_map(|((pixel, size), (q, (x, y, z)), (fov, aspect, near, vulkan))| {

@@ -1,10 +1,12 @@
-//! The proof of [`anisotropic_cone_axes`](ray_footprint::ray_diff::anisotropic_cone_axes): its record, its enclosure and its references, the cut cylinder, the axes' lengths and directions and the OptiX Toolkit.
+//! The proof of [`anisotropic_cone_axes`](ray_footprint::ray_diff::anisotropic_cone_axes): its
+//! record, its enclosure and its references, the cut cylinder, the axes' lengths and directions and
+//! the OptiX Toolkit.
 
 use crate::degenerate::{grazing, same, value};
 use crate::exact::{log_uniform, signed_log, towards, unit};
 use crate::ray_diff::cones::shared::{
-    cut_cylinder, ellipse, ellipse_assumptions, ellipse_error, frobenius,
-    hull3, incidence, orthonormal_tangent, F32_CHAIN,
+    cut_cylinder, ellipse, ellipse_assumptions, ellipse_error, frobenius, hull3, incidence,
+    orthonormal_tangent, F32_CHAIN,
 };
 use crate::ray_diff::intervals::{self};
 use crate::ray_diff::reference::widths;
@@ -13,9 +15,7 @@ use crate::reference::{Deviation, Kind, Reference};
 use crate::strategy::{normal_and_direction, scalar};
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_diff::{
-    self as rd, Derivatives3, DIFF_MIN_COS, DIFF_MIN_SINE,
-};
+use ray_footprint::ray_diff::{self as rd, Derivatives3, DIFF_MIN_COS, DIFF_MIN_SINE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval, Interval3};
 
@@ -67,11 +67,7 @@ pub fn record() -> Record<(f32, Vec3, Vec3), Derivatives3> {
 
 /// The major and the minor axis; the hull of both choices of the minor axis where `|cross(n, d)|^2`
 /// is within rounding of `DIFF_MIN_SINE^2`.
-pub(crate) fn enclosure(
-    width: f32,
-    normal: Interval3,
-    direction: Interval3,
-) -> (Interval3, Interval3) {
+pub(crate) fn enclosure(width: f32, normal: Interval3, direction: Interval3) -> (Interval3, Interval3) {
     let across = normal.cross(direction);
     let length2 = across.dot(across);
     let min2 = f64::from(DIFF_MIN_SINE * DIFF_MIN_SINE);

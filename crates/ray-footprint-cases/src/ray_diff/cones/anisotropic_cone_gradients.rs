@@ -1,11 +1,13 @@
-//! The proof of [`anisotropic_cone_gradients`](ray_footprint::ray_diff::anisotropic_cone_gradients): its record, its case strategy, its enclosure and its references, the exact UV ellipse and head-on incidence.
+//! The proof of
+//! [`anisotropic_cone_gradients`](ray_footprint::ray_diff::anisotropic_cone_gradients): its record,
+//! its case strategy, its enclosure and its references, the exact UV ellipse and head-on incidence.
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, signed_log, tangent, towards, unit};
+use crate::ray_diff::cones::anisotropic_cone_axes;
 use crate::ray_diff::cones::shared::{
     cut_cylinder, ellipse, ellipse_assumptions, ellipse_error, frobenius, incidence, scaled_length, F32_CHAIN,
 };
-use crate::ray_diff::cones::anisotropic_cone_axes;
 use crate::ray_diff::intervals::{self, barycentric_quotient};
 use crate::ray_diff::reference::widths;
 use crate::record::Record;
@@ -14,9 +16,7 @@ use crate::strategy::{scalar, triangle, unit_vec3, uv_triangle};
 use glam::{DMat2, DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
-use ray_footprint::ray_diff::{
-    self as rd, Derivatives2, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE,
-};
+use ray_footprint::ray_diff::{self as rd, Derivatives2, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval2, interval3, Interval, Interval3};
@@ -114,9 +114,7 @@ pub fn record() -> Record<ConeGradientArgs, Derivatives2> {
 }
 
 /// `rf_anisotropic_cone_gradients` in interval arithmetic, in the same order of operations.
-fn enclosure(
-    &(width, direction, p0, p1, p2, uv0, uv1, uv2): &ConeGradientArgs,
-) -> Vec<Interval> {
+fn enclosure(&(width, direction, p0, p1, p2, uv0, uv1, uv2): &ConeGradientArgs) -> Vec<Interval> {
     let (p0, p1, p2) = (interval3(p0), interval3(p1), interval3(p2));
     let (e1, e2) = (p1 - p0, p2 - p0);
     let area_normal = e1.cross(e2);
@@ -220,8 +218,7 @@ fn reference() -> Reference<ConeGradientArgs, Derivatives2> {
 }
 
 /// A reference of `rf_anisotropic_cone_gradients`: head-on.
-fn anisotropic_cone_gradients_isotropic() -> Reference<ConeGradientArgs, Derivatives2>
-{
+fn anisotropic_cone_gradients_isotropic() -> Reference<ConeGradientArgs, Derivatives2> {
     Reference::new(
         Kind::Identity,
         "at normal incidence (exactly, and 1.4e-5 and 4.5e-4 radians off it, either side of DIFF_MIN_SINE) both gradients of a shear-free texture have the isotropic cone's length texture_gradient(world_footprint * texel_density), and are perpendicular",

@@ -1,4 +1,5 @@
-//! The proof of [`cone_barycentric_deltas`](ray_footprint::ray_diff::cone_barycentric_deltas): its record, where it is checked, its enclosure and its reference.
+//! The proof of [`cone_barycentric_deltas`](ray_footprint::ray_diff::cone_barycentric_deltas): its
+//! record, where it is checked, its enclosure and its reference.
 
 use crate::conditioning::well_conditioned;
 use crate::degenerate::{same, value};
@@ -10,9 +11,7 @@ use crate::reference::{Kind, Reference};
 use crate::strategy::{scalar, triangle, with_corners};
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_diff::{
-    self as rd, DIFF_MAX_VALUE, DIFF_MIN_MAGNITUDE,
-};
+use ray_footprint::ray_diff::{self as rd, DIFF_MAX_VALUE, DIFF_MIN_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval, Interval3};
 
@@ -61,7 +60,8 @@ fn doubled_area(p0: Interval3, p1: Interval3, p2: Interval3) -> Interval {
     scaled_length((p1 - p0).cross(p2 - p0))
 }
 
-/// Whether the doubled area of the triangle is known to [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED) (an exact 0 is).
+/// Whether the doubled area of the triangle is known to
+/// [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED) (an exact 0 is).
 fn area_well_conditioned(&(_, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)) -> bool {
     well_conditioned(doubled_area(interval3(p0), interval3(p1), interval3(p2)))
 }

@@ -1,10 +1,10 @@
-//! The proof of [`cone_from_ray_diff`](ray_footprint::ray_diff::cone_from_ray_diff): its record, where it is checked, its enclosure and its references, a differential built from two cones and propagation.
+//! The proof of [`cone_from_ray_diff`](ray_footprint::ray_diff::cone_from_ray_diff): its record,
+//! where it is checked, its enclosure and its references, a differential built from two cones and
+//! propagation.
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, signed_log, tangent, towards, unit};
-use crate::ray_diff::cones::shared::{
-    canonical, cone_and_distance, cone_error, scaled_length, F32_CHAIN,
-};
+use crate::ray_diff::cones::shared::{canonical, cone_and_distance, cone_error, scaled_length, F32_CHAIN};
 use crate::ray_diff::intervals::direction_well_conditioned;
 use crate::ray_diff::reference::{components, widths};
 use crate::ray_diff::strategy::ray_diff;
@@ -14,9 +14,7 @@ use crate::strategy::unit_vec3;
 use glam::{DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
-use ray_footprint::ray_diff::{
-    self as rd, RayDiff,
-};
+use ray_footprint::ray_diff::{self as rd, RayDiff};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval, Interval3};
 
@@ -74,9 +72,9 @@ fn transverse_parts(d_origin: Vec3, d_direction: Vec3, direction: Vec3) -> (Inte
 }
 
 /// Whether each axis of the cone is well-conditioned: the origin and direction changes across the
-/// ray are known to [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED) ([`direction_well_conditioned`]; not a change along the
-/// ray within rounding), and the sign of the spread is decided (their alignment does not enclose
-/// 0, or the origin change is exactly 0).
+/// ray are known to [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED)
+/// ([`direction_well_conditioned`]; not a change along the ray within rounding), and the sign of
+/// the spread is decided (their alignment does not enclose 0, or the origin change is exactly 0).
 fn transverse_well_conditioned(&(diff, direction): &(RayDiff, Vec3)) -> bool {
     let decided = |d_origin: Vec3, d_direction: Vec3| {
         let (origin, turn, alignment) = transverse_parts(d_origin, d_direction, direction);

@@ -1,4 +1,5 @@
-//! The proof of [`ray_diff_from_cone`](ray_footprint::ray_diff::ray_diff_from_cone): its record, its enclosure and its references, the differential's rays and the round trip.
+//! The proof of [`ray_diff_from_cone`](ray_footprint::ray_diff::ray_diff_from_cone): its record,
+//! its enclosure and its references, the differential's rays and the round trip.
 
 use crate::degenerate::{parts, value};
 use crate::ray_diff::cones::shared::{
@@ -11,9 +12,7 @@ use crate::reference::{Deviation, Kind, Reference, U};
 use crate::strategy::{angle, scalar, unit_vec3, vec2_of};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_diff::{
-    self as rd, RayDiff,
-};
+use ray_footprint::ray_diff::{self as rd, RayDiff};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval};
 

@@ -1,8 +1,11 @@
-//! The proof of [`barycentric_derivatives`](ray_footprint::ray_diff::barycentric_derivatives): its record, its enclosure and its reference.
+//! The proof of [`barycentric_derivatives`](ray_footprint::ray_diff::barycentric_derivatives): its
+//! record, its enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::ray_diff::derivatives::shared::{BarycentricArgs, Hit};
-use crate::ray_diff::intervals::{self, barycentric_quotient, determinant, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING};
+use crate::ray_diff::intervals::{
+    self, barycentric_quotient, determinant, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING,
+};
 use crate::ray_diff::reference::{components, widths};
 use crate::ray_diff::rows::{direction_dx, zero_diff_dx};
 use crate::ray_diff::strategy::{any_direction, ray_diff};

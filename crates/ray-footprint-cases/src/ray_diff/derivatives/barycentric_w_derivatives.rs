@@ -1,4 +1,5 @@
-//! The proof of [`barycentric_w_derivatives`](ray_footprint::ray_diff::barycentric_w_derivatives): its record and its reference.
+//! The proof of [`barycentric_w_derivatives`](ray_footprint::ray_diff::barycentric_w_derivatives):
+//! its record and its reference.
 
 use crate::degenerate::value;
 use crate::ray_diff::derivatives::shared::Hit;

@@ -1,4 +1,5 @@
-//! The proof of [`lod_isotropic`](ray_footprint::ray_diff::lod_isotropic): its record, its enclosure and its reference.
+//! The proof of [`lod_isotropic`](ray_footprint::ray_diff::lod_isotropic): its record, its
+//! enclosure and its reference.
 
 use crate::degenerate::{mirror, value, INF};
 use crate::ray_diff::derivatives::shared::texel_gradients;

@@ -1,4 +1,5 @@
-//! The proof of [`sample_grad_gradients`](ray_footprint::ray_diff::sample_grad_gradients): its record and its reference.
+//! The proof of [`sample_grad_gradients`](ray_footprint::ray_diff::sample_grad_gradients): its
+//! record and its reference.
 
 use crate::degenerate::value;
 use crate::ray_diff::derivatives::shared::texel_gradients;

@@ -1,4 +1,6 @@
-//! The proof of [`secondary_origin_derivatives`](ray_footprint::ray_diff::secondary_origin_derivatives): its record, its enclosure and its reference.
+//! The proof of
+//! [`secondary_origin_derivatives`](ray_footprint::ray_diff::secondary_origin_derivatives): its
+//! record, its enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::ray_diff::derivatives::shared::Hit;
@@ -57,9 +59,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
 }
 
 /// `rf_secondary_origin_derivatives` in interval arithmetic, in the same order of operations.
-fn enclosure(
-    &(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3),
-) -> Vec<Interval> {
+fn enclosure(&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3)) -> Vec<Interval> {
     let e1 = interval3(p1) - interval3(p0);
     let e2 = interval3(p2) - interval3(p0);
     intervals::derivatives3(
@@ -69,8 +69,7 @@ fn enclosure(
 }
 
 /// The reference of `rf_secondary_origin_derivatives`.
-fn reference(
-) -> Reference<(Derivatives2, Vec3, Vec3, Vec3), Derivatives3> {
+fn reference() -> Reference<(Derivatives2, Vec3, Vec3, Vec3), Derivatives3> {
     Reference::new(
         Kind::FiniteDifference,
         "f64 central differences of the re-intersected hit points themselves (origin + s direction, not through barycentrics), against the origins from the exact (du, dv) (RTG Eq. 22)",

@@ -2,7 +2,9 @@
 //! references, a triangle hit by a family of rays that a differential moves, re-intersected
 //! exactly, the bounds of texture derivatives from it, and texel gradients.
 
-use crate::exact::{derivative, log_uniform, tangent, towards, triangle_hit, unit, Derivative, Differentiable};
+use crate::exact::{
+    derivative, log_uniform, tangent, towards, triangle_hit, unit, Derivative, Differentiable,
+};
 use crate::ray_diff::family::{axis, differential, family_step, vector};
 use glam::{DMat2, DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
@@ -144,7 +146,13 @@ impl Hit {
 /// The bounds of texture derivatives of `hit` from the mirror's rounding (`rounding`, per
 /// component), the barycentric input's error (times the UV edges), the corner UVs' rounding
 /// (times the barycentric changes) and the central differences (`error`), each times `scale`.
-pub(crate) fn uv_bounds(hit: &Hit, uvs: [Vec2; 3], rounding: &[f64], errors: (f64, f64, f64), scale: Vec2) -> Vec<f64> {
+pub(crate) fn uv_bounds(
+    hit: &Hit,
+    uvs: [Vec2; 3],
+    rounding: &[f64],
+    errors: (f64, f64, f64),
+    scale: Vec2,
+) -> Vec<f64> {
     let (input_error, uv_rounding, difference_error) = errors;
     let g = uvs.map(Vec2::as_dvec2);
     let edges = (g[1] - g[0]).length() + (g[2] - g[0]).length();

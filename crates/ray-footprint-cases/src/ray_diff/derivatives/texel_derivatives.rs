@@ -1,4 +1,5 @@
-//! The proof of [`texel_derivatives`](ray_footprint::ray_diff::texel_derivatives): its record and its reference.
+//! The proof of [`texel_derivatives`](ray_footprint::ray_diff::texel_derivatives): its record and
+//! its reference.
 
 use crate::degenerate::{same, value};
 use crate::ray_diff::derivatives::shared::{uv_bounds, Hit};
@@ -66,8 +67,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
 }
 
 /// The reference of `rf_texel_derivatives`.
-fn reference(
-) -> Reference<(Derivatives2, Vec2, Vec2, Vec2, Vec2), Derivatives2> {
+fn reference() -> Reference<(Derivatives2, Vec2, Vec2, Vec2, Vec2), Derivatives2> {
     Reference::new(
         Kind::FiniteDifference,
         "f64 central differences of the texel coordinates (UV of an affine map of the plane times the texture size) of the re-intersected hits (RTG Eq. 21)",

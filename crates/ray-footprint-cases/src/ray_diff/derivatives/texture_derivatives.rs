@@ -1,4 +1,5 @@
-//! The proof of [`texture_derivatives`](ray_footprint::ray_diff::texture_derivatives): its record, its enclosure and its reference.
+//! The proof of [`texture_derivatives`](ray_footprint::ray_diff::texture_derivatives): its record,
+//! its enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::ray_diff::derivatives::shared::{uv_bounds, Hit};
@@ -76,8 +77,7 @@ pub(crate) fn enclosure(b: Derivatives2, t0: Vec2, t1: Vec2, t2: Vec2) -> (Inter
 }
 
 /// The reference of `rf_texture_derivatives`.
-fn reference() -> Reference<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2>
-{
+fn reference() -> Reference<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2> {
     Reference::new(
         Kind::FiniteDifference,
         "f64 central differences of the texture coordinates, under an affine map of the plane, of the re-intersected hits, against the gradients from the exact (du, dv) and the corners' UVs (RTG Eq. 21)",

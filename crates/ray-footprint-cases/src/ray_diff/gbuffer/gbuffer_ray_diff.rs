@@ -1,4 +1,5 @@
-//! The proof of [`gbuffer_ray_diff`](ray_footprint::ray_diff::gbuffer_ray_diff): its record, its enclosure and its reference, a plane with one neighbour occluded.
+//! The proof of [`gbuffer_ray_diff`](ray_footprint::ray_diff::gbuffer_ray_diff): its record, its
+//! enclosure and its reference, a plane with one neighbour occluded.
 
 use crate::degenerate::{parts, value};
 use crate::exact::{log_uniform, mirrored, tangent, towards, unit};

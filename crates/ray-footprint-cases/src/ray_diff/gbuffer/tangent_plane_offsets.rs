@@ -1,4 +1,5 @@
-//! The proof of [`tangent_plane_offsets`](ray_footprint::ray_diff::tangent_plane_offsets): its record, its enclosure and its reference.
+//! The proof of [`tangent_plane_offsets`](ray_footprint::ray_diff::tangent_plane_offsets): its
+//! record, its enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, tangent, towards, unit};

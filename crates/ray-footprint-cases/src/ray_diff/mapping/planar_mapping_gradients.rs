@@ -1,4 +1,5 @@
-//! The proof of [`planar_mapping_gradients`](ray_footprint::ray_diff::planar_mapping_gradients): its record and its reference.
+//! The proof of [`planar_mapping_gradients`](ray_footprint::ray_diff::planar_mapping_gradients):
+//! its record and its reference.
 
 use crate::degenerate::value;
 use crate::ray_diff::intervals;
@@ -11,9 +12,7 @@ use crate::special::Perturb;
 use crate::strategy::vec2_of;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_diff::{
-    self as rd, Derivatives2, Derivatives3,
-};
+use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3};
 use ray_footprint::shaders::Module;
 use shader_proptest::draw::uniform;
 use shader_proptest::interval::interval2;

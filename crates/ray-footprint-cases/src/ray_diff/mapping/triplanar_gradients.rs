@@ -1,4 +1,5 @@
-//! The proof of [`triplanar_gradients`](ray_footprint::ray_diff::triplanar_gradients): its record and its reference.
+//! The proof of [`triplanar_gradients`](ray_footprint::ray_diff::triplanar_gradients): its record
+//! and its reference.
 
 use crate::degenerate::{parts, value};
 use crate::ray_diff::intervals;
@@ -10,9 +11,7 @@ use crate::reference::{Kind, Reference, U};
 use crate::special::Perturb;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_diff::{
-    self as rd, Derivatives2, Derivatives3, TriplanarGradients,
-};
+use ray_footprint::ray_diff::{self as rd, Derivatives2, Derivatives3, TriplanarGradients};
 use ray_footprint::shaders::Module;
 use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval3, Interval, Interval3, IntervalVec};

@@ -1,4 +1,5 @@
-//! The proof of [`triplanar_weights`](ray_footprint::ray_diff::triplanar_weights): its record, its enclosure and its reference.
+//! The proof of [`triplanar_weights`](ray_footprint::ray_diff::triplanar_weights): its record, its
+//! enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, unit};
@@ -9,9 +10,7 @@ use crate::special::Perturb;
 use crate::strategy::unit_vec3;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_diff::{
-    self as rd, DIFF_MAX_SHARPNESS, DIFF_MIN_MAGNITUDE,
-};
+use ray_footprint::ray_diff::{self as rd, DIFF_MAX_SHARPNESS, DIFF_MIN_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::draw::uniform;
 use shader_proptest::interval::Interval;

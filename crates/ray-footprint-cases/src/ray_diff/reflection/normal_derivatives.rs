@@ -1,4 +1,5 @@
-//! The proof of [`normal_derivatives`](ray_footprint::ray_diff::normal_derivatives): its record, its enclosure and its reference.
+//! The proof of [`normal_derivatives`](ray_footprint::ray_diff::normal_derivatives): its record,
+//! its enclosure and its reference.
 
 use crate::degenerate::value;
 use crate::exact::{derivative, log_uniform, unit};
@@ -73,12 +74,14 @@ fn enclosure(&(n0, n1, n2, uv, b): &NormalArgs) -> Vec<Interval> {
         + n2 * Interval::exact(uv.y);
     let dn_dx = (n1 - n0) * Interval::exact(b.dx.x) + (n2 - n0) * Interval::exact(b.dx.y);
     let dn_dy = (n1 - n0) * Interval::exact(b.dy.x) + (n2 - n0) * Interval::exact(b.dy.y);
-    intervals::derivatives3(normalized_derivative::enclosure(n, dn_dx), normalized_derivative::enclosure(n, dn_dy))
+    intervals::derivatives3(
+        normalized_derivative::enclosure(n, dn_dx),
+        normalized_derivative::enclosure(n, dn_dy),
+    )
 }
 
 /// The reference of `rf_normal_derivatives`.
-fn reference(
-) -> Reference<(Vec3, Vec3, Vec3, Vec2, Derivatives2), Derivatives3> {
+fn reference() -> Reference<(Vec3, Vec3, Vec3, Vec2, Derivatives2), Derivatives3> {
     Reference::new(
         Kind::FiniteDifference,
         "f64 central differences of the unit normal interpolated from the vertex normals of a smooth surface along the barycentric path (u + h du, v + h dv) (Igehy)",

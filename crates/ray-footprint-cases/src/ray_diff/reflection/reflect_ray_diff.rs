@@ -1,4 +1,5 @@
-//! The proof of [`reflect_ray_diff`](ray_footprint::ray_diff::reflect_ray_diff): its record, its enclosure and its references, the exact reflection and a planar mirror as a mirror-image camera.
+//! The proof of [`reflect_ray_diff`](ray_footprint::ray_diff::reflect_ray_diff): its record, its
+//! enclosure and its references, the exact reflection and a planar mirror as a mirror-image camera.
 
 use crate::degenerate::{parts, value};
 use crate::exact::{derivative, mirrored, towards, unit};
@@ -137,8 +138,7 @@ fn eye_ray_diff(&(pixel, size, fov_y, right, up, view): &Camera) -> RayDiff {
 }
 
 /// A reference of `rf_reflect_ray_diff`: a planar mirror.
-fn reflect_ray_diff_mirror_camera(
-) -> Reference<(RayDiff, Vec3, Vec3, Derivatives3), RayDiff> {
+fn reflect_ray_diff_mirror_camera() -> Reference<(RayDiff, Vec3, Vec3, Derivatives3), RayDiff> {
     Reference::new(
         Kind::ExactGeometry,
         "a planar mirror is a mirror-image camera: the reflected eye-ray differential has the mirrored camera's direction changes, and the same origin changes after any further distance to a second plane",

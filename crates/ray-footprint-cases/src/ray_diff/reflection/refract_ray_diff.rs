@@ -1,10 +1,11 @@
-//! The proof of [`refract_ray_diff`](ray_footprint::ray_diff::refract_ray_diff): its record, its enclosure and its reference.
+//! The proof of [`refract_ray_diff`](ray_footprint::ray_diff::refract_ray_diff): its record, its
+//! enclosure and its reference.
 
 use crate::degenerate::{parts, value};
 use crate::exact::{derivative, mirrored, snell};
 use crate::ray_diff::intervals;
-use crate::ray_diff::reflection::reflect_ray_diff;
 use crate::ray_diff::reference::{components, listed, widths};
+use crate::ray_diff::reflection::reflect_ray_diff;
 use crate::ray_diff::reflection::shared::{changes, non_unit, surface_hit};
 use crate::ray_diff::rows::direction_dx;
 use crate::ray_diff::strategy::{derivatives3, ray_diff};
@@ -142,8 +143,7 @@ fn enclosure(args: &RefractArgs) -> Vec<Interval> {
 }
 
 /// The reference of `rf_refract_ray_diff`.
-fn reference(
-) -> Reference<(RayDiff, Vec3, Vec3, Derivatives3, f32), RefractedRayDiff> {
+fn reference() -> Reference<(RayDiff, Vec3, Vec3, Derivatives3, f32), RefractedRayDiff> {
     Reference::new(
         Kind::FiniteDifference,
         "f64 central differences of Snell's law (GLSL's refract, the normal turned to the ray) for normalize(D + h dD) at normalize(N + h dN), or of the reflection past the critical angle, with the flag (Igehy)",

@@ -1,10 +1,11 @@
-//! The proof of [`barycentric_deltas`](ray_footprint::ray_diff::barycentric_deltas): its record and its reference.
+//! The proof of [`barycentric_deltas`](ray_footprint::ray_diff::barycentric_deltas): its record and
+//! its reference.
 
-use crate::ray_diff::reintersection::barycentric_offsets;
 use crate::ray_diff::reference::{components, widths};
+use crate::ray_diff::reintersection::barycentric_offsets;
 use crate::ray_diff::reintersection::shared::{
-    delta_rows, exact_offsets, offsets_well_conditioned, well_conditioned_offset_args, OffsetArgs, F32_ORIGIN_EXPONENT,
-    REINTERSECTION_ILL_CONDITIONED,
+    delta_rows, exact_offsets, offsets_well_conditioned, well_conditioned_offset_args, OffsetArgs,
+    F32_ORIGIN_EXPONENT, REINTERSECTION_ILL_CONDITIONED,
 };
 use crate::record::Record;
 use crate::reference::{Kind, Reference};

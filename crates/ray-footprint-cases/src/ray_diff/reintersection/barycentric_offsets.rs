@@ -1,11 +1,12 @@
-//! The proof of [`barycentric_offsets`](ray_footprint::ray_diff::barycentric_offsets): its record, its enclosure and its reference.
+//! The proof of [`barycentric_offsets`](ray_footprint::ray_diff::barycentric_offsets): its record,
+//! its enclosure and its reference.
 
-use crate::ray_diff::reintersection::intersect_triangle_plane;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
+use crate::ray_diff::reintersection::intersect_triangle_plane;
 use crate::ray_diff::reintersection::shared::{
-    exact_offsets, object_rays, offset_rows, offsets_well_conditioned, well_conditioned_offset_args, OffsetArgs, F32_ORIGIN_EXPONENT, OFFSET,
-    REINTERSECTION_ILL_CONDITIONED,
+    exact_offsets, object_rays, offset_rows, offsets_well_conditioned, well_conditioned_offset_args,
+    OffsetArgs, F32_ORIGIN_EXPONENT, OFFSET, REINTERSECTION_ILL_CONDITIONED,
 };
 use crate::record::Record;
 use crate::reference::{Kind, Reference};

@@ -1,12 +1,12 @@
-//! The proof of [`intersect_triangle_plane`](ray_footprint::ray_diff::intersect_triangle_plane): its record, its case strategy, its enclosure and its reference.
+//! The proof of [`intersect_triangle_plane`](ray_footprint::ray_diff::intersect_triangle_plane):
+//! its record, its case strategy, its enclosure and its reference.
 
 use crate::exact::triangle_hit;
-use crate::ray_diff::intervals::{barycentric_quotient, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING};
-use crate::ray_diff::reference::{components, widths};
-use crate::ray_diff::reintersection::shared::{
-    plane_barycentrics,
-    plane_intersection_rows, unclamped,
+use crate::ray_diff::intervals::{
+    barycentric_quotient, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING,
 };
+use crate::ray_diff::reference::{components, widths};
+use crate::ray_diff::reintersection::shared::{plane_barycentrics, plane_intersection_rows, unclamped};
 use crate::ray_diff::strategy::any_direction;
 use crate::record::Record;
 use crate::reference::{Kind, Reference};

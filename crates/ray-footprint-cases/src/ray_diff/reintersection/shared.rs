@@ -224,7 +224,9 @@ pub(crate) const REINTERSECTION_ILL_CONDITIONED: &str =
      (not known to 2^-10): the clamped barycentrics may take either +-DIFF_MAX_VALUE";
 
 /// The object-space origin and the two neighbour directions of the re-intersection.
-pub(crate) fn object_rays(&(w2o, origin, _, _, _, dir_x, dir_y, _): &OffsetArgs) -> (Interval3, Interval3, Interval3) {
+pub(crate) fn object_rays(
+    &(w2o, origin, _, _, _, dir_x, dir_y, _): &OffsetArgs,
+) -> (Interval3, Interval3, Interval3) {
     let transform = |p: Interval3| mat_vec(w2o, p, Interval::c(1.0), F32);
     let object_origin = transform(interval3(origin));
     let object_x = transform(interval3(origin) + interval3(dir_x)) - object_origin;
@@ -232,8 +234,9 @@ pub(crate) fn object_rays(&(w2o, origin, _, _, _, dir_x, dir_y, _): &OffsetArgs)
     (object_origin, object_x, object_y)
 }
 
-/// Whether both neighbour rays' intersections are well-conditioned ([`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED)): the
-/// object-space directions and their determinants against the triangle.
+/// Whether both neighbour rays' intersections are well-conditioned
+/// ([`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED)): the object-space directions and
+/// their determinants against the triangle.
 pub(crate) fn offsets_well_conditioned(args: &OffsetArgs) -> bool {
     let &(_, _, p0, p1, p2, _, _, _) = args;
     let (_, object_x, object_y) = object_rays(args);

@@ -1,4 +1,5 @@
-//! The proof of [`uv_gradients_from_offsets`](ray_footprint::ray_diff::uv_gradients_from_offsets): its record and its reference.
+//! The proof of [`uv_gradients_from_offsets`](ray_footprint::ray_diff::uv_gradients_from_offsets):
+//! its record and its reference.
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, tangent, triangle_hit, unit};
@@ -129,8 +130,7 @@ impl Mapped {
 }
 
 /// The reference of `rf_uv_gradients_from_offsets`.
-fn reference(
-) -> Reference<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
+fn reference() -> Reference<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
     Reference::new(
         Kind::ExactGeometry,
         "the texture coordinates, under an affine map of the plane, of the neighbour hits minus the hit's, computed from the points themselves; the offsets are the points' exact barycentrics minus the hit's",

@@ -1,11 +1,12 @@
-//! The proof of [`barycentric_deltas_f64`](ray_footprint::ray_diff_f64::barycentric_deltas_f64): its record and its reference.
+//! The proof of [`barycentric_deltas_f64`](ray_footprint::ray_diff_f64::barycentric_deltas_f64):
+//! its record and its reference.
 
 use crate::ray_diff::reference::{components, widths};
 use crate::ray_diff::reintersection::shared::{delta_rows, OffsetArgs};
+use crate::ray_diff_f64::reintersection::barycentric_offsets_f64;
 use crate::ray_diff_f64::reintersection::shared::{
     exact_offsets_f64, reintersection_record, well_conditioned_offset_args_f64,
 };
-use crate::ray_diff_f64::reintersection::barycentric_offsets_f64;
 use crate::record::Record;
 use crate::reference::{Kind, Reference};
 use crate::special::Perturb;

@@ -1,9 +1,11 @@
-//! The proof of [`barycentric_offsets_f64`](ray_footprint::ray_diff_f64::barycentric_offsets_f64): its record, its enclosure and its reference.
+//! The proof of [`barycentric_offsets_f64`](ray_footprint::ray_diff_f64::barycentric_offsets_f64):
+//! its record, its enclosure and its reference.
 
 use crate::ray_diff::reference::{components, widths};
 use crate::ray_diff::reintersection::shared::{offset_rows, OffsetArgs, OFFSET};
 use crate::ray_diff_f64::reintersection::shared::{
-    exact_offsets_f64, object_rays_f64, plane_barycentrics_f64, reintersection_record, well_conditioned_offset_args_f64,
+    exact_offsets_f64, object_rays_f64, plane_barycentrics_f64, reintersection_record,
+    well_conditioned_offset_args_f64,
 };
 use crate::record::Record;
 use crate::reference::{Kind, Reference};

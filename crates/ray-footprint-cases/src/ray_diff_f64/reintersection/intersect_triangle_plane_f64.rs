@@ -1,4 +1,6 @@
-//! The proof of [`intersect_triangle_plane_f64`](ray_footprint::ray_diff_f64::intersect_triangle_plane_f64): its record, its case strategy and its reference.
+//! The proof of
+//! [`intersect_triangle_plane_f64`](ray_footprint::ray_diff_f64::intersect_triangle_plane_f64): its
+//! record, its case strategy and its reference.
 
 use crate::conditioning::well_conditioned;
 use crate::exact::triangle_hit;

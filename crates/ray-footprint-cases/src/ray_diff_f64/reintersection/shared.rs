@@ -17,17 +17,15 @@ use shader_proptest::interval::{interval3_f64, mat_vec, Interval, Interval3, F64
 use shader_proptest::Value;
 
 /// Why a re-intersection is left out of the f64 checks ([`offsets_well_conditioned_f64`]).
-pub(crate) const REINTERSECTION_ILL_CONDITIONED: &str = "a neighbour ray is parallel to the triangle's plane within \
+pub(crate) const REINTERSECTION_ILL_CONDITIONED: &str =
+    "a neighbour ray is parallel to the triangle's plane within \
      f64 rounding, or its object-space direction is lost to the cancellation of a far origin (not \
      known to 2^-10): the clamped barycentrics may take either +-F64_MAX_VALUE";
 
 /// [`offset_args`] with origins up to 1e8 where both f64 intersections are well-conditioned.
 pub(crate) fn well_conditioned_offset_args_f64() -> BoxedStrategy<OffsetArgs> {
     offset_args(8.0)
-        .prop_filter(
-            REINTERSECTION_ILL_CONDITIONED,
-            offsets_well_conditioned_f64,
-        )
+        .prop_filter(REINTERSECTION_ILL_CONDITIONED, offsets_well_conditioned_f64)
         .boxed()
 }
 
@@ -37,10 +35,13 @@ pub(crate) fn reintersection_record<R: Value>(
     function: &'static str,
     mirror: fn(OffsetArgs) -> R,
 ) -> Record<OffsetArgs, R> {
-    Record::new(Module::RayDiffF64, function, mirror, well_conditioned_offset_args_f64).conditioned(
-        REINTERSECTION_ILL_CONDITIONED,
-        offsets_well_conditioned_f64,
+    Record::new(
+        Module::RayDiffF64,
+        function,
+        mirror,
+        well_conditioned_offset_args_f64,
     )
+    .conditioned(REINTERSECTION_ILL_CONDITIONED, offsets_well_conditioned_f64)
 }
 
 /// The barycentrics of the ray's hit on the plane of the triangle `p`, in f64: the quotients
@@ -69,7 +70,8 @@ pub(crate) fn object_rays_f64(
     (object_origin, object_x, object_y)
 }
 
-/// Whether both f64 intersections are well-conditioned ([`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED)).
+/// Whether both f64 intersections are well-conditioned
+/// ([`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED)).
 pub(crate) fn offsets_well_conditioned_f64(args: &OffsetArgs) -> bool {
     let &(_, _, p0, p1, p2, _, _, _) = args;
     let (_, object_x, object_y) = object_rays_f64(args);

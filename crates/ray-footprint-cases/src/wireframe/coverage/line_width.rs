@@ -5,7 +5,9 @@ use crate::degenerate::value;
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
-use crate::wireframe::coverage::shared::{coverage_f64, hit, line_width_error, AMBIGUOUS_COVERAGE, AT_AN_EDGE};
+use crate::wireframe::coverage::shared::{
+    coverage_f64, hit, line_width_error, AMBIGUOUS_COVERAGE, AT_AN_EDGE,
+};
 use crate::wireframe::strategy::size;
 use glam::Vec3;
 use proptest::prelude::*;

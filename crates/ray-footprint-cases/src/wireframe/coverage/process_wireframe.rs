@@ -5,8 +5,8 @@ use crate::degenerate::{mirror, same, value, NAN};
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
 use crate::wireframe::coverage::shared::{
-    coverage_f64, edge_thickness_error, edge_thickness_f64, hit, line_width_error, stipple_f64, stipple_may_flip,
-    AMBIGUOUS_COVERAGE, AT_AN_EDGE,
+    coverage_f64, edge_thickness_error, edge_thickness_f64, hit, line_width_error, stipple_f64,
+    stipple_may_flip, AMBIGUOUS_COVERAGE, AT_AN_EDGE,
 };
 use crate::wireframe::strategy::settings;
 use glam::Vec3;

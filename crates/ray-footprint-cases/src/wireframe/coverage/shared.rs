@@ -250,7 +250,13 @@ pub(crate) fn stipple_f64(stipple_repeats: i32, stipple_length: f32, edge_positi
 ///   right);
 ///
 /// `None` too where the ramp's bound reaches 1 (a ramp steeper than the precision of `start`).
-pub(crate) fn ramp_f64(x: f64, start: f64, width: f64, start_error: f64, width_error: f64) -> Option<(f64, f64)> {
+pub(crate) fn ramp_f64(
+    x: f64,
+    start: f64,
+    width: f64,
+    start_error: f64,
+    width_error: f64,
+) -> Option<(f64, f64)> {
     if width <= f64::from(MIN_LINE_RAMP) {
         let step = if x < start { 0.0 } else { 1.0 };
         let ambiguous = start_error > 0.0 && (x - start).abs() <= start_error;
