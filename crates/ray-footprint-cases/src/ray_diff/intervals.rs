@@ -58,7 +58,7 @@ pub(crate) fn determinant_well_conditioned(direction: Vec3, p0: Vec3, p1: Vec3, 
 /// Whether a direction is known to [`WELL_CONDITIONED`]: its widest component's enclosure is at
 /// most that fraction of its largest component (an object-space neighbour direction is not, when
 /// the origin is so far from the object that `T(O + d) - T(O)` cancels most of its bits).
-pub fn direction_well_conditioned(direction: Interval3) -> bool {
+pub(crate) fn direction_well_conditioned(direction: Interval3) -> bool {
     let width = direction.0.iter().map(|c| c.hi - c.lo).fold(0.0, f64::max);
     let magnitude = direction.0.iter().map(|c| c.magnitude()).fold(0.0, f64::max);
     width <= WELL_CONDITIONED * magnitude
