@@ -1,0 +1,146 @@
+//! The proof of [`hit_texture_gradients`](ray_footprint::ray_cone::hit_texture_gradients): its
+//! record, its enclosure and its reference, the exact footprint of the cone on the triangle's
+//! plane through the triangle's UV Jacobian (the hit's cases and geometry are `hit_texture_lod`'s).
+
+use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
+use crate::ray_cone::footprint::hit_texture_lod::{areas, face_normal, hit_cases, Hit};
+use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
+use crate::record::Record;
+use crate::reference::{gamma, Deviation, Kind, Reference};
+use glam::{Vec2, Vec3, Vec4};
+use ray_footprint::ray_cone::{self as rc, RayCone, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::shaders::Module;
+use shader_proptest::interval::{interval3, Interval};
+
+/// Arguments of `rf_hit_texture_gradients`: the cone, the direction, the hit distance, the
+/// triangle's corners and UVs.
+pub type HitGradientArgs = (RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
+
+/// The record of `rf_hit_texture_gradients`: the enclosure of the gradients.
+pub fn record() -> Record<HitGradientArgs, Vec4> {
+    let (p0, p1, p2, uv0, uv1, uv2) = (Vec3::ZERO, Vec3::X, Vec3::Y, Vec2::ZERO, Vec2::X, Vec2::Y);
+    let (z0, z1, z2, zuv0, zuv1, zuv2) = ZERO_AREA;
+    let (c0, c1, c2, cuv0, cuv1, cuv2) = COLLINEAR_UVS;
+    let down = Vec3::NEG_Z;
+    let narrow = cone(1.0 / 64.0, 0.0);
+    let g = 1.0f32 / 64.0;
+    Record::new(
+        Module::RayCone,
+        "hit_texture_gradients",
+        |(cone, d, t, p0, p1, p2, uv0, uv1, uv2)| {
+            rc::hit_texture_gradients(cone, d, t, p0, p1, p2, uv0, uv1, uv2)
+        },
+        hit_cases,
+    )
+    .enclosure(enclosure)
+    .reference(reference())
+    .fuzz(|d| {
+        (
+            d.cone(),
+            d.unit(),
+            d.distance(),
+            d.vec3(),
+            d.vec3(),
+            d.vec3(),
+            d.vec2(),
+            d.vec2(),
+            d.vec2(),
+        )
+    })
+    .degenerate(vec![
+        value(
+            "head on, unit triangle, uv = xy",
+            "(g, 0, 0, g) with g = |width|",
+            (narrow, down, 5.0, p0, p1, p2, uv0, uv1, uv2),
+            vec![g, 0.0, 0.0, g],
+        ),
+        value(
+            "zero-area triangle (repeated vertex)",
+            "the face normal is 0: g = |width| / MIN_COS * sqrt(uv_area2) / sqrt(MIN_MAGNITUDE)",
+            (narrow, down, 5.0, z0, z1, z2, zuv0, zuv1, zuv2),
+            {
+                let g = g / MIN_COS * (1.0f32.sqrt() / MIN_MAGNITUDE.sqrt());
+                vec![g, 0.0, 0.0, g]
+            },
+        ),
+        value(
+            "zero UV area (collinear UVs)",
+            "0 (samples mip 0)",
+            (narrow, down, 5.0, c0, c1, c2, cuv0, cuv1, cuv2),
+            vec![0.0; 4],
+        ),
+        same(
+            "t = 0",
+            "the cone's width at its origin",
+            (cone(1.0 / 64.0, 0.01), down, 0.0, p0, p1, p2, uv0, uv1, uv2),
+            (narrow, down, 5.0, p0, p1, p2, uv0, uv1, uv2),
+        ),
+        value(
+            "zero cone (width and spread 0)",
+            "0",
+            (cone(0.0, 0.0), down, 5.0, p0, p1, p2, uv0, uv1, uv2),
+            vec![0.0; 4],
+        ),
+        value(
+            "ray in the triangle's plane",
+            "g = |width| / MIN_COS",
+            (narrow, IN_PLANE, 5.0, p0, p1, p2, uv0, uv1, uv2),
+            {
+                let g = g / MIN_COS * 1.0;
+                vec![g, 0.0, 0.0, g]
+            },
+        ),
+        same(
+            "grazing (|dot(n, d)| = 1e-6)",
+            "as the ray in the plane",
+            (narrow, grazing(), 5.0, p0, p1, p2, uv0, uv1, uv2),
+            (narrow, IN_PLANE, 5.0, p0, p1, p2, uv0, uv1, uv2),
+        ),
+        mirror(
+            "NaN in (t)",
+            "CPU: NaN",
+            (narrow, down, NAN, p0, p1, p2, uv0, uv1, uv2),
+            vec![NAN, 0.0, 0.0, NAN],
+        ),
+    ])
+}
+
+/// `rf_hit_texture_gradients` in interval arithmetic, in the same order of operations: the cone's
+/// slanted footprint with the face normal times the texel density of the clamped world area.
+fn enclosure(&(cone, direction, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs) -> Vec<Interval> {
+    let p = [p0, p1, p2].map(interval3);
+    let (uv_area2, world_area2) = areas(p, [uv0, uv1, uv2]);
+    let width = Interval::exact(cone.width) + Interval::exact(cone.spread_angle) * Interval::exact(t);
+    let cosine = face_normal(p)
+        .dot(interval3(direction))
+        .abs()
+        .max_c(f64::from(MIN_COS));
+    let density = uv_area2.sqrt() / world_area2.max_c(f64::from(MIN_MAGNITUDE)).sqrt();
+    let gradient = width.abs() / cosine * density;
+    vec![gradient, Interval::c(0.0), Interval::c(0.0), gradient]
+}
+
+/// The reference of `rf_hit_texture_gradients`.
+fn reference() -> Reference<HitGradientArgs, Vec4> {
+    Reference::new(
+        Kind::ExactGeometry,
+        "(g, 0, 0, g) with g the cone's exact footprint on the triangle's plane (|w + s t| / |cos|) times the texel density sqrt|det J| of the triangle's UV Jacobian, triangles at scales 1e-8 to 1e8 in random planes (ray-cone tutorial's textureGrad form)",
+        Hit::strategy,
+        |hit, hit_texture_gradients| {
+            let got = hit_texture_gradients(hit.gradient_arguments());
+            let exact = hit.exact();
+            if exact.areas.0.min(exact.areas.1) < 1.0e2 * f64::from(MIN_MAGNITUDE) {
+                // The areas' clamp, a degenerate row's business.
+                return None;
+            }
+            let expected = exact.footprint * exact.density;
+            // The relative errors of the areas, the cosine and the width, and six roundings: the
+            // division by the cosine, two square roots, their quotient, the product (gamma(6)).
+            let bound = 1.01 * (exact.relative + gamma(6)) * expected;
+            let diagonal = Deviation::within(f64::from(got.x), expected, bound)
+                .and(Deviation::within(f64::from(got.w), expected, bound));
+            let off_diagonal = Deviation::within(f64::from(got.y), 0.0, 0.0).and(Deviation::within(f64::from(got.z), 0.0, 0.0));
+            Some(diagonal.and(off_diagonal))
+        },
+    )
+}
