@@ -17,6 +17,13 @@
 //! the mesh stores them, in either orientation: no function needs them turned towards the ray.
 //! Where the math diverges, the functions clamp with the constants below, so finite inputs give
 //! finite outputs.
+//!
+//! For a texture fetch at a closest hit, [`hit_texture_lod`] (or [`hit_texture_gradients`] for
+//! `textureSampleGrad`) takes what the hit has: the cone at the ray's origin (for a primary ray
+//! [`pinhole_ray_cone`] of [`pixel_spread_angle`], [`pixel_spread_angle_from_proj_inv`] or, for an
+//! image-plane camera, [`pixel_spread_angle_from_image_plane`]), the ray, the hit distance, the
+//! triangle's corners and UVs and the texture's size. The level only matters on a texture with its
+//! mip chain ([`crate::mip`]) sampled with linear minification and mipmap filters.
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat4, Vec2, Vec3, Vec4};
@@ -1010,7 +1017,10 @@ pub fn hit_texture_lod(
 /// [`hit_texture_lod`] for samplers given gradients: `(ddx.x, ddx.y, ddy.x, ddy.y) = (g, 0, 0, g)`
 /// in UV units, with `g` the cone's slant-corrected footprint ([`world_footprint`] with the face
 /// normal) times the triangle's [`texel_density`] (the ray-cone tutorial's `textureGrad` form).
-/// For a square texture `log2(g * W)` is `hit_texture_lod`'s LOD. The arguments are
+/// For a square texture `log2(g * W)` is `hit_texture_lod`'s LOD. `g` is clamped to `<= F16_MAX`
+/// UV units (the footprint to `<= F16_MAX / max(density, MIN_MAGNITUDE)` before the product, so that
+/// it cannot overflow): any gradient above 1 already samples a texture's last level, so the clamp
+/// changes no sample. The arguments are
 /// `hit_texture_lod`'s without the texture size; for anisotropic filtering see
 /// `ray_diff::anisotropic_cone_gradients`.
 ///
@@ -1039,7 +1049,9 @@ pub fn hit_texture_gradients(
     uv2: Vec2,
 ) -> Vec4 {
     let normal = face_normal(shape_frame_u(p0, p1), p0, p2);
-    let gradient = world_footprint(cone, t, normal, direction) * texel_density(p0, p1, p2, uv0, uv1, uv2);
+    let density = texel_density(p0, p1, p2, uv0, uv1, uv2);
+    let footprint = world_footprint(cone, t, normal, direction).min(F16_MAX / density.max(MIN_MAGNITUDE));
+    let gradient = footprint * density;
     Vec4::new(gradient, 0.0, 0.0, gradient)
 }
 

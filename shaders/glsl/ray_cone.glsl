@@ -377,11 +377,14 @@ float rf_hit_texture_lod(RfRayCone cone, vec3 direction, float t, vec3 p0, vec3 
 }
 
 // The textureSampleGrad gradients of the same hit, (ddx, ddy) = ((g, 0), (0, g)) in UV units:
-// g = rf_world_footprint with the face normal times rf_texel_density.
+// g = rf_world_footprint with the face normal times rf_texel_density, g clamped to <= RF_F16_MAX
+// (the footprint to <= RF_F16_MAX / max(density, RF_MIN_MAGNITUDE) first): past 1 no sample changes.
 vec4 rf_hit_texture_gradients(RfRayCone cone, vec3 direction, float t, vec3 p0, vec3 p1, vec3 p2,
     vec2 uv0, vec2 uv1, vec2 uv2) {
     vec3 normal = rf_face_normal(rf_shape_frame_u(p0, p1), p0, p2);
-    float gradient = rf_world_footprint(cone, t, normal, direction) * rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    float density = rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    float footprint = min(rf_world_footprint(cone, t, normal, direction), RF_F16_MAX / max(density, RF_MIN_MAGNITUDE));
+    float gradient = footprint * density;
     return vec4(gradient, 0.0, 0.0, gradient);
 }
 

@@ -405,11 +405,14 @@ float rf_hit_texture_lod(RfRayCone cone, float3 direction, float t, float3 p0, f
 }
 
 // The textureSampleGrad gradients of the same hit, (ddx, ddy) = ((g, 0), (0, g)) in UV units:
-// g = rf_world_footprint with the face normal times rf_texel_density.
+// g = rf_world_footprint with the face normal times rf_texel_density, g clamped to <= RF_F16_MAX
+// (the footprint to <= RF_F16_MAX / max(density, RF_MIN_MAGNITUDE) first): past 1 no sample changes.
 float4 rf_hit_texture_gradients(RfRayCone cone, float3 direction, float t, float3 p0, float3 p1,
     float3 p2, float2 uv0, float2 uv1, float2 uv2) {
     float3 normal = rf_face_normal(rf_shape_frame_u(p0, p1), p0, p2);
-    float gradient = rf_world_footprint(cone, t, normal, direction) * rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    float density = rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    float footprint = min(rf_world_footprint(cone, t, normal, direction), RF_F16_MAX / max(density, RF_MIN_MAGNITUDE));
+    float gradient = footprint * density;
     return float4(gradient, 0.0, 0.0, gradient);
 }
 

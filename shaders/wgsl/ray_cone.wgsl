@@ -410,7 +410,8 @@ fn rf_hit_texture_lod(
 }
 
 // The textureSampleGrad gradients of the same hit, (ddx, ddy) = ((g, 0), (0, g)) in UV units:
-// g = rf_world_footprint with the face normal times rf_texel_density.
+// g = rf_world_footprint with the face normal times rf_texel_density, g clamped to <= RF_F16_MAX
+// (the footprint to <= RF_F16_MAX / max(density, RF_MIN_MAGNITUDE) first): past 1 no sample changes.
 fn rf_hit_texture_gradients(
     cone: RfRayCone,
     direction: vec3<f32>,
@@ -423,7 +424,9 @@ fn rf_hit_texture_gradients(
     uv2: vec2<f32>,
 ) -> vec4<f32> {
     let normal = rf_face_normal(rf_shape_frame_u(p0, p1), p0, p2);
-    let gradient = rf_world_footprint(cone, t, normal, direction) * rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    let density = rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    let footprint = min(rf_world_footprint(cone, t, normal, direction), RF_F16_MAX / max(density, RF_MIN_MAGNITUDE));
+    let gradient = footprint * density;
     return vec4<f32>(gradient, 0.0, 0.0, gradient);
 }
 

@@ -3,12 +3,14 @@
 //! plane through the triangle's UV Jacobian (the hit's cases and geometry are `hit_texture_lod`'s).
 
 use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
-use crate::ray_cone::footprint::hit_texture_lod::{areas, face_normal, hit_cases, Hit};
+use crate::ray_cone::footprint::hit_texture_lod::{
+    areas, face_normal, hit_cases, hit_conditioned, Hit, ILL_CONDITIONED,
+};
 use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use glam::{Vec2, Vec3, Vec4};
-use ray_footprint::ray_cone::{self as rc, RayCone, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, RayCone, F16_MAX, MIN_COS, MIN_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval};
 
@@ -32,6 +34,7 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
         },
         hit_cases,
     )
+    .conditioned(ILL_CONDITIONED, hit_conditioned)
     .enclosure(enclosure)
     .reference(reference())
     .fuzz(|d| {
@@ -56,10 +59,11 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
         ),
         value(
             "zero-area triangle (repeated vertex)",
-            "the face normal is 0: g = |width| / MIN_COS * sqrt(uv_area2) / sqrt(MIN_MAGNITUDE)",
+            "the face normal is 0: g = |width| / MIN_COS * sqrt(uv_area2) / sqrt(MIN_MAGNITUDE), clamped to about F16_MAX",
             (narrow, down, 5.0, z0, z1, z2, zuv0, zuv1, zuv2),
             {
-                let g = g / MIN_COS * (1.0f32.sqrt() / MIN_MAGNITUDE.sqrt());
+                let density = 1.0f32.sqrt() / MIN_MAGNITUDE.sqrt();
+                let g = (g / MIN_COS).min(F16_MAX / density.max(MIN_MAGNITUDE)) * density;
                 vec![g, 0.0, 0.0, g]
             },
         ),
@@ -86,7 +90,27 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
             "g = |width| / MIN_COS",
             (narrow, IN_PLANE, 5.0, p0, p1, p2, uv0, uv1, uv2),
             {
-                let g = g / MIN_COS * 1.0;
+                let g = (g / MIN_COS).min(F16_MAX / 1.0) * 1.0;
+                vec![g, 0.0, 0.0, g]
+            },
+        ),
+        value(
+            "huge cone on a zero-area triangle with huge UVs, in its plane",
+            "about F16_MAX: the footprint clamped to F16_MAX / density before the product (1e16 * 1e22 overflows)",
+            (
+                cone(1.0e12, 0.0),
+                IN_PLANE,
+                5.0,
+                z0,
+                z1,
+                z2,
+                Vec2::ZERO,
+                Vec2::new(1.0e12, 0.0),
+                Vec2::new(0.0, 1.0e12),
+            ),
+            {
+                let density = (1.0e12f32 * 1.0e12).sqrt() / MIN_MAGNITUDE.sqrt();
+                let g = (1.0e12f32 / MIN_COS).min(F16_MAX / density.max(MIN_MAGNITUDE)) * density;
                 vec![g, 0.0, 0.0, g]
             },
         ),
@@ -98,15 +122,16 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
         ),
         mirror(
             "NaN in (t)",
-            "CPU: NaN",
+            "CPU: F16_MAX (the clamp's `min` ignores NaN)",
             (narrow, down, NAN, p0, p1, p2, uv0, uv1, uv2),
-            vec![NAN, 0.0, 0.0, NAN],
+            vec![F16_MAX, 0.0, 0.0, F16_MAX],
         ),
     ])
 }
 
 /// `rf_hit_texture_gradients` in interval arithmetic, in the same order of operations: the cone's
-/// slanted footprint with the face normal times the texel density of the clamped world area.
+/// slanted footprint with the face normal, clamped to `F16_MAX / max(density, MIN_MAGNITUDE)`,
+/// times the texel density of the clamped world area.
 fn enclosure(&(cone, direction, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs) -> Vec<Interval> {
     let p = [p0, p1, p2].map(interval3);
     let (uv_area2, world_area2) = areas(p, [uv0, uv1, uv2]);
@@ -116,7 +141,8 @@ fn enclosure(&(cone, direction, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs)
         .abs()
         .max_c(f64::from(MIN_COS));
     let density = uv_area2.sqrt() / world_area2.max_c(f64::from(MIN_MAGNITUDE)).sqrt();
-    let gradient = width.abs() / cosine * density;
+    let limit = Interval::c(f64::from(F16_MAX)) / density.max_c(f64::from(MIN_MAGNITUDE));
+    let gradient = (width.abs() / cosine).min(limit) * density;
     vec![gradient, Interval::c(0.0), Interval::c(0.0), gradient]
 }
 
@@ -134,6 +160,10 @@ fn reference() -> Reference<HitGradientArgs, Vec4> {
                 return None;
             }
             let expected = exact.footprint * exact.density;
+            if expected > 0.5 * f64::from(F16_MAX) {
+                // Near or past the clamp to F16_MAX, a degenerate row's business.
+                return None;
+            }
             // The relative errors of the areas, the cosine and the width, and six roundings: the
             // division by the cosine, two square roots, their quotient, the product (gamma(6)).
             let bound = 1.01 * (exact.relative + gamma(6)) * expected;

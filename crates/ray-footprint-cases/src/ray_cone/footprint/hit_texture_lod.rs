@@ -3,6 +3,7 @@
 //! plane through the triangle's UV Jacobian; what the proof of `hit_texture_gradients` shares with
 //! it (the hit's cases, the face normal and the areas in interval arithmetic, the exact hit).
 
+use crate::conditioning::well_conditioned;
 use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
 use crate::exact::{log_uniform, tangent, towards, unit};
 use crate::ray_cone::bound::width_rounding;
@@ -51,6 +52,9 @@ pub fn record() -> Record<HitLodArgs, f32> {
                 .boxed()
         },
     )
+    .conditioned(ILL_CONDITIONED, |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, _)| {
+        hit_conditioned(&(cone, d, t, p0, p1, p2, uv0, uv1, uv2))
+    })
     .enclosure(|args| vec![enclosure(args)])
     .reference(reference())
     .fuzz(|d| {
@@ -160,6 +164,28 @@ pub(crate) fn hit_cases() -> BoxedStrategy<(RayCone, Vec3, f32, Vec3, Vec3, Vec3
             (cone, direction, t, p[0], p[1], p[2], uv[0], uv[1], uv[2])
         })
         .boxed()
+}
+
+/// Why a hit is left to the special-value suite's clamps: what the hit functions divide by or
+/// take the logarithm of is not known to
+/// [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED).
+pub(crate) const ILL_CONDITIONED: &str = "the face normal's clamped cosine with the ray or a clamped doubled area not known to 2^-10 (a sliver or a ray in the triangle's plane within rounding), where the enclosure is as wide as the outputs";
+
+/// Whether the clamped cosine of the face normal with the ray and the clamped doubled areas are
+/// known to [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED) ([`well_conditioned`]).
+pub(crate) fn hit_conditioned(
+    &(_, direction, _, p0, p1, p2, uv0, uv1, uv2): &(RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2),
+) -> bool {
+    let min = f64::from(MIN_MAGNITUDE);
+    let p = [p0, p1, p2].map(interval3);
+    let (uv_area2, world_area2) = areas(p, [uv0, uv1, uv2]);
+    let cosine = face_normal(p)
+        .dot(interval3(direction))
+        .abs()
+        .max_c(f64::from(MIN_COS));
+    well_conditioned(cosine)
+        && well_conditioned(uv_area2.max_c(min))
+        && well_conditioned(world_area2.max_c(min))
 }
 
 /// The face normal `unit(unit(p1 - p0) x unit(p2 - p0))`, as `face_normal(shape_frame_u(p0, p1), p0, p2)`.
