@@ -874,7 +874,8 @@ pub fn triangle_uv_area2(uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
 /// assert!((density - 0.5).abs() < 1e-7);
 /// ```
 pub fn texel_density(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
-    triangle_uv_area2(uv0, uv1, uv2).sqrt() / triangle_world_area2(p0, p1, p2).max(MIN_SQUARED_MAGNITUDE).sqrt()
+    triangle_uv_area2(uv0, uv1, uv2).sqrt()
+        / triangle_world_area2(p0, p1, p2).max(MIN_SQUARED_MAGNITUDE).sqrt()
 }
 
 /// Base level of detail of a triangle in UV units (RTG Eq. 4):

@@ -37,6 +37,7 @@ mod record;
 pub mod reference;
 pub mod special;
 pub mod strategy;
+pub mod symmetry;
 pub mod wireframe;
 
 pub use record::{Function, IllConditioned, Promises, Record};

@@ -34,6 +34,7 @@ use crate::degenerate::Row;
 use crate::fuzzing::draw::{Draw, Mode};
 use crate::reference::{reference_seed, Kind, Reference, ReferenceReport};
 use crate::special::Perturb;
+use crate::symmetry::{self, Kind as SymmetryKind, Symmetry, SymmetryReport};
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use ray_footprint::shaders::Module;
@@ -128,6 +129,8 @@ pub struct Record<A, R> {
     fuzz: Option<fn(&mut Draw) -> A>,
     promise: Promise<A, R>,
     references: Vec<Reference<A, R>>,
+    symmetries: Vec<Symmetry<A, R>>,
+    without_symmetry: Option<&'static str>,
     found: Option<&'static str>,
 }
 
@@ -152,6 +155,8 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
             fuzz: None,
             promise: Promise::Finite,
             references: Vec::new(),
+            symmetries: Vec::new(),
+            without_symmetry: None,
             found: None,
         }
     }
@@ -233,6 +238,21 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         self
     }
 
+    /// A transformation the function's math respects ([`crate::symmetry`]); a function may
+    /// have several.
+    pub fn symmetry(mut self, symmetry: Symmetry<A, R>) -> Self {
+        self.symmetries.push(symmetry);
+        self
+    }
+
+    /// Why the function has no symmetry to declare.
+    pub fn without_symmetry(self, reason: &'static str) -> Self {
+        Record {
+            without_symmetry: Some(reason),
+            ..self
+        }
+    }
+
     /// The bug that a check or reference of this function found, in words (for the table of
     /// `src/proven.md`).
     pub fn found(self, bug: &'static str) -> Self {
@@ -264,6 +284,32 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
     /// The tolerance.
     pub fn tolerance(&self) -> &Tolerance<A> {
         &self.tolerance
+    }
+
+    /// The strategy of the agreement cases (before the conditioning filter).
+    pub fn cases(&self) -> fn() -> BoxedStrategy<A> {
+        self.cases
+    }
+
+    /// The mirror.
+    pub fn mirror_fn(&self) -> fn(A) -> R {
+        self.mirror
+    }
+
+    /// Where the function is well-conditioned ([`Record::conditioned`]): `None` where it is
+    /// everywhere.
+    pub fn conditioning(&self) -> Option<fn(&A) -> bool> {
+        self.conditioning.map(|conditioning| conditioning.holds)
+    }
+
+    /// Whether the function is well-conditioned at `args` ([`Record::conditioned`]).
+    pub fn well_conditioned_at(&self, args: &A) -> bool {
+        self.conditioning().is_none_or(|holds| holds(args))
+    }
+
+    /// The declared symmetries.
+    pub fn symmetries(&self) -> &[Symmetry<A, R>] {
+        &self.symmetries
     }
 
     /// The degenerate rows.
@@ -361,6 +407,15 @@ pub trait Function: Send + Sync {
     fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport;
     /// [`Record::found`]'s bug, if any.
     fn found(&self) -> Option<&'static str>;
+    /// The kind and description of each declared symmetry, in the record's order.
+    fn symmetry_list(&self) -> Vec<(SymmetryKind, &'static str)>;
+    /// Why the function declares no symmetry, where it says so.
+    fn without_symmetry(&self) -> Option<&'static str>;
+    /// Runs symmetry `index` on the mirror over `cases` cases drawn from `seed`
+    /// ([`crate::symmetry`]).
+    fn symmetry_cpu(&self, index: usize, cases: usize, seed: u64) -> SymmetryReport;
+    /// Symmetry `index` as a metamorphic check of the shader function against itself.
+    fn symmetry_check(&self, index: usize) -> Box<dyn Check>;
 }
 
 impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
@@ -452,6 +507,25 @@ impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
 
     fn found(&self) -> Option<&'static str> {
         self.found
+    }
+
+    fn symmetry_list(&self) -> Vec<(SymmetryKind, &'static str)> {
+        self.symmetries
+            .iter()
+            .map(|symmetry| (symmetry.kind(), symmetry.description()))
+            .collect()
+    }
+
+    fn without_symmetry(&self) -> Option<&'static str> {
+        self.without_symmetry
+    }
+
+    fn symmetry_cpu(&self, index: usize, cases: usize, seed: u64) -> SymmetryReport {
+        symmetry::run_on_mirror(self, index, cases, seed)
+    }
+
+    fn symmetry_check(&self, index: usize) -> Box<dyn Check> {
+        Box::new(symmetry::metamorphic_check(self, index))
     }
 
     fn fuzz(&self, data: &[u8], mode: Mode) -> Result<(), String> {

@@ -3,7 +3,7 @@
 //! pipeline's test) needs the same bound.
 
 use glam::{Vec2, Vec3, Vec3Swizzles};
-use ray_footprint::ray_cone::{self as rc, RayCone, MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, RayCone, MAX_FOV_Y, MIN_COS, MIN_SQUARED_MAGNITUDE};
 use shader_proptest::tolerance::{dot_error, tan_error, ulps};
 
 /// `|cos|` as the functions clamp it.
@@ -60,7 +60,7 @@ pub fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) ->
 /// relative error of the squared length (3 ULP) and the division (2.5 ULP) times the result.
 pub fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
     let edge = p_j - p_i;
-    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
+    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_SQUARED_MAGNITUDE)
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 

@@ -308,19 +308,25 @@ fn shape_frame(p: [Interval3; 3]) -> (Interval3, Interval3) {
     (u, face.cross(u))
 }
 
-/// The normal equations of `triangle_shape_operator` after the division by `A + B`:
-/// `(A, B, C)` and the right-hand side `r`.
-fn shape_normal_equations(p: [Interval3; 3], n: [Interval3; 3]) -> ([Interval; 3], Interval3) {
+/// The normal equations of `triangle_shape_operator` after the divisions by the largest edge
+/// component and by `A + B`: `(A, B, C)`, the right-hand side `r`, and that largest component.
+fn shape_normal_equations(p: [Interval3; 3], n: [Interval3; 3]) -> ([Interval; 3], Interval3, Interval) {
     let (u, v) = shape_frame(p);
     let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
     let turns = [n[1] - n[0], n[2] - n[1], n[0] - n[2]];
     let along = |vectors: [Interval3; 3], axis: Interval3| IntervalVec(vectors.map(|x| x.dot(axis)));
-    let (a, b) = (along(edges, u), along(edges, v));
+    let (along_u, along_v) = (along(edges, u), along(edges, v));
+    let extent = along_u
+        .0
+        .iter()
+        .chain(&along_v.0)
+        .fold(Interval::exact(MIN_MAGNITUDE), |largest, x| largest.max(x.abs()));
+    let (a, b) = (along_u / extent, along_v / extent);
     let (du, dv) = (along(turns, u), along(turns, v));
     let scale = (a.dot(a) + b.dot(b)).max_c(f64::from(MIN_MAGNITUDE));
     let squares = [a.dot(a) / scale, b.dot(b) / scale, a.dot(b) / scale];
     let r = IntervalVec([a.dot(du), b.dot(du) + a.dot(dv), b.dot(dv)]) / scale;
-    (squares, r)
+    (squares, r, extent)
 }
 
 /// The determinant `AB - C²` of `triangle_shape_operator`'s normal equations, before its clamp.
@@ -331,29 +337,27 @@ fn shape_determinant([aa, bb, ab]: [Interval; 3]) -> Interval {
 /// `rf_triangle_shape_operator` of corners `p` and normals `n` given as intervals (an f32
 /// input is an exact interval; a reference's may hold an exact value and its rounding too).
 pub(super) fn triangle_shape_operator(p: [Interval3; 3], n: [Interval3; 3]) -> Interval3 {
-    let ([aa, bb, ab], r) = shape_normal_equations(p, n);
+    let ([aa, bb, ab], r, extent) = shape_normal_equations(p, n);
     let [r0, r1, r2] = r.0;
     let ab2 = ab.abs() * ab.abs();
     let determinant = shape_determinant([aa, bb, ab]).max_c(f64::from(MIN_MAGNITUDE));
     let e = (bb - ab2) * r0 - bb * ab * r1 + ab2 * r2;
     let f = aa * bb * r1 - bb * ab * r0 - aa * ab * r2;
     let g = (aa - ab2) * r2 - aa * ab * r1 + ab2 * r0;
-    IntervalVec([e, f, g]) / determinant
+    IntervalVec([e, f, g]) / (determinant * extent)
 }
 
 /// Whether the determinant of `triangle_shape_operator`'s normal equations is known to be
 /// positive and known to [`WELL_CONDITIONED`] (a triangle that is not a sliver within rounding,
-/// nor exactly flat: a repeated corner gives an exact 0) and the triangle's squared edges sum
-/// above `MIN_MAGNITUDE` (edges longer than about 1e-10).
+/// nor exactly flat: a repeated corner gives an exact 0) and its largest edge component known
+/// above `MIN_MAGNITUDE`, where the clamp would begin.
 pub(super) fn shape_well_conditioned(p: [Vec3; 3]) -> bool {
     let p = p.map(interval3);
-    let ([aa, bb, ab], _) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
+    let ([aa, bb, ab], _, extent) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
     let determinant = shape_determinant([aa, bb, ab]);
-    let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
-    let squares = edges.iter().fold(Interval::c(0.0), |sum, &e| sum + e.dot(e));
     determinant.lo > 0.0
         && determinant.relative_width() <= WELL_CONDITIONED
-        && squares.lo > f64::from(MIN_MAGNITUDE)
+        && extent.lo > f64::from(MIN_MAGNITUDE)
 }
 
 /// `rf_normal_curvature` with every argument an interval.
@@ -363,19 +367,20 @@ pub(super) fn normal_curvature(
     direction: Interval3,
 ) -> Interval {
     let (u, v) = shape_frame(p);
-    let (a, b) = (direction.dot(u), direction.dot(v));
+    let unit = clamped_unit(direction);
+    let (a, b) = (unit.dot(u), unit.dot(v));
     let [e, f, g] = shape_operator.0;
-    let min = Interval::exact(MIN_MAGNITUDE);
+    let normal_weight = Interval::exact(MIN_COS) * Interval::exact(MIN_COS);
     let mean = Interval::c(0.5) * (e + g);
     let (a2, b2) = (a.abs() * a.abs(), b.abs() * b.abs());
-    (e * a * a + Interval::c(2.0) * f * a * b + g * b * b + min * mean) / (a2 + b2 + min)
+    (e * a * a + Interval::c(2.0) * f * a * b + g * b * b + normal_weight * mean) / (a2 + b2 + normal_weight)
 }
 
 /// Whether `rf_normal_curvature`'s frame and the direction's squared length in the triangle's
 /// plane are known to [`WELL_CONDITIONED`].
 pub(super) fn projection_well_conditioned(p: [Vec3; 3], direction: Vec3) -> bool {
     let (u, v) = shape_frame(p.map(interval3));
-    let d = interval3(direction);
+    let d = clamped_unit(interval3(direction));
     let (a, b) = (d.dot(u), d.dot(v));
     let in_plane = a.abs() * a.abs() + b.abs() * b.abs();
     shape_well_conditioned(p) && in_plane.relative_width() <= WELL_CONDITIONED

@@ -12,7 +12,7 @@ use crate::strategy::{
 };
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use shader_proptest::draw::uniform;
 use shader_proptest::one_of;
 use shader_proptest::tolerance::{dot_error, log2_error, ulps, ULP};
@@ -272,7 +272,7 @@ pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
     // The areas' errors through sqrt(uv) / sqrt(max(world, MIN)), plus two square roots
     // (4.5 ULP each), the division (2.5) and the mirror's 3.
     .bound(|&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
-        let min = f64::from(MIN_MAGNITUDE);
+        let min = f64::from(MIN_SQUARED_MAGNITUDE);
         area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
             uv.sqrt() / world.max(min).sqrt()
         }) + ulps(14.5, expected)
@@ -283,14 +283,14 @@ pub fn texel_density() -> Record<impl Args + Perturb, impl Value> {
     .degenerate(vec![
         value(
             "zero-area triangle",
-            "sqrt(uv_area2) / sqrt(MIN_MAGNITUDE)",
+            "sqrt(uv_area2) / sqrt(MIN_SQUARED_MAGNITUDE)",
             ZERO_AREA,
-            vec![1.0 / MIN_MAGNITUDE.sqrt()],
+            vec![1.0 / MIN_SQUARED_MAGNITUDE.sqrt()],
         ),
         value("collinear UVs", "0", COLLINEAR_UVS, vec![0.0]),
         value(
             "zero-area triangle and collinear UVs",
-            "0 (0 / sqrt(MIN_MAGNITUDE))",
+            "0 (0 / sqrt(MIN_SQUARED_MAGNITUDE))",
             ZERO_AREA_AND_COLLINEAR_UVS,
             vec![0.0],
         ),
@@ -314,9 +314,9 @@ pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
     // The areas' errors through 0.5 * (log2 uv - log2 world) with the clamps, half of each
     // log2's error, and the subtraction and halving (2 ULP).
     .bound(|&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
-        let min = f64::from(MIN_MAGNITUDE);
-        let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
-        let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
+        let min = f64::from(MIN_SQUARED_MAGNITUDE);
+        let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_SQUARED_MAGNITUDE);
+        let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_SQUARED_MAGNITUDE);
         area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
             0.5 * (uv.max(min).log2() - world.max(min).log2())
         }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
@@ -327,15 +327,15 @@ pub fn triangle_base_lod() -> Record<impl Args + Perturb, impl Value> {
     .degenerate(vec![
         value(
             "zero-area triangle",
-            "0.5 (log2(uv_area2) - log2(MIN_MAGNITUDE))",
+            "0.5 (log2(uv_area2) - log2(MIN_SQUARED_MAGNITUDE))",
             ZERO_AREA,
-            vec![0.5 * (0.0 - MIN_MAGNITUDE.log2())],
+            vec![0.5 * (0.0 - MIN_SQUARED_MAGNITUDE.log2())],
         ),
         value(
             "collinear UVs",
-            "0.5 (log2(MIN_MAGNITUDE) - log2(world_area2))",
+            "0.5 (log2(MIN_SQUARED_MAGNITUDE) - log2(world_area2))",
             COLLINEAR_UVS,
-            vec![0.5 * (MIN_MAGNITUDE.log2() - 0.0)],
+            vec![0.5 * (MIN_SQUARED_MAGNITUDE.log2() - 0.0)],
         ),
         value(
             "zero-area triangle and collinear UVs",

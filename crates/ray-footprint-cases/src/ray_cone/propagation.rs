@@ -11,7 +11,7 @@ use crate::special::Perturb;
 use crate::strategy::{angle, distance, normal_and_direction, scalar, small_vec3, triangle, vec3};
 use glam::Vec3;
 use proptest::prelude::*;
-use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_SQUARED_MAGNITUDE};
 use shader_proptest::draw::uniform;
 use shader_proptest::tolerance::{atan_error, ulps, ULP};
 use shader_proptest::{Args, Value};
@@ -282,6 +282,12 @@ pub fn edge_curvature() -> Record<impl Args + Perturb, impl Value> {
     .degenerate(vec![
         value("zero-length edge", "0", (x, x, z, x), vec![0.0]),
         value(
+            "edge of length 1e-19 (|edge|^2 below MIN_SQUARED_MAGNITUDE)",
+            "dot(n_j - n_i, edge) / MIN_SQUARED_MAGNITUDE",
+            (Vec3::ZERO, Vec3::new(1.0e-19, 0.0, 0.0), Vec3::ZERO, x),
+            vec![1.0e-19 / MIN_SQUARED_MAGNITUDE],
+        ),
+        value(
             "edge of the unit sphere (p = n: x, then y)",
             "1 (1 / R)",
             (x, Vec3::Y, x, Vec3::Y),
@@ -289,10 +295,10 @@ pub fn edge_curvature() -> Record<impl Args + Perturb, impl Value> {
         ),
         value("equal normals (flat)", "0", (Vec3::ZERO, x, z, z), vec![0.0]),
         value(
-            "edge of length 1e-12 (|edge|^2 below MIN_MAGNITUDE)",
-            "dot(n_j - n_i, edge) / MIN_MAGNITUDE",
+            "edge of length 1e-12 along x, the normal turning by x",
+            "1e12: the squared length 1e-24 is above MIN_SQUARED_MAGNITUDE",
             (Vec3::ZERO, Vec3::new(1.0e-12, 0.0, 0.0), Vec3::ZERO, x),
-            vec![1.0e-12 / MIN_MAGNITUDE],
+            vec![1.0e-12 / (1.0e-12 * 1.0e-12)],
         ),
     ])
 }

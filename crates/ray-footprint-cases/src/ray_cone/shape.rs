@@ -10,6 +10,7 @@ use super::{reference, MODULE};
 use crate::degenerate::{value, Row};
 use crate::record::Record;
 use crate::strategy::{small_vec3, triangle, unit_vec3};
+use crate::symmetry::Symmetry;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -73,6 +74,26 @@ pub fn triangle_shape_operator() -> Record<ShapeOperatorArgs, Vec3> {
     })
     .reference(reference::shape_operator_linear_normals())
     .reference(reference::shape_operator_quadric())
+    .symmetry(Symmetry::scale(
+        "corners scaled by s: the shape operator by 1/s",
+        |&(p0, p1, p2, n0, n1, n2), s| (p0 * s, p1 * s, p2 * s, n0, n1, n2),
+        |shape_operator, s| shape_operator * s,
+    ))
+    .symmetry(Symmetry::rotation(
+        "corners and normals turned: the same, in the triangle's own frame",
+        |&(p0, p1, p2, n0, n1, n2), r| (r * p0, r * p1, r * p2, r * n0, r * n1, r * n2),
+        |shape_operator, _| shape_operator,
+    ))
+    .symmetry(Symmetry::translation(
+        "corners moved: the same",
+        |&(p0, p1, p2, n0, n1, n2), t| (p0 + t, p1 + t, p2 + t, n0, n1, n2),
+        |shape_operator, _| shape_operator,
+    ))
+    .symmetry(Symmetry::exchange(
+        "normals flipped: the shape operator negated",
+        |&(p0, p1, p2, n0, n1, n2)| (p0, p1, p2, -n0, -n1, -n2),
+        |shape_operator| -shape_operator,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -143,6 +164,31 @@ pub fn normal_curvature() -> Record<NormalCurvatureArgs, f32> {
         )]
     })
     .reference(reference::normal_curvature_euler())
+    .symmetry(Symmetry::scale(
+        "corners scaled by s and the shape operator by 1/s: the curvature by 1/s",
+        |&(p0, p1, p2, shape_operator, direction), s| (p0 * s, p1 * s, p2 * s, shape_operator / s, direction),
+        |curvature, s| curvature * s,
+    ))
+    .symmetry(Symmetry::scale(
+        "the direction scaled by s: the same",
+        |&(p0, p1, p2, shape_operator, direction), s| (p0, p1, p2, shape_operator, direction * s),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::rotation(
+        "corners and direction turned: the same",
+        |&(p0, p1, p2, shape_operator, direction), r| (r * p0, r * p1, r * p2, shape_operator, r * direction),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::translation(
+        "corners moved: the same",
+        |&(p0, p1, p2, shape_operator, direction), t| (p0 + t, p1 + t, p2 + t, shape_operator, direction),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the direction reversed: the same",
+        |&(p0, p1, p2, shape_operator, direction)| (p0, p1, p2, shape_operator, -direction),
+        |curvature| curvature,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3(), d.unit()))
     .degenerate(normal_curvature_rows(along))
 }
@@ -157,10 +203,16 @@ fn normal_curvature_rows(along: impl Fn(Vec3) -> NormalCurvatureArgs) -> Vec<Row
             vec![1.0],
         ),
         value(
-            "direction (1, 1, 0), not unit length",
-            "(e + 2 f + g) / 2 = 1/2",
-            along(Vec3::new(1.0, 1.0, 0.0)),
-            vec![0.5],
+            "direction 2 x, not unit length",
+            "e = 1: made unit first",
+            along(2.0 * Vec3::X),
+            vec![1.0],
+        ),
+        value(
+            "direction 1e-12 x, a short one",
+            "e = 1: made unit first",
+            along(1.0e-12 * Vec3::X),
+            vec![1.0],
         ),
         value(
             "direction along the face normal (z): no plane of incidence",

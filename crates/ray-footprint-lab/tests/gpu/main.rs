@@ -22,6 +22,7 @@ mod degenerate;
 mod quality;
 mod rt;
 mod special_cases;
+mod symmetry;
 
 use shader_proptest::{Check, Gpu, Language, RunConfig, Shader};
 

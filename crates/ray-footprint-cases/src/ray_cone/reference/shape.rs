@@ -97,10 +97,10 @@ pub(in crate::ray_cone) fn normal_curvature_euler() -> Reference<NormalCurvature
             let in_plane = u * d.dot(u) + v * d.dot(v);
             let t = in_plane.normalize();
             let euler = t.dot(linear_shape(curved) * t);
-            // The function's MIN_MAGNITUDE terms move it from Euler's value by
-            // MIN (mean - k) / (|d_t|^2 + MIN).
-            let min = f64::from(ray_footprint::ray_cone::MIN_MAGNITUDE);
-            let offset = min * (0.5 * (e + g) - euler) / (in_plane.length_squared() + min);
+            // The function's MIN_COS^2 terms move it from Euler's value by
+            // MIN_COS^2 (mean - k) / (|d_t|^2 + MIN_COS^2), d the unit direction.
+            let weight = f64::from(ray_footprint::ray_cone::MIN_COS).powi(2);
+            let offset = weight * (0.5 * (e + g) - euler) / (in_plane.length_squared() / d.length_squared() + weight);
             let width = enclosure::normal_curvature(
                 exact.map(enclosing),
                 enclosing(shape),
