@@ -1,6 +1,6 @@
 //! Bad input at the edges of the API (`src/bad_input.md`): every public entry of the crate that takes
-//! data from outside the program (bytes, settings, include names, WGSL, GLSL, Slang and HLSL sources and
-//! layouts, a naga_oil composer) gets each bad input of the table below. Each must give an error, never a
+//! data from outside the program (bytes, settings, textures to make mip chains of, include names,
+//! WGSL, GLSL, Slang and HLSL sources and layouts, a naga_oil composer) gets each bad input of the table below. Each must give an error, never a
 //! panic, whose message names the struct or field and the value received. The table is rendered
 //! into `src/bad_input.md`; regenerate it with
 //! `RAY_FOOTPRINT_BLESS=1 cargo test --release --all-features --test bad_input`.
@@ -17,6 +17,7 @@ use ray_footprint::abi::{
     RayDiff, WireframePushConstants, WireframeSettingsIo,
 };
 use ray_footprint::layout::{self, FieldLayout, GlslPacking, LayoutError, StructLayout};
+use ray_footprint::mip::{mip_chain_rgba16f, mip_chain_rgba8_srgb};
 use ray_footprint::rust_layout;
 use ray_footprint::shaders::{resolve_glsl_include, Module};
 use ray_footprint::wireframe::{WireframeSettings, MAX_LINE_THICKNESS};
@@ -482,10 +483,35 @@ fn hlsl_reader_rows(reader: Reader) -> [Row; 4] {
     ]
 }
 
+fn mip_rows() -> Vec<Row> {
+    let texels = vec![[0u8; 4]; 12];
+    vec![
+        attempt("mip::mip_chain_rgba8_srgb", "width 0", &["width", "0"], || {
+            mip_chain_rgba8_srgb(0, 4, &texels)
+        }),
+        attempt("mip::mip_chain_rgba8_srgb", "height 0", &["height", "0"], || {
+            mip_chain_rgba8_srgb(4, 0, &texels)
+        }),
+        attempt(
+            "mip::mip_chain_rgba8_srgb",
+            "12 texels for 4 x 4",
+            &["texels", "12", "16"],
+            || mip_chain_rgba8_srgb(4, 4, &texels),
+        ),
+        attempt(
+            "mip::mip_chain_rgba16f",
+            "3 texels for 2 x 2",
+            &["texels", "3", "4"],
+            || mip_chain_rgba16f(2, 2, &[[0u16; 4]; 3]),
+        ),
+    ]
+}
+
 fn all_rows() -> Vec<(&'static str, Vec<Row>)> {
     vec![
         ("Bytes to ABI structs", abi_rows()),
         ("Wireframe settings", settings_rows()),
+        ("Mip chains", mip_rows()),
         ("GLSL include names", include_rows()),
         ("naga_oil composer", naga_oil_rows()),
         ("Layout verification", layout_rows()),

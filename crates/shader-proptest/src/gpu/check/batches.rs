@@ -6,7 +6,7 @@ use super::config::{batch_runner, RunConfig};
 use super::oracle::Oracle;
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use crate::gpu::phases::{Phase, PhaseTimes};
 use crate::tolerance::{count_vacuous, Vacuous};
 use crate::value::{Args, Value};
