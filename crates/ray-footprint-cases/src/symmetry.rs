@@ -15,8 +15,14 @@
 //! - a rotation is one of the 24 rotations of the cube, which permute the axes and flip signs;
 //! - a translation is by multiples of `2^-6` up to 64 per axis, of a case whose translated values
 //!   were first put on the grid of `2^-14` (moved by 1024 and back), so that every sum is exact;
-//! - a case whose change is not exact (a value scaled into the subnormal range, a translation
-//!   beyond the grid's range) is left out: the round trip of the change must give its words back.
+//! - a case whose change is not exact is left out: every value a scale, a rotation or an exchange
+//!   changes must stay finite, normal and within the documented range (0 or 1e-12 to 1e12 in
+//!   magnitude), and every value a translation changes must differ from the case's by exactly one
+//!   of the offset's components.
+//!
+//! A symmetry may hold only on part of the domain, where an absolute clamp does not act (a zero
+//! width clamped to `MIN_MAGNITUDE` is not scaled with the case): [`Symmetry::within`] states
+//! where, and a case outside it, or transformed outside it, is left out.
 //!
 //! The tolerance of a comparison follows from the record's: the result of the case is within the
 //! record's bound at the case of the exact value of its formula, the transformed case's within its
@@ -40,6 +46,13 @@ pub const CASES: usize = 100_000;
 
 /// Largest exponent of a drawn scale: `2^40` is about 1.1e12, the documented range.
 pub const SCALE_EXPONENT: i32 = 40;
+
+/// The documented range of nonzero magnitudes (1e-12 to 1e12, widened to the powers of two a scale
+/// reaches from 1), which a changed value must stay within.
+pub const RANGE: (f32, f32) = (
+    1.0 / (1u64 << SCALE_EXPONENT) as f32,
+    (1u64 << SCALE_EXPONENT) as f32,
+);
 
 /// The grid a translated case is put on first (`1024` is added and taken away: values below 1024
 /// in magnitude land on multiples of `2^-14` at worst), and the step and range of a translation.
@@ -152,6 +165,7 @@ pub struct Symmetry<A, R> {
     description: &'static str,
     transform: Arc<Transform<A>>,
     restore: Arc<Restore<R>>,
+    within: fn(&A) -> bool,
 }
 
 impl<A, R> Clone for Symmetry<A, R> {
@@ -161,6 +175,7 @@ impl<A, R> Clone for Symmetry<A, R> {
             description: self.description,
             transform: Arc::clone(&self.transform),
             restore: Arc::clone(&self.restore),
+            within: self.within,
         }
     }
 }
@@ -174,6 +189,7 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             description,
             transform: Arc::new(move |args, change| transform(args, change.scale)),
             restore: Arc::new(move |result, change| restore(result, change.scale)),
+            within: |_| true,
         }
     }
 
@@ -189,6 +205,7 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             description,
             transform: Arc::new(move |args, change| transform(args, change.rotation)),
             restore: Arc::new(move |result, change| restore(result, change.rotation)),
+            within: |_| true,
         }
     }
 
@@ -204,17 +221,28 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             description,
             transform: Arc::new(move |args, change| transform(args, change.offset)),
             restore: Arc::new(move |result, change| restore(result, change.offset)),
+            within: |_| true,
         }
     }
 
     /// A fixed change (`transform(case)`: the vertex order turned, a sign flipped, two axes
-    /// swapped) and what undoes it in the result (`restore(result)`).
+    /// swapped, an image height doubled) and what undoes it in the result (`restore(result)`).
     pub fn exchange(description: &'static str, transform: fn(&A) -> A, restore: fn(R) -> R) -> Self {
         Symmetry {
             kind: Kind::Exchange,
             description,
             transform: Arc::new(move |args, _| transform(args)),
             restore: Arc::new(move |result, _| restore(result)),
+            within: |_| true,
+        }
+    }
+
+    /// The symmetry restricted to the cases where `holds` is true, before and after the change:
+    /// where the function's absolute clamps do not act (say where in the description).
+    pub fn within(self, holds: fn(&A) -> bool) -> Self {
+        Symmetry {
+            within: holds,
+            ..self
         }
     }
 
@@ -258,12 +286,46 @@ impl<A: Args, R: Value> Symmetry<A, R> {
         }
     }
 
-    /// Whether `change` is exact on `args`: undone, it gives the case's words back, and neither
-    /// case holds a subnormal float (which a device may flush to zero).
+    /// Whether `change` is exact on `args` (see the module's documentation): every float it
+    /// changes stays finite, normal and within [`RANGE`], a translation's by exactly one of the
+    /// offset's components; and neither case holds a subnormal float (which a device may flush to
+    /// zero).
     pub fn exact(&self, args: &A, change: &Change) -> bool {
         let transformed = self.transform(args, change);
-        let back = self.transform(&transformed, &change.inverse());
-        words(&back) == words(args) && !has_subnormal(args) && !has_subnormal(&transformed)
+        let offsets = change.offset.to_array().map(f64::from);
+        // A translation's positions are the floats a far offset moves; each must move by exactly
+        // one of the offset's components (a position too large for the grid would not move).
+        let far = Change {
+            offset: Vec3::splat(1.0e30),
+            ..Change::IDENTITY
+        };
+        let positions: Vec<bool> = match self.kind {
+            Kind::Translation => floats(args)
+                .iter()
+                .zip(floats(&self.transform(args, &far)))
+                .map(|(&before, moved)| before.to_bits() != moved.to_bits())
+                .collect(),
+            _ => vec![false; floats(args).len()],
+        };
+        let in_range = |x: f32| x == 0.0 || (RANGE.0..=RANGE.1).contains(&x.abs());
+        let changed_exactly = floats(args).iter().zip(floats(&transformed)).zip(positions).all(
+            |((&before, after), position)| {
+                let moved = f64::from(after) - f64::from(before);
+                let valid = after.is_finite() && in_range(after);
+                if position {
+                    valid && offsets.contains(&moved)
+                } else {
+                    before.to_bits() == after.to_bits() || valid
+                }
+            },
+        );
+        changed_exactly && !has_subnormal(args) && !has_subnormal(&transformed)
+    }
+
+    /// Whether the symmetry applies to `args` under `change`: the change is exact and the case and
+    /// the transformed case both lie where the symmetry holds ([`Symmetry::within`]).
+    pub fn applies(&self, args: &A, change: &Change) -> bool {
+        self.exact(args, change) && (self.within)(args) && (self.within)(&self.transform(args, change))
     }
 
     /// The bound of each component of the restored result of the transformed case, from the bound
@@ -335,10 +397,7 @@ impl fmt::Display for SymmetryReport {
             self.left_out,
             self.max_ratio,
             100.0 * self.vacuous,
-            match &self.failure {
-                None => "pass",
-                Some(_) => "FAIL",
-            }
+            if self.passed() { "pass" } else { "FAIL" }
         )?;
         write!(f, "  ({})", self.description)?;
         if let Some(failure) = &self.failure {
@@ -361,7 +420,7 @@ fn symmetric_case<A: Args + Perturb, R: Value>(
 ) -> Option<(A, Change, A)> {
     let args = symmetry.prepare(drawn);
     let change = symmetry.change(case_seed(&args));
-    if !symmetry.exact(&args, &change) {
+    if !symmetry.applies(&args, &change) {
         return None;
     }
     let transformed = symmetry.transform(&args, &change);
@@ -495,7 +554,9 @@ pub(crate) fn metamorphic_check<A: Args + Perturb, R: Value>(
                 "the change is not exact, or a case is ill-conditioned",
                 move |args| {
                     let change = symmetry.change(case_seed(args));
-                    symmetry.exact(args, &change) && holds(args) && holds(&symmetry.transform(args, &change))
+                    symmetry.applies(args, &change)
+                        && holds(args)
+                        && holds(&symmetry.transform(args, &change))
                 },
             )
     };
@@ -517,14 +578,21 @@ fn words<A: Args>(args: &A) -> Vec<u32> {
     out
 }
 
-/// Whether any float of `args` is subnormal.
-fn has_subnormal<A: Args>(args: &A) -> bool {
+/// The floats of `args`, in the order of its words.
+fn floats<A: Args>(args: &A) -> Vec<f32> {
     let mut float = Vec::new();
     A::TYPES.iter().for_each(|ty| ty.float_words(&mut float));
     words(args)
         .iter()
         .zip(float)
-        .any(|(&word, is_float)| is_float && f32::from_bits(word).is_subnormal())
+        .filter(|&(_, is_float)| is_float)
+        .map(|(&word, _)| f32::from_bits(word))
+        .collect()
+}
+
+/// Whether any float of `args` is subnormal.
+fn has_subnormal<A: Args>(args: &A) -> bool {
+    floats(args).iter().any(|x| x.is_subnormal())
 }
 
 /// The components of a result, in the harness's order.
@@ -572,21 +640,31 @@ mod tests {
         }
     }
 
-    /// A translation puts the case on the grid first, and its change is then exact; a scale into
-    /// the subnormal range is not.
+    /// A translation puts the case on the grid first, and its change is then exact; a translation
+    /// of a value too large for the grid, or a scale out of the documented range, is not.
     #[test]
     fn exactness_is_checked_by_the_round_trip() {
         let translate = Symmetry::<(Vec3,), Vec3>::translation("p", |&(p,), t| (p + t,), |p, t| p - t);
         let case = translate.prepare(&(Vec3::new(0.1, -3.3, 700.7),));
         let change = Change::draw(Kind::Translation, 12345);
         assert!(translate.exact(&case, &change));
+        let far = translate.prepare(&(Vec3::new(1.75e8, 0.0, 0.0),));
+        let odd = Change {
+            offset: Vec3::splat(1.0 / 64.0),
+            ..Change::IDENTITY
+        };
+        assert!(!translate.exact(&far, &odd), "1.75e8 + 1/64 rounds");
         let scale = Symmetry::<(f32,), f32>::scale("x", |&(x,), s| (x * s,), |x, s| x / s);
         let tiny = Change {
             scale: 2f32.powi(-40),
             ..Change::IDENTITY
         };
         assert!(scale.exact(&(1.0,), &tiny));
-        assert!(!scale.exact(&(1e-30,), &tiny), "1e-30 * 2^-40 is subnormal");
+        assert!(
+            !scale.exact(&(1e-30,), &tiny),
+            "1e-30 * 2^-40 is below the documented range"
+        );
+        assert!(!scale.exact(&(1e3,), &tiny.inverse()), "1e3 * 2^40 is above it");
     }
 
     /// The bound carried through a restore that divides by 4 is a quarter, plus a ULP of the

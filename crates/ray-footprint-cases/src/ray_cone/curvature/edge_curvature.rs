@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{small_vec3, vec3};
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_SQUARED_MAGNITUDE};
@@ -25,6 +26,31 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .bound(|&(p_i, p_j, n_i, n_j), _, _| edge_curvature_error(p_i, p_j, n_i, n_j))
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the positions scaled by s: the curvature by 1/s",
+        |&(p_i, p_j, n_i, n_j), s| (p_i * s, p_j * s, n_i, n_j),
+        |curvature, s| curvature * s,
+    ))
+    .symmetry(Symmetry::rotation(
+        "positions and normals turned: the same",
+        |&(p_i, p_j, n_i, n_j), r| (r * p_i, r * p_j, r * n_i, r * n_j),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::translation(
+        "the positions moved: the same",
+        |&(p_i, p_j, n_i, n_j), t| (p_i + t, p_j + t, n_i, n_j),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the edge's ends exchanged: the same",
+        |&(p_i, p_j, n_i, n_j)| (p_j, p_i, n_j, n_i),
+        |curvature| curvature,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normals flipped: the curvature negated",
+        |&(p_i, p_j, n_i, n_j)| (p_i, p_j, -n_i, -n_j),
+        |curvature: f32| -curvature,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.unit(), d.unit()))
     .degenerate(vec![
         value("zero-length edge", "0", (x, x, z, x), vec![0.0]),
