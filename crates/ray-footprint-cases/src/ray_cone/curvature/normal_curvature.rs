@@ -80,7 +80,45 @@ pub fn record() -> Record<NormalCurvatureArgs, f32> {
 
 fn normal_curvature_rows(along: impl Fn(Vec3) -> NormalCurvatureArgs) -> Vec<Row<NormalCurvatureArgs>> {
     let shape = along(Vec3::ZERO).3;
+    // A cylinder of radius 2 about z: its triangle's frame has u = (-1, 1, 0) / sqrt 2 across the
+    // axis (curvature 1/2) and v = z along it (0).
+    let (c0, c1, c2) = (
+        Vec3::new(2.0, 0.0, 0.0),
+        Vec3::new(0.0, 2.0, 0.0),
+        Vec3::new(2.0, 0.0, 1.0),
+    );
+    let across = |length: f32| (c0, c1, c2, Vec3::new(0.5, 0.0, 0.0), (c1 - c0) * length);
+    // A triangle of the unit cylinder about z whose face normal is not axis-aligned, and that
+    // normal rounded to f32.
+    let (q0, q1, q2) = (
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.6, 0.8, 0.5),
+        Vec3::new(0.8, -0.6, 1.0),
+    );
+    let face = (q1 - q0)
+        .as_dvec3()
+        .cross((q2 - q0).as_dvec3())
+        .normalize()
+        .as_vec3();
     vec![
+        value(
+            "cylinder of radius 2, direction (p1 - p0) * 1e-10 (across the axis, short)",
+            "1/2 for any length",
+            across(1.0e-10),
+            vec![0.5],
+        ),
+        value(
+            "the same direction times 1e-11",
+            "1/2",
+            across(1.0e-11),
+            vec![0.5],
+        ),
+        value(
+            "a tilted face's unit normal, rounded to f32 (in-plane components about 1e-8)",
+            "the mean curvature (e + g) / 2 = 0.555",
+            (q0, q1, q2, Vec3::new(0.8, 0.3, 0.31), face),
+            vec![0.555],
+        ),
         value(
             "direction along the frame's u (x)",
             "e = 1",

@@ -247,3 +247,38 @@ fn shape_operator_quadric() -> Reference<ShapeOperatorArgs, Vec3> {
         },
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with its corners scaled by
+    /// `scale` and its normals (the unscaled corners) kept: a sphere of radius `scale`.
+    fn small_sphere(scale: f32) -> ShapeOperatorArgs {
+        let corners = [Vec3::X, Vec3::Y, Vec3::new(0.6, 0.0, 0.8)];
+        let [p0, p1, p2] = corners.map(|corner| corner * scale);
+        (p0, p1, p2, corners[0], corners[1], corners[2])
+    }
+
+    /// The sphere: the triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with
+    /// its corners scaled by `scale` (1e-16 lies below the documented range) and its normals kept
+    /// is a sphere of radius `scale`: the shape operator is `(1, 0, 1) / scale` and both principal
+    /// curvatures `1 / scale`, to the f32 rounding of the inputs (2^-20 relative).
+    #[test]
+    fn a_small_sphere_has_the_curvature_of_its_radius() {
+        for scale in [1.0, 1.0e-6, 1.0e-11, 1.0e-16] {
+            let (p0, p1, p2, n0, n1, n2) = small_sphere(scale);
+            let shape_operator = rc::triangle_shape_operator(p0, p1, p2, n0, n1, n2) * scale;
+            let curvatures = rc::principal_curvatures(shape_operator);
+            let tolerance = 2f32.powi(-20);
+            assert!(
+                (shape_operator - Vec3::new(1.0, 0.0, 1.0)).abs().max_element() <= tolerance,
+                "scale {scale}: shape operator times the scale {shape_operator}"
+            );
+            assert!(
+                (curvatures - glam::Vec2::ONE).abs().max_element() <= tolerance,
+                "scale {scale}: principal curvatures times the scale {curvatures}"
+            );
+        }
+    }
+}
