@@ -32,7 +32,7 @@
 
 use crate::degenerate::{Row, RowsOf};
 use crate::fuzzing::draw::{Draw, Mode};
-use crate::reference::{reference_seed, Kind, Reference, ReferenceReport};
+use crate::reference::{reference_seed, Kind, Reference, ReferenceReport, Summary};
 use crate::special::Perturb;
 use crate::symmetry::{self, Kind as SymmetryKind, Symmetry, SymmetryReport};
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
@@ -40,6 +40,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::Interval;
 use shader_proptest::{evaluate, Args, Check, Error, FunctionCheck, Gpu, Language, Tolerance, Value};
+use std::cell::Cell;
 
 /// What the fuzzer checks of a result beyond finiteness, for arguments in the documented domain.
 enum Promise<A, R> {
@@ -263,16 +264,54 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
     }
 
     /// Runs reference `index` on cases drawn from a seed derived from `seed` and the function's
-    /// name ([`reference_seed`]).
+    /// name ([`reference_seed`]); then once more through each scale symmetry whose restore is
+    /// exact ([`Symmetry::restores_exactly`]): the function evaluated at each case scaled by the
+    /// power of two its words draw over the documented range, and restored
+    /// ([`Record::scaled_mirror`]), so that the reference holds far from 1 too.
     pub fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport {
         let reference = &self.references[index];
         let seed = reference_seed(seed, self.module, self.function, index);
+        let scales = self
+            .symmetries
+            .iter()
+            .filter(|symmetry| symmetry.kind() == SymmetryKind::Scale && symmetry.restores_exactly());
+        let outcome = scales.fold(reference.run(&self.mirror, seed), |outcome, symmetry| {
+            let evaluations_scaled = Cell::new(0);
+            let scaled = reference
+                .run(
+                    &|args| self.scaled_mirror(symmetry, args, &evaluations_scaled),
+                    seed,
+                )
+                .map_err(|failure| format!("the case scaled ({}): {failure}", symmetry.description()));
+            match (outcome, scaled) {
+                (Ok(unit), Ok(scaled)) => Ok(Summary {
+                    cases: unit.cases + scaled.cases,
+                    left_out: unit.left_out + scaled.left_out,
+                    scaled: unit.scaled + evaluations_scaled.get(),
+                    worst: unit.worst.and(scaled.worst),
+                }),
+                (Err(failure), _) | (_, Err(failure)) => Err(failure),
+            }
+        });
         ReferenceReport {
             function: format!("{}::{}", self.module.stem(), self.function),
             kind: reference.kind(),
             description: reference.description(),
             seed,
-            outcome: reference.run(self.mirror, seed),
+            outcome,
+        }
+    }
+
+    /// The mirror at `args` through a scale symmetry: the case scaled by the power of two its words
+    /// draw ([`shader_proptest::case_seed`]) and the result restored, counted in `scaled`, where
+    /// that change applies; else the mirror at `args`.
+    fn scaled_mirror(&self, symmetry: &Symmetry<A, R>, args: A, scaled: &Cell<u32>) -> R {
+        let change = symmetry.change(shader_proptest::case_seed(&args));
+        if symmetry.applies(&args, &change) {
+            scaled.set(scaled.get() + 1);
+            symmetry.restore((self.mirror)(symmetry.transform(&args, &change)), &change)
+        } else {
+            (self.mirror)(args)
         }
     }
 

@@ -166,6 +166,7 @@ pub struct Symmetry<A, R> {
     transform: Arc<Transform<A>>,
     restore: Arc<Restore<R>>,
     within: fn(&A) -> bool,
+    exact_restore: bool,
 }
 
 impl<A, R> Clone for Symmetry<A, R> {
@@ -176,6 +177,7 @@ impl<A, R> Clone for Symmetry<A, R> {
             transform: Arc::clone(&self.transform),
             restore: Arc::clone(&self.restore),
             within: self.within,
+            exact_restore: self.exact_restore,
         }
     }
 }
@@ -190,6 +192,21 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             transform: Arc::new(move |args, change| transform(args, change.scale)),
             restore: Arc::new(move |result, change| restore(result, change.scale)),
             within: |_| true,
+            exact_restore: true,
+        }
+    }
+
+    /// Every length scaled by `s`, for a result on a log scale (a LOD): `restore(result, s)` adds
+    /// or takes away `log2 s`, which rounds where [`Symmetry::scale`]'s multiplications by powers
+    /// of two do not (so the references do not run through it).
+    pub fn scale_in_log(
+        description: &'static str,
+        transform: fn(&A, f32) -> A,
+        restore: fn(R, f32) -> R,
+    ) -> Self {
+        Symmetry {
+            exact_restore: false,
+            ..Symmetry::scale(description, transform, restore)
         }
     }
 
@@ -206,6 +223,7 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             transform: Arc::new(move |args, change| transform(args, change.rotation)),
             restore: Arc::new(move |result, change| restore(result, change.rotation)),
             within: |_| true,
+            exact_restore: true,
         }
     }
 
@@ -222,6 +240,7 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             transform: Arc::new(move |args, change| transform(args, change.offset)),
             restore: Arc::new(move |result, change| restore(result, change.offset)),
             within: |_| true,
+            exact_restore: true,
         }
     }
 
@@ -234,6 +253,7 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             transform: Arc::new(move |args, _| transform(args)),
             restore: Arc::new(move |result, _| restore(result)),
             within: |_| true,
+            exact_restore: true,
         }
     }
 
@@ -244,6 +264,12 @@ impl<A: Args, R: Value> Symmetry<A, R> {
             within: holds,
             ..self
         }
+    }
+
+    /// Whether the restore is exact (a scale by powers of two, a rotation, an exchange), so that
+    /// the restored result carries no rounding of its own.
+    pub fn restores_exactly(&self) -> bool {
+        self.exact_restore
     }
 
     /// Its kind.

@@ -28,7 +28,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // own error.
     .bound(|_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected))
     .reference(reference())
-    .symmetry(Symmetry::scale(
+    .symmetry(Symmetry::scale_in_log(
         "the spread scaled by s, where spread * height / pi is above MIN_MAGNITUDE (not clamped): the LOD plus log2 s",
         |&(spread, height): &(f32, f32), s| (spread * s, height),
         |lod: f32, s| lod - s.log2(),

@@ -60,7 +60,7 @@ pub fn record() -> Record<TextureLodArgs, f32> {
     })
     .reference(reference())
     .symmetry(
-        Symmetry::scale(
+        Symmetry::scale_in_log(
             "a width above MIN_MAGNITUDE (not clamped) scaled by s: the LOD plus log2 s",
             |&(base, width, size, normal, direction), s| (base, width * s, size, normal, direction),
             |lod: f32, s| lod - s.log2(),

@@ -35,7 +35,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
             + ulps(2.0, expected)
     })
     .reference(reference())
-    .symmetry(Symmetry::scale(
+    .symmetry(Symmetry::scale_in_log(
         "the corners of a triangle whose doubled area is above MIN_SQUARED_MAGNITUDE (not clamped) scaled by s: the LOD less log2 s",
         |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), s| {
             (p0 * s, p1 * s, p2 * s, uv0, uv1, uv2)
