@@ -544,7 +544,7 @@ pub(crate) fn run_on_mirror<A: Args + Perturb, R: Value>(
         expected.extend(result);
         bounds.extend(bound);
         report.cases += 1;
-        if report.cases % VACUOUS_BATCH == 0 || report.cases == cases {
+        if report.cases.is_multiple_of(VACUOUS_BATCH) || report.cases == cases {
             let batch = report.cases - (report.cases - 1) / VACUOUS_BATCH * VACUOUS_BATCH;
             vacuous += count_vacuous(&expected, &bounds, batch).cases;
             expected.clear();
