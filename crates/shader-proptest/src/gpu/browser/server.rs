@@ -49,6 +49,15 @@ impl Response {
         }
     }
 
+    /// 204: nothing to send.
+    pub fn no_content() -> Response {
+        Response {
+            status: 204,
+            content_type: "text/plain",
+            body: Vec::new(),
+        }
+    }
+
     /// 404, naming `path`.
     pub fn not_found(path: &str) -> Response {
         Response {
@@ -138,7 +147,9 @@ fn accept(listener: &TcpListener, stopping: &AtomicBool, handler: &Arc<Handler>)
 /// Answers the requests of one connection until it closes, is idle too long or sends something
 /// that is not HTTP.
 fn serve(stream: TcpStream, handler: &Handler) {
-    if stream.set_read_timeout(Some(IDLE_CONNECTION)).is_err() {
+    // Without TCP_NODELAY a response of more than one segment can wait for a delayed
+    // acknowledgement (40 ms on Linux).
+    if stream.set_read_timeout(Some(IDLE_CONNECTION)).is_err() || stream.set_nodelay(true).is_err() {
         return;
     }
     let Ok(mut writer) = stream.try_clone() else {
@@ -180,18 +191,25 @@ fn read_request(reader: &mut impl BufRead) -> Option<Request> {
     Some(Request { method, path, body })
 }
 
-/// Writes `response` with its length; the connection stays open for the next request.
+/// Writes `response` with its length in one write; the connection stays open for the next
+/// request.
 fn write_response(writer: &mut impl Write, response: &Response) -> std::io::Result<()> {
-    let reason = if response.status == 200 { "OK" } else { "Error" };
-    write!(
-        writer,
+    let reason = match response.status {
+        200 => "OK",
+        204 => "No Content",
+        404 => "Not Found",
+        _ => "Error",
+    };
+    let head = format!(
         "HTTP/1.1 {} {reason}\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\n\r\n",
         response.status,
         response.content_type,
         response.body.len()
-    )?;
-    writer.write_all(&response.body)?;
-    writer.flush()
+    );
+    let mut message = Vec::with_capacity(head.len() + response.body.len());
+    message.extend_from_slice(head.as_bytes());
+    message.extend_from_slice(&response.body);
+    writer.write_all(&message)
 }
 
 #[cfg(test)]
