@@ -1,5 +1,7 @@
 //! Build script. Always: exports the GLSL, Slang and HLSL include directories to dependents' build
-//! scripts. With the `validate` feature:
+//! scripts. With the `wesl` feature: packages the WGSL modules as the WESL package
+//! `ray_footprint` (wesl's `PkgBuilder`, validated by wesl), which `src/lib.rs` exposes as
+//! `ray_footprint::wesl`. With the `validate` feature:
 //! - parses and validates every WGSL and GLSL module with naga, so that a broken module fails
 //!   `cargo build` with naga's message pointing at the file and line;
 //! - writes `layout_asserts.rs` (included by `src/abi.rs`): compile-time assertions that each shared
@@ -23,11 +25,28 @@ fn main() {
         "cargo:hlsl_include={}",
         root.join("shaders").join("hlsl").display()
     );
+    #[cfg(feature = "wesl")]
+    package_wesl(&root.join("shaders").join("wgsl"));
     #[cfg(feature = "validate")]
     {
         validate::all();
         layouts::write_asserts();
     }
+}
+
+/// Writes the WESL package of the WGSL modules in `wgsl_dir` (`OUT_DIR/ray_footprint.rs`), each
+/// module a submodule named by its stem, after wesl's own validation of every module (its
+/// `naga-ext` feature reads the f64 module's `lf` literals).
+#[cfg(feature = "wesl")]
+fn package_wesl(wgsl_dir: &std::path::Path) {
+    let package = wesl::PkgBuilder::new("ray_footprint")
+        .scan_root(wgsl_dir)
+        .unwrap_or_else(|error| panic!("packaging {}: {error}", wgsl_dir.display()))
+        .validate()
+        .unwrap_or_else(|error| panic!("wesl rejects a WGSL module:\n{error}"));
+    package
+        .build_artifact()
+        .unwrap_or_else(|error| panic!("writing the WESL package: {error}"));
 }
 
 /// The crate's `Module`: the list of modules, their stems, WGSL and GLSL sources and naga

@@ -40,6 +40,25 @@ mod readme_examples {}
 pub mod shaders;
 #[cfg(feature = "shader-proptest")]
 mod values;
+#[cfg(feature = "wesl")]
+::wesl::wesl_pkg!(
+    /// The WGSL modules as the WESL package `ray_footprint` (feature `wesl`), made by wesl's
+    /// `PkgBuilder` in the build script: add [`PACKAGE`](self::wesl::PACKAGE) to a wesl compiler and import the
+    /// modules' items by path, `import ray_footprint::ray_cone::{RfRayCone, rf_world_footprint};`.
+    /// Each module is a submodule named by its stem (`ray_cone`, `ray_diff`, `ray_diff_f64`,
+    /// `wireframe`); wesl links only what a shader imports.
+    ///
+    /// ```
+    /// let mut compiler = wesl::Wesl::new("shaders");
+    /// compiler.add_package(&ray_footprint::wesl::PACKAGE);
+    /// ```
+    ///
+    /// Its items (`PACKAGE`, `MODULE` and one submodule per shader module holding its source) are
+    /// written by wesl and carry no documentation of their own.
+    #[allow(missing_docs)]
+    pub wesl,
+    "ray_footprint.rs"
+);
 #[cfg(feature = "wgpu")]
 pub mod wgpu;
 pub mod wireframe;

@@ -201,11 +201,19 @@ fn package_modules(language: &str) -> String {
     format!("{language} modules in {}", directory.display())
 }
 
-/// A wgpu user: the WGSL prelude in a compute shader, validated by wgpu and run through its Vulkan
-/// backend on lavapipe, compared with the Rust mirror.
+/// A wgpu user: the same compute shader with the WGSL modules pasted in front
+/// (`ray_footprint::wgpu::shader_with_modules`) and with the WESL package imported by path (linked
+/// by wesl-rs in its build script), each validated by wgpu and run through its Vulkan backend on
+/// lavapipe, compared with the Rust mirror.
 #[test]
 fn wgpu_compute_shader_agrees_with_the_mirror() {
-    run_together("wgpu-compute", &["LODs computed by wgpu"]);
+    run_together(
+        "wgpu-compute",
+        &[
+            "WGSL modules pasted in front: 4096 cases",
+            "WESL package imported by path: 4096 cases",
+        ],
+    );
 }
 
 /// A Bevy user: `#import ray_footprint::ray_cone::...` through naga_oil, validated by naga.

@@ -5,82 +5,34 @@
 //! functions.
 
 use ray_footprint::shaders::Module;
+use shader_proptest::declarations::{declarations, Declaration};
 
-/// A section banner line, `// ---- Title ----`, as it is.
-fn banner(line: &str) -> Option<String> {
-    (line.starts_with("// ---- ") && line.ends_with(" ----")).then(|| line.to_string())
-}
-
-/// Names declared at the top level, in order: functions and constants, without prefixes, and
-/// section banners.
-fn shader_names(source: &str, language: &str) -> Vec<String> {
-    let mut names = Vec::new();
-    for line in source.lines().filter(|line| !line.starts_with(' ')) {
-        if let Some(banner) = banner(line) {
-            names.push(banner);
-            continue;
-        }
-        if line.starts_with("//") {
-            continue;
-        }
-        let words: Vec<&str> = line
-            .split(|c: char| c.is_whitespace() || c == '(' || c == ':')
-            .collect();
-        let name = match (language, words.as_slice()) {
-            ("wgsl", ["fn", name, ..]) => name,
-            ("wgsl", ["const", name, ..]) => name,
-            ("glsl", ["const", _, name, ..]) => name,
-            ("hlsl", ["static", "const", _, name, ..]) => name,
-            ("glsl" | "hlsl", [_, name, ..]) if name.starts_with("rf_") && line.trim_end().ends_with('{') => {
-                name
-            }
-            ("glsl" | "hlsl", [_, name, ..]) if name.starts_with("rf_") && line.ends_with(',') => name,
-            ("slang", ["public", "static", "const", _, name, ..]) => name,
-            ("slang", ["public", _, name, ..]) if name.starts_with("rf_") => name,
-            _ => continue,
-        };
-        names.push(
-            name.trim_start_matches("rf_")
-                .trim_start_matches("RF_")
-                .to_string(),
-        );
-    }
-    names
-}
-
-/// Structs declared at the top level of a shader module, in order.
-fn struct_names(source: &str) -> Vec<&str> {
-    source
-        .lines()
-        .filter_map(|line| {
-            let words: Vec<&str> = line.split_whitespace().collect();
-            match words.as_slice() {
-                ["struct", name, ..] | ["public", "struct", name, ..] => Some(*name),
-                _ => None,
-            }
+/// The functions, constants and section banners of a shader module or a Rust module, in order, as
+/// the Rust names: the functions and constants without their `rf_` / `RF_` prefixes, the banners
+/// as `// ---- Title ----`. A shader module's functions are those prefixed `rf_` (a module may
+/// keep helpers of its own); a Rust module's are all its top-level functions, public or not.
+fn names(source: &str, is_shader: bool) -> Vec<String> {
+    declarations(source)
+        .into_iter()
+        .filter_map(|declaration| match declaration {
+            Declaration::Section(title) => Some(format!("// ---- {title} ----")),
+            Declaration::Function(name) if is_shader => name.strip_prefix("rf_").map(str::to_string),
+            Declaration::Function(name) => Some(name.to_string()),
+            Declaration::Constant(name) => Some(name.trim_start_matches("RF_").to_string()),
+            Declaration::Struct(_) => None,
         })
         .collect()
 }
 
-/// Functions (public or not), public constants and section banners of a Rust module, in order.
-fn rust_names(source: &str) -> Vec<String> {
-    let mut names = Vec::new();
-    for line in source.lines() {
-        if let Some(banner) = banner(line) {
-            names.push(banner);
-            continue;
-        }
-        let words: Vec<&str> = line
-            .split(|c: char| c.is_whitespace() || c == '(' || c == ':' || c == '<')
-            .collect();
-        match words.as_slice() {
-            ["pub", "fn", name, ..] | ["fn", name, ..] | ["pub", "const", name, ..] => {
-                names.push(name.to_string())
-            }
-            _ => {}
-        }
-    }
-    names
+/// Structs declared at the top level of a shader module, in order.
+fn struct_names(source: &str) -> Vec<&str> {
+    declarations(source)
+        .into_iter()
+        .filter_map(|declaration| match declaration {
+            Declaration::Struct(name) => Some(name),
+            _ => None,
+        })
+        .collect()
 }
 
 fn rust_source(module: Module) -> String {
@@ -91,11 +43,11 @@ fn rust_source(module: Module) -> String {
 #[test]
 fn every_module_declares_the_same_names_in_the_same_order() {
     for &module in Module::ALL {
-        let rust = rust_names(&rust_source(module));
-        let wgsl = shader_names(module.wgsl(), "wgsl");
-        let glsl = shader_names(module.glsl(), "glsl");
-        let slang = shader_names(module.slang(), "slang");
-        let hlsl = shader_names(module.hlsl(), "hlsl");
+        let rust = names(&rust_source(module), false);
+        let wgsl = names(module.wgsl(), true);
+        let glsl = names(module.glsl(), true);
+        let slang = names(module.slang(), true);
+        let hlsl = names(module.hlsl(), true);
         assert_eq!(wgsl, rust, "{}: WGSL and Rust differ", module.stem());
         assert_eq!(glsl, rust, "{}: GLSL and Rust differ", module.stem());
         assert_eq!(slang, rust, "{}: Slang and Rust differ", module.stem());

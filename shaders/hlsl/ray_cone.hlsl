@@ -2,11 +2,12 @@
 //
 // HLSL 2021 library module (no entry points, no resources): #include "ray_cone.hlsl"; the include
 // guard makes repeats harmless. Compiles with glslang's HLSL front end (glslangValidator -D) and with
-// slangc. Twin of shaders/slang/ray_cone.slang, shaders/glsl/ray_cone.glsl, shaders/wgsl/ray_cone.wgsl
-// and the Rust mirror src/ray_cone.rs: same functions, same order, same order of operations. Formulas
-// and sources are documented in src/ray_cone.rs; "RTG Eq. N" is Ray Tracing Gems ch. 20
-// (Akenine-Moller et al. 2019), "JCGT 2021" is "Improved Shader and Texture Level of Detail Using Ray
-// Cones".
+// slangc. shaders/slang/ray_cone.slang is generated from this file by `cargo xtask codegen`.
+//
+// Twin of ray_cone.wgsl, ray_cone.glsl, ray_cone.slang and ray_cone.hlsl under shaders/ and of the
+// Rust mirror src/ray_cone.rs: same functions, same order, same order of operations. Formulas and
+// sources are documented in src/ray_cone.rs; "RTG Eq. N" is Ray Tracing Gems ch. 20 (Akenine-Moller
+// et al. 2019), "JCGT 2021" is "Improved Shader and Texture Level of Detail Using Ray Cones".
 //
 // width is the full footprint diameter and spread_angle the full cone angle, both signed. Normals and
 // directions are unit length; normals are used as the mesh stores them, facing either way. Matrices

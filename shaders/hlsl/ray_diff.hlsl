@@ -5,13 +5,14 @@
 //
 // HLSL 2021 library module without entry points or resources: #include "ray_diff.hlsl"; the include
 // guard makes a second include a no-op. Compiles with glslang's HLSL front end (glslangValidator -D)
-// and with slangc. The same functions, in the same order and evaluated in the same order of
-// operations, exist in shaders/slang/ray_diff.slang, shaders/glsl/ray_diff.glsl,
-// shaders/wgsl/ray_diff.wgsl and the Rust mirror src/ray_diff.rs, whose doc comments give the
-// derivations. Citations: "RTG Eq. N" is Ray Tracing Gems
-// ch. 20 (Akenine-Moller et al. 2019), "Igehy" the paper "Tracing Ray Differentials" (1999), "Quilez"
-// the article "ray differentials and texturing" (2015), "wireframe tutorial" nvpro's ray-tracing
-// tutorial 20 (its computeDifferentials and computeDerivative).
+// and with slangc. shaders/slang/ray_diff.slang is generated from this file by `cargo xtask codegen`.
+//
+// The same functions, in the same order and evaluated in the same order of operations, exist in
+// ray_diff.wgsl, ray_diff.glsl, ray_diff.slang and ray_diff.hlsl under shaders/ and in the Rust
+// mirror src/ray_diff.rs, whose doc comments give the derivations. Citations: "RTG Eq. N" is Ray
+// Tracing Gems ch. 20 (Akenine-Moller et al. 2019), "Igehy" the paper "Tracing Ray Differentials"
+// (1999), "Quilez" the article "ray differentials and texturing" (2015), "wireframe tutorial" nvpro's
+// ray-tracing tutorial 20 (its computeDifferentials and computeDerivative).
 //
 // Pixel (0, 0) is at the top left; dx is what changes over one pixel to the right, dy over one pixel
 // down. Normals and directions have unit length where nothing else is said. Matrices are float4x4:

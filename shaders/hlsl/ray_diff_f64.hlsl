@@ -1,17 +1,19 @@
-// ray-footprint: the barycentric re-intersection of ray_diff.hlsl in double precision, for scenes
-// whose coordinates are too large for f32 to resolve a pixel's step. Needs 64-bit floats in shaders
-// (Vulkan's shaderFloat64, D3D12's DoublePrecisionFloatShaderOps).
+// ray-footprint: the barycentric re-intersection of the ray_diff module in double precision, for
+// scenes whose coordinates are too large for f32 to resolve a pixel's step. Needs 64-bit floats in
+// shaders (Vulkan's shaderFloat64, D3D12's DoublePrecisionFloatShaderOps).
 //
 // HLSL 2021 library module without entry points or resources: #include "ray_diff_f64.hlsl"; the
 // include guard makes a second include a no-op. Compiles with glslang's HLSL front end
-// (glslangValidator -D) and with slangc. The same functions, in the same order and evaluated in the
-// same order of operations, exist in shaders/slang/ray_diff_f64.slang, shaders/glsl/ray_diff_f64.glsl,
-// shaders/wgsl/ray_diff_f64.wgsl and the Rust mirror src/ray_diff_f64.rs.
-// rf_intersect_triangle_plane, rf_barycentric_offsets and rf_barycentric_deltas of ray_diff.hlsl are
-// redone here in double, as the wireframe tutorial's computeDerivativeHighp does: they take and return
-// float, so each _f64 function replaces its float namesake as is. This module does not need
-// ray_diff.hlsl. Matrices are float4x4: m[r][c] is row r and column c, and columns are read element by
-// element (glslang cannot compile matrix swizzles).
+// (glslangValidator -D) and with slangc. shaders/slang/ray_diff_f64.slang is generated from this
+// file by `cargo xtask codegen`.
+//
+// The same functions, in the same order and evaluated in the same order of operations, exist in
+// ray_diff_f64.wgsl, ray_diff_f64.glsl, ray_diff_f64.slang and ray_diff_f64.hlsl under shaders/ and
+// in the Rust mirror src/ray_diff_f64.rs. rf_intersect_triangle_plane, rf_barycentric_offsets and
+// rf_barycentric_deltas of the ray_diff module are redone here in double, as the wireframe tutorial's
+// computeDerivativeHighp does: they take and return float, so each _f64 function replaces its float
+// namesake as is. This module does not need the ray_diff module. Matrices are float4x4: m[r][c] is row
+// r and column c, and columns are read element by element (glslang cannot compile matrix swizzles).
 
 #ifndef RAY_FOOTPRINT_RAY_DIFF_F64_HLSL
 #define RAY_FOOTPRINT_RAY_DIFF_F64_HLSL

@@ -3,9 +3,11 @@
 //
 // HLSL 2021 library module without entry points or resources: #include "wireframe.hlsl"; the include
 // guard makes a second include a no-op. Compiles with glslang's HLSL front end (glslangValidator -D)
-// and with slangc. The same functions, in the same order and evaluated in the same order of
-// operations, exist in shaders/slang/wireframe.slang, shaders/glsl/wireframe.glsl,
-// shaders/wgsl/wireframe.wgsl and the Rust mirror src/wireframe.rs, whose doc comments give the sources; "the wireframe tutorial" is NVIDIA's
+// and with slangc. shaders/slang/wireframe.slang is generated from this file by `cargo xtask codegen`.
+//
+// The same functions, in the same order and evaluated in the same order of operations, exist in
+// wireframe.wgsl, wireframe.glsl, wireframe.slang and wireframe.hlsl under shaders/ and in the Rust
+// mirror src/wireframe.rs, whose doc comments give the sources; "the wireframe tutorial" is NVIDIA's
 // ray-tracing tutorial "20 Wireframe", built on nvpro_core2/nvshaders/wireframe.h.slang.
 //
 // In a hit shader: t = rf_process_wireframe(rf_unpack_wireframe_settings(io), barycentrics, deltas),

@@ -1,7 +1,7 @@
 //! The agreement runner: every record's check ([`crate::Record::check`]) in every language, on one
 //! device, in module order.
 
-use crate::records;
+use crate::records::records;
 use ray_footprint::shaders::Module;
 use shader_proptest::{run_checks, Check, Error, Gpu, Language, Report, RunConfig};
 

@@ -1,6 +1,7 @@
-//! The degenerate-input table (the root crate's `src/degenerate.md`): for each function, the
-//! degenerate inputs its record documents ([`crate::Record::degenerate`]) and their outputs, run
-//! through the Rust mirror and through the shader function in every language.
+//! The degenerate inputs of each function: the rows its record documents
+//! ([`crate::Record::degenerate`]) and their outputs, run through the Rust mirror and through the
+//! shader function in every language; [`crate::pages::degenerate_table`] renders them
+//! into the root crate's `src/degenerate.md`.
 //!
 //! Three kinds of rows:
 //! - a documented value ([`value`]): the mirror returns exactly that value, each shader within the
@@ -11,12 +12,10 @@
 //!   leaves NaN and infinity handling to the implementation (and WGSL lets a compiler assume
 //!   neither occurs), so the shaders' outputs are printed, not asserted.
 
-use crate::record::{Function, Record};
-use crate::special::Perturb;
 use glam::{Mat4, Vec3};
 use ray_footprint::ray_cone::RayCone;
 use ray_footprint::shaders::Module;
-use shader_proptest::{evaluate, Args, Error, Gpu, Language, Value};
+use shader_proptest::{evaluate, Args, Error, Gpu, Language, Tolerance, Value};
 use std::fmt::Write as _;
 
 /// Not a number, for rows with NaN in or out.
@@ -122,124 +121,120 @@ fn bits(values: &[f32]) -> Vec<u32> {
     values.iter().map(|x| x.to_bits()).collect()
 }
 
-/// Appends `rows` of `function` to a markdown table.
-pub(crate) fn markdown<A>(function: &str, rows: &[Row<A>], out: &mut String) {
-    for row in rows {
-        let cell = |text: &str| text.replace('|', "\\|");
-        writeln!(
-            out,
-            "| `{function}` | {} | {} |",
-            cell(row.input),
-            cell(row.output)
-        )
-        .expect("a String");
-    }
+/// A function's degenerate rows and what running them needs: the function, its mirror and its
+/// tolerance (a record's, [`crate::Record::degenerate`]).
+pub(crate) struct RowsOf<'a, A, R> {
+    /// The module declaring the function.
+    pub module: Module,
+    /// The function's Rust name (the shader function is `rf_<function>`).
+    pub function: &'static str,
+    /// The documented rows.
+    pub rows: &'a [Row<A>],
+    /// The Rust mirror.
+    pub mirror: fn(A) -> R,
+    /// The tolerance of the shaders against the mirror.
+    pub tolerance: &'a Tolerance<A>,
 }
 
-fn name<A: Args + Perturb, R: Value>(record: &Record<A, R>) -> String {
-    format!("{}::{}", record.module().stem(), record.name())
-}
-
-/// Whether the shader's `got` is within the record's tolerance of `expected` for `args`.
-fn within<A: Args + Perturb, R: Value>(
-    record: &Record<A, R>,
-    args: &A,
-    got: &[f32],
-    expected: &[f32],
-) -> bool {
-    let mut bounds = Vec::new();
-    record.tolerance().bounds(args, expected, &mut bounds);
-    got.len() == expected.len()
-        && got
-            .iter()
-            .zip(expected)
-            .zip(&bounds)
-            .all(|((&g, &e), &bound)| same_float(g, e) || (g.is_finite() && (g - e).abs() <= bound))
-}
-
-/// Runs every row of `record` through the mirror: the rows it does not follow.
-pub(crate) fn cpu<A: Args + Perturb, R: Value>(record: &Record<A, R>) -> Vec<String> {
-    let mut failures = Vec::new();
-    for row in record.rows() {
-        let got = parts(record.mirror(row.args.clone()));
-        let (ok, expected) = match &row.expect {
-            Expect::Values(values) | Expect::Mirror(values) => (all_same(&got, values), values.clone()),
-            Expect::SameAs(other) => {
-                let expected = parts(record.mirror(other.clone()));
-                (bits(&got) == bits(&expected), expected)
-            }
-        };
-        println!("{:<45} {:<48} CPU {got:?}", name(record), row.input);
-        if !ok {
-            failures.push(format!(
-                "{} [{}]: CPU gave {got:?}, documented {expected:?}",
-                name(record),
-                row.input
-            ));
+impl<A: Args, R: Value> RowsOf<'_, A, R> {
+    /// Appends the rows to a markdown table.
+    pub fn markdown(&self, out: &mut String) {
+        for row in self.rows {
+            let cell = |text: &str| text.replace('|', "\\|");
+            writeln!(
+                out,
+                "| `{}` | {} | {} |",
+                self.function,
+                cell(row.input),
+                cell(row.output)
+            )
+            .expect("a String");
         }
     }
-    failures
-}
 
-/// Runs every row of `record` and every clamped input of its `SameAs` rows through the shader
-/// function in `language`, in one dispatch: the rows it does not follow.
-pub(crate) fn gpu<A: Args + Perturb, R: Value>(
-    record: &Record<A, R>,
-    gpu: &Gpu,
-    language: Language,
-) -> Result<Vec<String>, Error> {
-    let rows = record.rows();
-    let mut cases: Vec<A> = rows.iter().map(|row| row.args.clone()).collect();
-    cases.extend(rows.iter().filter_map(|row| match &row.expect {
-        Expect::SameAs(other) => Some(other.clone()),
-        _ => None,
-    }));
-    let function = format!("rf_{}", record.name());
-    let shader = record.module().shader(language);
-    let results: Vec<R> = evaluate(gpu, &shader, &function, &cases)?;
-    let outputs: Vec<Vec<f32>> = results.into_iter().map(parts).collect();
-    let mut references = outputs[rows.len()..].iter();
-    let mut failures = Vec::new();
-    for (row, got) in rows.iter().zip(&outputs) {
-        let mirror = parts(record.mirror(row.args.clone()));
-        let (ok, note) = match &row.expect {
-            Expect::Values(values) => (within(record, &row.args, got, values), ""),
-            Expect::SameAs(_) => {
-                let reference = references.next().expect("one output per reference");
-                (
-                    bits(got) == bits(reference) && within(record, &row.args, got, &mirror),
-                    "",
-                )
+    fn name(&self) -> String {
+        format!("{}::{}", self.module.stem(), self.function)
+    }
+
+    /// Whether the shader's `got` is within the tolerance of `expected` for `args`.
+    fn within(&self, args: &A, got: &[f32], expected: &[f32]) -> bool {
+        let mut bounds = Vec::new();
+        self.tolerance.bounds(args, expected, &mut bounds);
+        got.len() == expected.len()
+            && got
+                .iter()
+                .zip(expected)
+                .zip(&bounds)
+                .all(|((&g, &e), &bound)| same_float(g, e) || (g.is_finite() && (g - e).abs() <= bound))
+    }
+
+    /// Runs every row through the mirror: the rows it does not follow.
+    pub fn cpu(&self) -> Vec<String> {
+        let mut failures = Vec::new();
+        for row in self.rows {
+            let got = parts((self.mirror)(row.args.clone()));
+            let (ok, expected) = match &row.expect {
+                Expect::Values(values) | Expect::Mirror(values) => (all_same(&got, values), values.clone()),
+                Expect::SameAs(other) => {
+                    let expected = parts((self.mirror)(other.clone()));
+                    (bits(&got) == bits(&expected), expected)
+                }
+            };
+            println!("{:<45} {:<48} CPU {got:?}", self.name(), row.input);
+            if !ok {
+                failures.push(format!(
+                    "{} [{}]: CPU gave {got:?}, documented {expected:?}",
+                    self.name(),
+                    row.input
+                ));
             }
-            Expect::Mirror(_) => (true, " (unspecified, not asserted)"),
-        };
-        println!(
-            "{:<45} {:<48} {} {got:?}{note}",
-            name(record),
-            row.input,
-            language.name()
-        );
-        if !ok {
-            failures.push(format!(
-                "{} [{}] {}: got {got:?}, mirror {mirror:?}",
-                name(record),
+        }
+        failures
+    }
+
+    /// Runs every row and every clamped input of its `SameAs` rows through the shader function in
+    /// `language`, in one dispatch: the rows it does not follow.
+    pub fn gpu(&self, gpu: &Gpu, language: Language) -> Result<Vec<String>, Error> {
+        let rows = self.rows;
+        let mut cases: Vec<A> = rows.iter().map(|row| row.args.clone()).collect();
+        cases.extend(rows.iter().filter_map(|row| match &row.expect {
+            Expect::SameAs(other) => Some(other.clone()),
+            _ => None,
+        }));
+        let function = format!("rf_{}", self.function);
+        let shader = self.module.shader(language);
+        let results: Vec<R> = evaluate(gpu, &shader, &function, &cases)?;
+        let outputs: Vec<Vec<f32>> = results.into_iter().map(parts).collect();
+        let mut references = outputs[rows.len()..].iter();
+        let mut failures = Vec::new();
+        for (row, got) in rows.iter().zip(&outputs) {
+            let mirror = parts((self.mirror)(row.args.clone()));
+            let (ok, note) = match &row.expect {
+                Expect::Values(values) => (self.within(&row.args, got, values), ""),
+                Expect::SameAs(_) => {
+                    let reference = references.next().expect("one output per reference");
+                    (
+                        bits(got) == bits(reference) && self.within(&row.args, got, &mirror),
+                        "",
+                    )
+                }
+                Expect::Mirror(_) => (true, " (unspecified, not asserted)"),
+            };
+            println!(
+                "{:<45} {:<48} {} {got:?}{note}",
+                self.name(),
                 row.input,
                 language.name()
-            ));
+            );
+            if !ok {
+                failures.push(format!(
+                    "{} [{}] {}: got {got:?}, mirror {mirror:?}",
+                    self.name(),
+                    row.input,
+                    language.name()
+                ));
+            }
         }
+        Ok(failures)
     }
-    Ok(failures)
-}
-
-/// The whole table as markdown, one section per module, the functions in module order.
-pub fn render(records: &[Box<dyn Function>]) -> String {
-    let mut out = String::new();
-    for &module in Module::ALL {
-        writeln!(out, "\n### `{}`\n", module.stem()).expect("a String");
-        out.push_str("| function | degenerate input | documented output |\n| --- | --- | --- |\n");
-        for record in records.iter().filter(|record| record.module() == module) {
-            record.degenerate_markdown(&mut out);
-        }
-    }
-    out
 }

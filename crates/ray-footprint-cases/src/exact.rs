@@ -124,6 +124,13 @@ pub fn log_uniform(low: f64, high: f64) -> BoxedStrategy<f64> {
     (low..high).prop_map(|e| 10f64.powf(e)).boxed()
 }
 
+/// `sign * 10^e` for `e` uniform in `[low, high)` and either sign.
+pub fn signed_log(low: f64, high: f64) -> BoxedStrategy<f64> {
+    (log_uniform(low, high), any::<bool>())
+        .prop_map(|(m, negative)| if negative { -m } else { m })
+        .boxed()
+}
+
 /// A unit vector `tangent` perpendicular to the unit `normal`, turned about it by `angle` from a
 /// fixed one.
 pub fn tangent(normal: DVec3, angle: f64) -> DVec3 {

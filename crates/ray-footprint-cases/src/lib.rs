@@ -8,62 +8,52 @@
 //!
 //! - [`agreement::run_all_checks`]: the agreement checks in every language on one device (the
 //!   lab's `verify` and its GPU tests), and each record's special-value check ([`special`]);
-//! - [`degenerate`]: the degenerate-input table, rendered into the root crate's
-//!   `src/degenerate.md` and run on the CPU and the GPU;
+//! - [`degenerate`]: the degenerate rows, run on the CPU and the GPU; [`pages`] renders their
+//!   table into the root crate's `src/degenerate.md`;
 //! - [`fuzzing`]: the cargo-fuzz targets and the replay of their corpora;
 //! - [`reference`](mod@reference): each function against independent references (exact geometry, f64 finite
-//!   differences, closed forms computed another way, identities, peer originals), and the table of
-//!   the root crate's `src/proven.md`.
+//!   differences, closed forms computed another way, identities, peer originals); [`pages`]
+//!   renders the table of the root crate's `src/proven.md`.
+//!
+//! # One file per function
+//!
+//! Each public function's proof is one file, its case file
+//! `src/<module>/<section>/<function>.rs`: its record (`pub fn record()`), the interval enclosure its
+//! tolerance uses, its case strategy, its degenerate rows, its references and whatever else only it
+//! uses. `<section>` is the folder of the section whose banner (`// ---- Title ----`) precedes the
+//! function in the root crate's `src/<module>.rs`, named by a word of the title
+//! ([`sections::folders`]). What several functions of a section share lies in a file of the
+//! section's folder (`shared.rs`); what several sections share, in a file of `src/<module>/`
+//! (`bound.rs`, `strategy.rs`, ...); what several modules share, in this crate's own modules
+//! ([`exact`], [`strategy`], [`conditioning`], ...).
+//!
+//! No list names the case files. The build script reads the folders and writes, for each module, the
+//! module declarations of every file in them and the module's records in the module's order (a file
+//! named after a public function of the module is that function's case file); `src/<module>.rs`
+//! includes what it wrote. So adding a function adds its case file and edits nothing else here.
+//! `tests/records.rs` names a function without a case file ([`order::check_order`]) and a case
+//! file in another section's folder ([`sections::check_sections`]). `cargo fmt` does not see the case
+//! files (only the build script declares them): format them with `rustfmt`, as CI does.
 //!
 //! Not published: the product (`ray-footprint`) is the shader modules and the Rust mirror.
 
-/// `records![function, ...]`: the records the named functions make, boxed, in the order given;
-/// each section of a module lists its own functions with it.
-macro_rules! records {
-    ($($function:ident),+ $(,)?) => {
-        vec![$(Box::new($function()) as Box<dyn $crate::Function>,)+]
-    };
-}
-
 pub mod agreement;
+pub mod conditioning;
 pub mod degenerate;
 pub mod exact;
 pub mod fuzzing;
 pub mod order;
+pub mod pages;
 pub mod ray_cone;
 pub mod ray_diff;
 pub mod ray_diff_f64;
 mod record;
+mod records;
 pub mod reference;
+pub mod sections;
 pub mod special;
 pub mod strategy;
 pub mod wireframe;
 
 pub use record::{Function, IllConditioned, Promises, Record};
-
-use ray_footprint::shaders::Module;
-use std::sync::OnceLock;
-
-/// Every record, in module order (built once): each module gathers its sections' records.
-pub fn records() -> &'static [Box<dyn Function>] {
-    static RECORDS: OnceLock<Vec<Box<dyn Function>>> = OnceLock::new();
-    RECORDS.get_or_init(|| {
-        [
-            ray_cone::records(),
-            ray_diff::records(),
-            ray_diff_f64::records(),
-            wireframe::records(),
-        ]
-        .into_iter()
-        .flatten()
-        .collect()
-    })
-}
-
-/// The records of `module`, in the module's order.
-pub fn module_records(module: Module) -> impl Iterator<Item = &'static dyn Function> {
-    records()
-        .iter()
-        .filter(move |record| record.module() == module)
-        .map(AsRef::as_ref)
-}
+pub use records::{module_records, records, section_files};

@@ -30,7 +30,7 @@
 //! assert_eq!(record.check().function(), "rf_width_at");
 //! ```
 
-use crate::degenerate::Row;
+use crate::degenerate::{Row, RowsOf};
 use crate::fuzzing::draw::{Draw, Mode};
 use crate::reference::{reference_seed, Kind, Reference, ReferenceReport};
 use crate::special::Perturb;
@@ -256,19 +256,15 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         }
     }
 
-    /// The mirror's result for `args`.
-    pub fn mirror(&self, args: A) -> R {
-        (self.mirror)(args)
-    }
-
-    /// The tolerance.
-    pub fn tolerance(&self) -> &Tolerance<A> {
-        &self.tolerance
-    }
-
-    /// The degenerate rows.
-    pub fn rows(&self) -> &[Row<A>] {
-        &self.degenerate
+    /// The degenerate rows with the function, mirror and tolerance they run against.
+    fn rows_to_run(&self) -> RowsOf<'_, A, R> {
+        RowsOf {
+            module: self.module,
+            function: self.function,
+            rows: &self.degenerate,
+            mirror: self.mirror,
+            tolerance: &self.tolerance,
+        }
     }
 
     /// The agreement check: `rf_<function>` against the mirror on the record's cases where it is
@@ -385,15 +381,15 @@ impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
     }
 
     fn degenerate_markdown(&self, out: &mut String) {
-        crate::degenerate::markdown(self.function, &self.degenerate, out);
+        self.rows_to_run().markdown(out);
     }
 
     fn degenerate_cpu(&self) -> Vec<String> {
-        crate::degenerate::cpu(self)
+        self.rows_to_run().cpu()
     }
 
     fn degenerate_gpu(&self, gpu: &Gpu, language: Language) -> Result<Vec<String>, Error> {
-        crate::degenerate::gpu(self, gpu, language)
+        self.rows_to_run().gpu(gpu, language)
     }
 
     fn ill_conditioned_gpu(

@@ -19,7 +19,8 @@
 //! where the function approximates (a small-angle form, a first-order cone), the approximation's
 //! error bound. The runner ([`Reference::run`]) draws [`CASES`] cases from a fixed seed
 //! ([`DEFAULT_SEED`], or [`SEED_ENV`]), shrinks a failing case to a minimal one and reports the
-//! largest deviation as a share of its bound. [`render`] writes the table of `src/proven.md`.
+//! largest deviation as a share of its bound. [`crate::pages::proven_table`] writes the table of
+//! `src/proven.md`.
 //!
 //! ```
 //! use proptest::prelude::*;
@@ -51,13 +52,11 @@
 //! # let _ = U;
 //! ```
 
-use crate::record::Function;
 use proptest::strategy::BoxedStrategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use ray_footprint::shaders::Module;
-use shader_proptest::{Language, RunConfig};
 use std::cell::Cell;
-use std::fmt::{self, Debug, Write as _};
+use std::fmt::{self, Debug};
 
 /// Cases each reference runs (accepted cases: those its property does not leave out).
 pub const CASES: u32 = 10_000;
@@ -357,59 +356,6 @@ impl fmt::Display for ReferenceReport {
     }
 }
 
-/// The markdown table of `src/proven.md`: per function, its agreement checks (languages and cases
-/// per language), its references (kind and description), its degenerate rows and the bug a check
-/// or reference found, one section per module.
-pub fn render(records: &[Box<dyn Function>]) -> String {
-    let cases = RunConfig::default().cases;
-    let languages: Vec<&str> = Language::ALL.iter().map(|language| language.name()).collect();
-    let mut out = String::new();
-    for &module in Module::ALL {
-        let agreement = format!(
-            "{}: {} cases each{}",
-            languages.join(", "),
-            thousands(cases),
-            if module.needs_f64() {
-                " (needs `shaderFloat64`)"
-            } else {
-                ""
-            }
-        );
-        writeln!(out, "\n### `{}`\n", module.stem()).expect("a String");
-        out.push_str("| function | agreement | references | degenerate rows | found |\n| --- | --- | --- | --- | --- |\n");
-        for record in records.iter().filter(|record| record.module() == module) {
-            let references: Vec<String> = record
-                .references()
-                .iter()
-                .map(|(kind, description)| format!("{}: {description}", kind.name()))
-                .collect();
-            writeln!(
-                out,
-                "| `{}` | {agreement} | {} | {} | {} |",
-                record.name(),
-                references.join("<br>").replace('|', "\\|"),
-                record.degenerate_rows(),
-                record.found().unwrap_or("").replace('|', "\\|")
-            )
-            .expect("a String");
-        }
-    }
-    out
-}
-
-/// `n` with commas between groups of three digits.
-fn thousands(n: usize) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (index, digit) in digits.chars().enumerate() {
-        if index > 0 && (digits.len() - index).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(digit);
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -437,7 +383,5 @@ mod tests {
         let a = reference_seed(1, Module::RayCone, "width_at", 0);
         assert_ne!(a, reference_seed(1, Module::RayCone, "width_at", 1));
         assert_ne!(a, reference_seed(2, Module::RayCone, "width_at", 0));
-        assert_eq!(thousands(100_000), "100,000");
-        assert_eq!(thousands(999), "999");
     }
 }

@@ -6,9 +6,11 @@
 mod common;
 
 use common::assert_generated_block;
-use ray_footprint_cases::degenerate::render;
+use ray_footprint::shaders::Module;
 use ray_footprint_cases::order::check_order;
-use ray_footprint_cases::records;
+use ray_footprint_cases::pages::degenerate_table;
+use ray_footprint_cases::sections::check_sections;
+use ray_footprint_cases::{records, section_files};
 use std::path::Path;
 
 /// Every public function of every module has one record, in module order, whose checks call the
@@ -26,6 +28,23 @@ fn every_function_has_a_record_in_module_order() {
         assert_eq!(record.special_check().function(), calls);
     }
     println!("{} functions, each with one record", names.len());
+}
+
+/// Every section folder is named for its module's banner in its place, and every function's case
+/// file lies in the folder of the section whose banner precedes the function (in the root crate's
+/// `src/<module>.rs`); the first offender is named.
+#[test]
+fn every_case_file_is_in_its_sections_folder() {
+    for &module in Module::ALL {
+        let path = format!("{}/../../src/{}.rs", env!("CARGO_MANIFEST_DIR"), module.stem());
+        let mirror = std::fs::read_to_string(&path).unwrap_or_else(|error| panic!("{path}: {error}"));
+        check_sections(module, &mirror, section_files(module)).unwrap_or_else(|error| panic!("{error}"));
+        println!(
+            "{}: {} files in section folders",
+            module.stem(),
+            section_files(module).len()
+        );
+    }
 }
 
 /// Every record says how the fuzzer draws its arguments and documents degenerate rows; the first
@@ -47,7 +66,7 @@ const END: &str = "<!-- end of degenerate table -->";
 
 #[test]
 fn the_docs_show_the_degenerate_table() {
-    let block = format!("\n{}\n", render(records()));
+    let block = format!("\n{}\n", degenerate_table(records()));
     assert_generated_block(Path::new(DOC), START, END, &block, "src/degenerate.md");
 }
 

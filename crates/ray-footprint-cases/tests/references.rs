@@ -10,7 +10,8 @@
 mod common;
 
 use common::assert_generated_block;
-use ray_footprint_cases::reference::{render, run_seed, ReferenceReport, CASES, SEED_ENV};
+use ray_footprint_cases::pages::proven_table;
+use ray_footprint_cases::reference::{run_seed, ReferenceReport, CASES, SEED_ENV};
 use ray_footprint_cases::{records, Function};
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -103,6 +104,6 @@ const END: &str = "<!-- end of proven table -->";
 
 #[test]
 fn the_docs_show_how_each_function_is_proven() {
-    let block = format!("\n{}\n", render(records()));
+    let block = format!("\n{}\n", proven_table(records()));
     assert_generated_block(Path::new(DOC), START, END, &block, "src/proven.md");
 }

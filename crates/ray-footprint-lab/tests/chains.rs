@@ -44,6 +44,7 @@ fn chain_declarations(source: &str) -> Vec<Declaration<'_>> {
         .filter(|declaration| match declaration {
             Declaration::Struct(_) => true,
             Declaration::Function(name) => name.starts_with("chain_") || *name == "reflection_chain",
+            Declaration::Section(_) | Declaration::Constant(_) => false,
         })
         .collect()
 }

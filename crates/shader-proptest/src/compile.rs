@@ -1,51 +1,16 @@
 //! The shader compilers: naga (WGSL), glslang (`glslangValidator`, the compiler Vulkan's GLSL users
 //! use, and its HLSL front end) and `slangc` (the Slang compiler, also for HLSL input), each to
-//! SPIR-V words. One function per compiler and input language; the back ends ([`Language`]) choose
+//! SPIR-V words. One function per compiler and input language; the back ends ([`crate::Language`]) choose
 //! one for their kernels and layout probes, and any other shader a user builds with this crate goes
 //! through them too.
 
 mod cache;
 
-pub use crate::back::Language;
+pub use crate::tool::{CompileError, Target};
 pub use cache::SPIRV_CACHE_ENV;
-use std::fmt;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// The Vulkan version a shader targets, which fixes its SPIR-V version.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Target {
-    /// Vulkan 1.1: SPIR-V 1.3 (compute kernels).
-    Vulkan1_1,
-    /// Vulkan 1.2: SPIR-V 1.5 (ray tracing).
-    Vulkan1_2,
-}
-
-impl Target {
-    /// The `--target-env` that glslang and SPIRV-Tools take for this target.
-    pub(crate) fn glslang_env(self) -> &'static str {
-        match self {
-            Target::Vulkan1_1 => "vulkan1.1",
-            Target::Vulkan1_2 => "vulkan1.2",
-        }
-    }
-
-    fn spirv_version(self) -> (u8, u8) {
-        match self {
-            Target::Vulkan1_1 => (1, 3),
-            Target::Vulkan1_2 => (1, 5),
-        }
-    }
-
-    /// slangc's `-profile` for the SPIR-V version.
-    fn slang_profile(self) -> &'static str {
-        match self {
-            Target::Vulkan1_1 => "spirv_1_3",
-            Target::Vulkan1_2 => "spirv_1_5",
-        }
-    }
-}
 
 /// A shader stage: for GLSL named by the file extension glslang reads it from, for Slang by
 /// slangc's `-stage`.
@@ -82,32 +47,6 @@ impl Stage {
         }
     }
 }
-
-/// Why a shader produced no SPIR-V.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum CompileError {
-    /// The compiler could not be run (glslangValidator or slangc missing, a temporary file not
-    /// writable).
-    NotRun(String),
-    /// The source does not compile: the compiler's message, which names `source_path` and a line.
-    Failed {
-        /// The compiler's log.
-        log: String,
-        /// The name the compiler gave the source in its messages.
-        source_path: String,
-    },
-}
-
-impl fmt::Display for CompileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            CompileError::NotRun(message) => write!(f, "{message}"),
-            CompileError::Failed { log, .. } => write!(f, "{log}"),
-        }
-    }
-}
-
-impl std::error::Error for CompileError {}
 
 /// The naga capabilities every shader may use: naga's defaults plus `pack2x16float` and
 /// `unpack2x16float` (wgpu's downlevel flag `SHADER_F16_IN_F32`, on every Vulkan, Metal and DX12
@@ -351,34 +290,5 @@ fn compile_in_temporary_directory(
             source_path: input.display().to_string(),
         });
     }
-    tool_output(&program, &run, bytes, "", &input)
-}
-
-/// The SPIR-V words that the command-line tool `tool` wrote to its output file (`written`, as read
-/// back), or, when the tool failed, its log (`log_prefix`, then stdout and stderr) naming `input`.
-pub(crate) fn tool_output(
-    tool: &str,
-    run: &Output,
-    written: std::io::Result<Vec<u8>>,
-    log_prefix: &str,
-    input: &Path,
-) -> Result<Vec<u32>, CompileError> {
-    tool_succeeded(run, log_prefix, input)?;
-    let bytes = written.map_err(|e| CompileError::NotRun(format!("reading {tool}'s output: {e}")))?;
-    crate::spirv::from_bytes(&bytes).map_err(|e| CompileError::NotRun(format!("{tool}'s output: {e}")))
-}
-
-/// `Failed`, with the tool's output after `log_prefix`, where the tool `run` on `input` failed.
-pub(crate) fn tool_succeeded(run: &Output, log_prefix: &str, input: &Path) -> Result<(), CompileError> {
-    if run.status.success() {
-        return Ok(());
-    }
-    Err(CompileError::Failed {
-        log: format!(
-            "{log_prefix}{}{}",
-            String::from_utf8_lossy(&run.stdout),
-            String::from_utf8_lossy(&run.stderr)
-        ),
-        source_path: input.display().to_string(),
-    })
+    crate::spirv::tool_output(&program, &run, bytes, "", &input)
 }

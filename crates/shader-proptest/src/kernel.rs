@@ -10,14 +10,12 @@
 //! built from its words in order and stored as `m[c]`; where they take it row by row and `m[r]` is
 //! row r (Slang, HLSL), it is built from its elements in row order and stored as `transpose(m)[c]`.
 
-use crate::back::{Backend, KernelCall, KernelEcho, MatrixOrder};
+use crate::back::backend::{Backend, KernelCall, KernelEcho};
+use crate::back::spelling::MatrixOrder;
 use crate::layout::GlslPacking;
 use crate::shader::Shader;
 use crate::value::{ShaderType, StructType};
 use std::fmt::Write as _;
-
-/// Invocations per workgroup in every generated kernel.
-pub const WORKGROUP_SIZE: u32 = 64;
 
 /// The source of a kernel that calls `function` of `shader` once per case, with arguments of types
 /// `parameters`, returning `result`.

@@ -88,6 +88,7 @@ pub mod declarations;
 pub mod draw;
 pub mod interval;
 mod kernel;
+mod language;
 pub mod layout;
 mod reflect;
 mod shader;
@@ -97,14 +98,16 @@ pub mod spirv;
 #[cfg(feature = "gpu")]
 pub mod strategy;
 pub mod tolerance;
+mod tool;
 pub mod value;
 
 #[cfg(feature = "gpu")]
 mod gpu;
 
-pub use back::Language;
+pub use back::WORKGROUP_SIZE;
 pub use compile::CompileError;
-pub use kernel::{echo_kernel_source, kernel_source, WORKGROUP_SIZE};
+pub use kernel::{echo_kernel_source, kernel_source};
+pub use language::Language;
 pub use shader::{Feature, Shader};
 pub use tolerance::Tolerance;
 pub use value::{Args, ShaderType, StructType, Value};

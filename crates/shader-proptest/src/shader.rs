@@ -1,12 +1,11 @@
 //! Where the functions under test come from: a language, the source text in front of the generated
-//! kernel, and what compiling and running it needs.
+//! kernel, and what compiling and running it needs. Compiling a kernel and reading a struct's
+//! layout ([`Shader::compile_kernel`], [`Shader::struct_layout`]) ask the language's back end, in
+//! `back/mod.rs`.
 
-use crate::back::{Backend, Language};
-use crate::compile::{base_capabilities, CompileError};
-use crate::layout::{LayoutError, StructLayout};
-use std::collections::HashMap;
+use crate::compile::base_capabilities;
+use crate::language::Language;
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// An optional device feature a shader or a program may need.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -134,11 +133,6 @@ impl Shader {
         self.language
     }
 
-    /// The back end of the language.
-    pub(crate) fn backend(&self) -> &'static dyn Backend {
-        self.language.backend()
-    }
-
     /// The naga capabilities WGSL may use.
     pub(crate) fn naga_capabilities(&self) -> naga::valid::Capabilities {
         self.capabilities
@@ -157,34 +151,5 @@ impl Shader {
     /// The device features the code needs.
     pub fn features(&self) -> &[Feature] {
         &self.features
-    }
-
-    /// Compiles a whole compute shader written against this one (its source in front, as
-    /// [`crate::kernel_source`] writes) to SPIR-V for Vulkan 1.1. A kernel this process compiled
-    /// before, with the same language, capabilities and include directories, is not compiled again:
-    /// running slangc costs about a second, and an echo or a shrinking run compiles the same
-    /// kernel many times.
-    pub fn compile_kernel(&self, kernel: &str) -> Result<Vec<u32>, CompileError> {
-        static COMPILED: OnceLock<Mutex<HashMap<String, Vec<u32>>>> = OnceLock::new();
-        let key = format!(
-            "{:?} {:?} {:?}\n{kernel}",
-            self.language, self.capabilities, self.include_dirs
-        );
-        let compiled = COMPILED.get_or_init(Mutex::default);
-        if let Some(spirv) = compiled.lock().unwrap_or_else(PoisonError::into_inner).get(&key) {
-            return Ok(spirv.clone());
-        }
-        let spirv = self.backend().compile_kernel(self, kernel)?;
-        compiled
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .insert(key, spirv.clone());
-        Ok(spirv)
-    }
-
-    /// The layout of the struct `name` this source declares, as a storage buffer holds it: naga's
-    /// WGSL layout, or the element of a `std430` buffer compiled by glslang or slangc.
-    pub fn struct_layout(&self, name: &str) -> Result<StructLayout, LayoutError> {
-        self.backend().struct_layout(self, name)
     }
 }

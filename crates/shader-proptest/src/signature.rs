@@ -3,7 +3,8 @@
 //! terms before anything runs, instead of as an error inside the generated kernel or, where the
 //! language converts arguments implicitly (GLSL, Slang), as wrong results.
 
-use crate::back::Backend;
+use crate::back::spelling::Spelling;
+use crate::language::Language;
 use crate::value::ShaderType;
 
 /// The call a check makes: the shader function's name, and its argument and result types from
@@ -39,10 +40,10 @@ impl DeclaredType {
         }
     }
 
-    /// The type in `backend`'s language.
-    fn spelled(&self, backend: &dyn Backend) -> String {
+    /// The type as `spelling` names it.
+    fn spelled(&self, spelling: &Spelling) -> String {
         match self {
-            DeclaredType::Value(ty) => backend.type_name(*ty).to_string(),
+            DeclaredType::Value(ty) => spelling.type_name(*ty).to_string(),
             DeclaredType::Struct(name) | DeclaredType::Other(name) => name.clone(),
         }
     }
@@ -69,41 +70,47 @@ impl Signature {
             && self.result.takes(call.result)
     }
 
-    /// `function(d: float, r0: float, r1: float) -> float` in `backend`'s type names.
-    fn spelled(&self, backend: &dyn Backend, function: &str) -> String {
+    /// `function(d: float, r0: float, r1: float) -> float` in `spelling`'s type names.
+    fn spelled(&self, spelling: &Spelling, function: &str) -> String {
         let parameters: Vec<String> = self
             .parameters
             .iter()
             .map(|(name, ty)| match name.as_str() {
-                "" => ty.spelled(backend),
-                name => format!("{name}: {}", ty.spelled(backend)),
+                "" => ty.spelled(spelling),
+                name => format!("{name}: {}", ty.spelled(spelling)),
             })
             .collect();
         format!(
             "{function}({}) -> {}",
             parameters.join(", "),
-            self.result.spelled(backend)
+            self.result.spelled(spelling)
         )
     }
 }
 
 /// Why `call` cannot run against the functions of its name that the shader `declared`: `None`
 /// where one of them takes exactly the Rust types. The message names the Rust types, the types
-/// the kernel passes them as in `backend`'s language, and each declared signature; for example
+/// the kernel passes them as in `language` (spelled by `spelling`), and each declared signature;
+/// for example
 ///
 /// ```text
 /// the Rust types of `falloff` are not those of the WGSL function:
 ///   Rust:   (Vec3, f32, f32) -> f32, passed to WGSL as (vec3<f32>, f32, f32) -> f32
 ///   shader: falloff(d: f32, r0: f32, r1: f32) -> f32
 /// ```
-pub(crate) fn mismatch(backend: &dyn Backend, call: &Call<'_>, declared: &[Signature]) -> Option<String> {
+pub(crate) fn mismatch(
+    language: Language,
+    spelling: &Spelling,
+    call: &Call<'_>,
+    declared: &[Signature],
+) -> Option<String> {
     if declared.iter().any(|signature| signature.takes(call)) {
         return None;
     }
     let list = |names: Vec<&str>| names.join(", ");
     let rust = list(call.parameters.iter().map(|ty| ty.rust_name()).collect());
-    let passed = list(call.parameters.iter().map(|&ty| backend.type_name(ty)).collect());
-    let (function, language) = (call.function, backend.name());
+    let passed = list(call.parameters.iter().map(|&ty| spelling.type_name(ty)).collect());
+    let function = call.function;
     let mut message = match declared {
         [] => format!("the {language} source declares no function named `{function}`:"),
         _ => format!("the Rust types of `{function}` are not those of the {language} function:"),
@@ -111,12 +118,12 @@ pub(crate) fn mismatch(backend: &dyn Backend, call: &Call<'_>, declared: &[Signa
     message.push_str(&format!(
         "\n  Rust:   ({rust}) -> {}, passed to {language} as ({passed}) -> {}",
         call.result.rust_name(),
-        backend.type_name(call.result),
+        spelling.type_name(call.result),
     ));
     for signature in declared {
         message.push_str(&format!(
             "\n  shader: {}",
-            signature.spelled(backend, call.function)
+            signature.spelled(spelling, call.function)
         ));
     }
     Some(message)
@@ -125,7 +132,6 @@ pub(crate) fn mismatch(backend: &dyn Backend, call: &Call<'_>, declared: &[Signa
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::back::Language;
 
     const FALLOFF: Call<'static> = Call {
         function: "falloff",
@@ -141,7 +147,7 @@ mod tests {
     /// terms, with every overload the shader declares.
     #[test]
     fn a_mismatch_names_both_sides() {
-        let backend = Language::Glsl.backend();
+        let glsl = (Language::Glsl, Language::Glsl.backend().spelling());
         let scalars = Signature {
             parameters: vec![scalar("d"), scalar("r0"), scalar("r1")],
             result: DeclaredType::Value(ShaderType::F32),
@@ -154,15 +160,18 @@ mod tests {
             ],
             result: DeclaredType::Value(ShaderType::F32),
         };
-        assert_eq!(mismatch(backend, &FALLOFF, &[scalars.clone(), vector]), None);
-        let message = mismatch(backend, &FALLOFF, &[scalars]).expect("a mismatch");
+        assert_eq!(
+            mismatch(glsl.0, glsl.1, &FALLOFF, &[scalars.clone(), vector]),
+            None
+        );
+        let message = mismatch(glsl.0, glsl.1, &FALLOFF, &[scalars]).expect("a mismatch");
         assert_eq!(
             message,
             "the Rust types of `falloff` are not those of the GLSL function:\n  \
              Rust:   (Vec3, f32, f32) -> f32, passed to GLSL as (vec3, float, float) -> float\n  \
              shader: falloff(d: float, r0: float, r1: float) -> float"
         );
-        let missing = mismatch(backend, &FALLOFF, &[]).expect("a mismatch");
+        let missing = mismatch(glsl.0, glsl.1, &FALLOFF, &[]).expect("a mismatch");
         assert!(
             missing.starts_with("the GLSL source declares no function named `falloff`:"),
             "{missing}"

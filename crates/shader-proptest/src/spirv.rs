@@ -13,10 +13,10 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::compile::{tool_output, tool_succeeded, CompileError, Target};
+use crate::tool::{tool_succeeded, CompileError, Target};
 use std::fmt;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The first word of every SPIR-V module.
@@ -295,6 +295,20 @@ pub fn validate(words: &[u32], target: Target) -> Result<(), CompileError> {
         ))
     })?;
     tool_succeeded(&result, "spirv-val: ", &input)
+}
+
+/// The SPIR-V words that the command-line tool `tool` wrote to its output file (`written`, as read
+/// back), or, when the tool failed, its log (`log_prefix`, then stdout and stderr) naming `input`.
+pub(crate) fn tool_output(
+    tool: &str,
+    run: &Output,
+    written: std::io::Result<Vec<u8>>,
+    log_prefix: &str,
+    input: &Path,
+) -> Result<Vec<u32>, CompileError> {
+    tool_succeeded(run, log_prefix, input)?;
+    let bytes = written.map_err(|e| CompileError::NotRun(format!("reading {tool}'s output: {e}")))?;
+    from_bytes(&bytes).map_err(|e| CompileError::NotRun(format!("{tool}'s output: {e}")))
 }
 
 /// A path in the temporary directory that no other call of this process uses, for `job`'s files.

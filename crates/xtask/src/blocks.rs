@@ -10,6 +10,12 @@ fn begin_prefix() -> String {
 
 const END: &str = "// end of generated code";
 
+/// Whether `line` is the begin or the end marker of a block.
+pub fn is_marker(line: &str) -> bool {
+    let line = line.trim();
+    line.starts_with(&begin_prefix()) || line == END
+}
+
 /// The contents of one generated block.
 pub struct Block {
     /// The files its declarations come from, relative to the repository root.

@@ -13,7 +13,9 @@ pub enum Language {
 }
 
 impl Language {
-    pub const ALL: [Language; 4] = [Language::Wgsl, Language::Glsl, Language::Slang, Language::Hlsl];
+    /// The languages of the shader modules with generated blocks; the Slang modules are generated
+    /// whole from the HLSL ones (the renderer's Slang file has a block of its own).
+    pub const WRITTEN: [Language; 3] = [Language::Wgsl, Language::Glsl, Language::Hlsl];
 
     /// The directory under `shaders/` and the file extension.
     pub fn extension(self) -> &'static str {

@@ -9,7 +9,7 @@
 //! - Packed ray cones: `pack(unpack(p)) == p` for finite halves; infinite halves pack to `±F16_MAX`;
 //!   packing a finite cone never gives an infinite half, and re-packing its unpacked form is exact.
 
-use super::Words;
+use super::words::Words;
 use bytemuck::Pod;
 use ray_footprint::abi::{HitPayload, RayConePushConstants, WireframePushConstants};
 use ray_footprint::ray_cone::{pack_ray_cone, unpack_ray_cone, PackedRayCone, RayCone, F16_MAX};

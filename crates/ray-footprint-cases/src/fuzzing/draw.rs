@@ -14,8 +14,7 @@
 //!   is finite, and each function's documented clamps hold ([`crate::Record::range`],
 //!   [`crate::Record::promise`]).
 
-use super::Words;
-use crate::ray_diff::OffsetArgs;
+use super::words::Words;
 use crate::strategy::{HUGE, TINY};
 use glam::{Mat4, Quat, Vec2, Vec3};
 use ray_footprint::ray_cone::{PackedRayCone, RayCone};
@@ -244,7 +243,7 @@ impl<'a> Draw<'a> {
     /// The arguments of a barycentric re-intersection function (`barycentric_offsets` and
     /// `barycentric_deltas`, f32 and f64): world-to-object matrix, world ray origin, three vertices,
     /// two unit neighbour directions and the hit's barycentrics.
-    pub fn reintersection(&mut self) -> OffsetArgs {
+    pub fn reintersection(&mut self) -> (Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3) {
         (
             self.world_to_object(),
             self.world_point(),

@@ -7,7 +7,7 @@
 //! every argument is finite); in the domain every output is finite and the record's promises hold.
 
 use super::draw::Mode;
-use crate::records;
+use crate::records::records;
 
 /// The `cpu_mirror` target.
 pub fn cpu_mirror(data: &[u8]) -> Result<(), String> {

@@ -7,9 +7,9 @@ use super::mirror::{ChainArgs, ChainCamera, ChainLeg};
 use super::{CHAIN_MAX_BOUNCES, CHAIN_ORTHOGRAPHIC, CHAIN_PINHOLE};
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone::{MAX_FOV_Y, MIN_COS, MIN_MAGNITUDE};
-use ray_footprint_cases::ray_diff::enclosure::{
-    eye_ray_direction_derivatives, reflected_direction, transferred_origin,
-};
+use ray_footprint_cases::ray_diff::camera::eye_ray_diff::eye_ray_direction_derivatives;
+use ray_footprint_cases::ray_diff::reflection::reflect_ray_diff::reflected_direction;
+use ray_footprint_cases::ray_diff::transfer::transfer::transferred_origin;
 use shader_proptest::interval::{interval3, Interval, Interval3, IntervalVec};
 
 /// A ray of the chain in intervals: the cone, and the differential's origin and direction changes

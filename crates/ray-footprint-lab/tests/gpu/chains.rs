@@ -54,17 +54,8 @@ fn chains_agree(language: Language) {
     }
 }
 
-#[test]
-fn reflection_chain_wgsl() {
-    chains_agree(Language::Wgsl);
-}
-
-#[test]
-fn reflection_chain_glsl() {
-    chains_agree(Language::Glsl);
-}
-
-#[test]
-fn reflection_chain_slang() {
-    chains_agree(Language::Slang);
-}
+language_tests!(chains_agree:
+    reflection_chain_wgsl => Wgsl,
+    reflection_chain_glsl => Glsl,
+    reflection_chain_slang => Slang,
+);

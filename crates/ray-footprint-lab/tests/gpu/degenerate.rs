@@ -21,27 +21,10 @@ fn gpu_follows_the_table(language: Language) {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-#[test]
-fn wgsl_follows_the_table() {
-    gpu_follows_the_table(Language::Wgsl);
-}
-
-#[test]
-fn glsl_follows_the_table() {
-    gpu_follows_the_table(Language::Glsl);
-}
-
-#[test]
-fn slang_follows_the_table() {
-    gpu_follows_the_table(Language::Slang);
-}
-
-#[test]
-fn hlsl_glslang_follows_the_table() {
-    gpu_follows_the_table(Language::HlslGlslang);
-}
-
-#[test]
-fn hlsl_slangc_follows_the_table() {
-    gpu_follows_the_table(Language::HlslSlangc);
-}
+language_tests!(gpu_follows_the_table:
+    wgsl_follows_the_table => Wgsl,
+    glsl_follows_the_table => Glsl,
+    slang_follows_the_table => Slang,
+    hlsl_glslang_follows_the_table => HlslGlslang,
+    hlsl_slangc_follows_the_table => HlslSlangc,
+);

@@ -15,6 +15,45 @@
 //! - [`quality`]: the quality lab at a tiny size (finite metrics, a ground truth that scores
 //!   itself perfectly).
 
+/// Declares, where it is used, one `#[test]` per shader module and language, named
+/// `<module>_<language>` (`ray_cone_wgsl` ... `ray_diff_f64_hlsl_slangc`), that calls
+/// `$runner(module, language)`: a suite writes its test once, as wgpu's `#[gpu_test]` carries a
+/// test once, and this table names every pair.
+macro_rules! module_and_language_tests {
+    ($runner:ident) => {
+        module_and_language_tests!($runner, RayCone: ray_cone_wgsl => Wgsl, ray_cone_glsl => Glsl,
+            ray_cone_slang => Slang, ray_cone_hlsl_glslang => HlslGlslang, ray_cone_hlsl_slangc => HlslSlangc);
+        module_and_language_tests!($runner, Wireframe: wireframe_wgsl => Wgsl, wireframe_glsl => Glsl,
+            wireframe_slang => Slang, wireframe_hlsl_glslang => HlslGlslang, wireframe_hlsl_slangc => HlslSlangc);
+        module_and_language_tests!($runner, RayDiff: ray_diff_wgsl => Wgsl, ray_diff_glsl => Glsl,
+            ray_diff_slang => Slang, ray_diff_hlsl_glslang => HlslGlslang, ray_diff_hlsl_slangc => HlslSlangc);
+        module_and_language_tests!($runner, RayDiffF64: ray_diff_f64_wgsl => Wgsl, ray_diff_f64_glsl => Glsl,
+            ray_diff_f64_slang => Slang, ray_diff_f64_hlsl_glslang => HlslGlslang,
+            ray_diff_f64_hlsl_slangc => HlslSlangc);
+    };
+    ($runner:ident, $module:ident: $($test:ident => $language:ident),+) => {
+        $(
+            #[test]
+            fn $test() {
+                $runner(ray_footprint::shaders::Module::$module, shader_proptest::Language::$language);
+            }
+        )+
+    };
+}
+
+/// Declares, where it is used, one `#[test]` per `test => Language` pair, that calls
+/// `$runner(language)`.
+macro_rules! language_tests {
+    ($runner:ident: $($test:ident => $language:ident),+ $(,)?) => {
+        $(
+            #[test]
+            fn $test() {
+                $runner(shader_proptest::Language::$language);
+            }
+        )+
+    };
+}
+
 mod abi;
 mod agreement;
 mod chains;

@@ -20,7 +20,9 @@ use ray_footprint::ray_diff::{Derivatives2, Derivatives3, NeighbourDirections, R
 use ray_footprint::shaders::{GLSL_INCLUDE_DIR, HLSL_INCLUDE_DIR, SLANG_INCLUDE_DIR};
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_cases as suite;
-use ray_footprint_cases::ray_cone::{area_corners, curvature_spread_angle_error, hit_curvature_error};
+use ray_footprint_cases::ray_cone::curvature::curvature_spread_angle::curvature_spread_angle_error;
+use ray_footprint_cases::ray_cone::curvature::isotropic_curvature::hit_curvature_error;
+use ray_footprint_cases::ray_cone::footprint::shared::area_corners;
 use ray_footprint_lab::rt::abi::{
     self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
 };
@@ -549,7 +551,7 @@ fn check_pixel(scene: &Scene, inputs: &Inputs, pixel: Vec2, record: &RtPixelReco
     let push = &inputs.push;
     // The primary cone: the push constant's spread narrowed by the ray's cosine to the view axis.
     let cone_args = (push.cone.pixel_spread_angle, record.direction, push.forward);
-    let cone_check = suite::ray_cone::pinhole_ray_cone_for_ray().check();
+    let cone_check = suite::ray_cone::cameras::pinhole_ray_cone_for_ray::record().check();
     compare_with(
         stats,
         "primary cone",
@@ -616,7 +618,7 @@ fn compare_lod(
     compare_with(
         stats,
         value,
-        suite::ray_diff::lod_isotropic().check(),
+        suite::ray_diff::derivatives::lod_isotropic::record().check(),
         ((texels,), lod),
         record,
     );
@@ -637,17 +639,16 @@ fn check_differentials(
     record: &RtPixelRecord,
     stats: &mut Stats,
 ) {
-    use suite::ray_diff as checks;
     let (d, push, uniforms) = (&record.diff, &inputs.push, &inputs.uniforms);
     let size = Vec2::new(push.width as f32, push.height as f32);
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let matrices = (pixel, size, uniforms.view_inv, uniforms.proj_inv);
     let eye = RayDiff::new(Vec3::ZERO, Vec3::ZERO, d.eye_d_direction_dx, d.eye_d_direction_dy);
-    let eye_check = checks::eye_ray_diff_from_matrices().check();
+    let eye_check = suite::ray_diff::camera::eye_ray_diff_from_matrices::record().check();
     compare_with(stats, "eye ray diff", eye_check, (matrices, eye), record);
     let barycentric = Derivatives2::new(d.barycentric_dx, d.barycentric_dy);
     let transfer_args = (eye, record.direction, record.t, p[0], p[1], p[2]);
-    let barycentric_check = checks::barycentric_derivatives().check();
+    let barycentric_check = suite::ray_diff::derivatives::barycentric_derivatives::record().check();
     compare_with(
         stats,
         "barycentric derivs",
@@ -660,7 +661,7 @@ fn check_differentials(
     compare_with(
         stats,
         "uv gradients",
-        checks::texture_derivatives().check(),
+        suite::ray_diff::derivatives::texture_derivatives::record().check(),
         (uv_args, gradients),
         record,
     );
@@ -672,7 +673,6 @@ fn check_differentials(
 /// each against the mirror on the shader's inputs. The scene's instances have identity
 /// transforms, so the world-to-object matrix is the identity; primary rays start at the eye.
 fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelRecord, stats: &mut Stats) {
-    use suite::ray_diff as checks;
     let (d, push) = (&record.diff, &inputs.push);
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let next = NeighbourDirections {
@@ -694,13 +694,13 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
     compare_with(
         stats,
         "bary offsets",
-        checks::barycentric_offsets().check(),
+        suite::ray_diff::reintersection::barycentric_offsets::record().check(),
         (offset_args, offsets),
         record,
     );
     let gradients = Derivatives2::new(d.offset_uv_dx, d.offset_uv_dy);
     let uv_args = (offsets, uv[0], uv[1], uv[2]);
-    let uv_check = checks::uv_gradients_from_offsets().check();
+    let uv_check = suite::ray_diff::reintersection::uv_gradients_from_offsets::record().check();
     compare_with(
         stats,
         "offset uv gradients",
@@ -712,12 +712,12 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
     compare_with(
         stats,
         "bary deltas",
-        checks::barycentric_deltas().check(),
+        suite::ray_diff::reintersection::barycentric_deltas::record().check(),
         (offset_args, d.deltas),
         record,
     );
     let settings = inputs.uniforms.wireframe.settings.unpack();
-    let coverage_check = suite::wireframe::process_wireframe().check();
+    let coverage_check = suite::wireframe::coverage::process_wireframe::record().check();
     compare_with(
         stats,
         "coverage",
@@ -726,7 +726,7 @@ fn check_reintersection(tri: &[Vertex; 3], inputs: &Inputs, record: &RtPixelReco
         record,
     );
     let cone_args = (record.footprint, p[0], p[1], p[2]);
-    let cone_check = checks::cone_barycentric_deltas().check();
+    let cone_check = suite::ray_diff::cones::cone_barycentric_deltas::record().check();
     compare_with(
         stats,
         "cone deltas",
@@ -843,7 +843,7 @@ fn check_values(tri: &[Vertex; 3], push: &RtPushConstants, record: &RtPixelRecor
     let size = Vec2::splat(push.texture_size);
     let lod_args = (r.base_lod, r.width, size, n, d);
     let lod = rc::texture_lod(r.base_lod, r.width, size, n, d);
-    let lod_check = suite::ray_cone::texture_lod().check();
+    let lod_check = suite::ray_cone::footprint::texture_lod::record().check();
     stats.compare("lod", r.lod, lod, lod_check.bounds(&lod_args, &lod)[0], r);
 
     // texture_gradient of footprint * density: two correctly rounded products, the same on both
@@ -895,7 +895,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     match material {
         Material::Mirror { roughness } => {
             // roughness_spread_angle: the suite's own tolerance, on the mesh's roughness.
-            let check = suite::ray_cone::roughness_spread_angle().check();
+            let check = suite::ray_cone::refraction::roughness_spread_angle::record().check();
             compare_with(
                 stats,
                 "roughness spread",
@@ -928,7 +928,7 @@ fn check_material_values(material: Material, tri: &[Vertex; 3], record: &RtPixel
     let (p, uv) = (tri.map(|v| v.position), tri.map(|v| v.uv));
     let gradient_args = (r.width, r.direction, p[0], p[1], p[2], uv[0], uv[1], uv[2]);
     let gradients = Derivatives2::new(r.cone_uv_dx, r.cone_uv_dy);
-    let gradient_check = suite::ray_diff::anisotropic_cone_gradients().check();
+    let gradient_check = suite::ray_diff::cones::anisotropic_cone_gradients::record().check();
     compare_with(
         stats,
         "cone uv gradients",
@@ -986,12 +986,12 @@ fn check_refraction(index_of_refraction: f32, record: &RtPixelRecord, stats: &mu
     };
     assert!(r.total_internal_reflection <= 1, "a flag: {r:?}");
     stats.total_internal_reflections += r.total_internal_reflection as usize;
-    let check = suite::ray_cone::refract_ray_cone().check();
+    let check = suite::ray_cone::refraction::refract_ray_cone::record().check();
     compare_with(stats, "refracted cone", check, (args, refracted), r);
     // rf_refract_sagittal_cone of the same cone, with the curvature times |width| (one correctly
     // rounded product), with the suite's own tolerance.
     let sagittal_args = (at_hit, n, d, r.curvature * r.width.abs(), r.eta);
-    let sagittal_check = suite::ray_cone::refract_sagittal_cone().check();
+    let sagittal_check = suite::ray_cone::refraction::refract_sagittal_cone::record().check();
     compare_with(
         stats,
         "sagittal section",

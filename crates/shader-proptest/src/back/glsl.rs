@@ -2,11 +2,11 @@
 //! kernels put the [`Shader`]'s source (for example an `#include`) after `#version 460`, exactly
 //! as users do, and layouts are read from the SPIR-V glslang writes for a probe block.
 
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder, Spelling};
+use super::backend::{Backend, KernelCall, KernelEcho, WORKGROUP_SIZE};
+use super::spelling::{MatrixOrder, Spelling};
 #[cfg(feature = "gpu")]
 use crate::compile::glslang;
 use crate::compile::{compile_glsl, CompileError, Stage, Target};
-use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
 use crate::reflect;
 use crate::shader::Shader;
@@ -31,10 +31,6 @@ const SPELLING: Spelling = Spelling {
 };
 
 impl Backend for Glsl {
-    fn name(&self) -> &'static str {
-        "GLSL"
-    }
-
     fn spelling(&self) -> &'static Spelling {
         &SPELLING
     }

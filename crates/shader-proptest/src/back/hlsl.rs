@@ -12,10 +12,11 @@
 //! Vulkan, `std430` (storage buffers and push constants alike): HLSL has no way to choose another
 //! in the source, so an echo kernel ignores its packing, as WGSL's does.
 
+use super::backend::{Backend, KernelCall, KernelEcho};
 #[cfg(feature = "gpu")]
 use super::slang::slangc_declared_signatures;
 use super::slang::{self, structured_call_kernel, structured_echo_kernel};
-use super::{Backend, KernelCall, KernelEcho, Spelling};
+use super::spelling::Spelling;
 use crate::compile::{compile_hlsl_with_glslang, compile_hlsl_with_slangc, CompileError, Stage, Target};
 use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
 use crate::reflect;
@@ -39,13 +40,6 @@ pub(crate) enum HlslCompiler {
 pub(crate) struct Hlsl(pub HlslCompiler);
 
 impl Backend for Hlsl {
-    fn name(&self) -> &'static str {
-        match self.0 {
-            HlslCompiler::Glslang => "HLSL (glslang)",
-            HlslCompiler::Slangc => "HLSL (slangc)",
-        }
-    }
-
     /// Types, bit casts and matrix order are spelled as in Slang, which reads HLSL's.
     fn spelling(&self) -> &'static Spelling {
         &slang::SPELLING

@@ -5,9 +5,9 @@
 //! Slang's matrix constructors take a matrix row by row and `m[r]` is row r, so kernels build a
 //! matrix from its elements in row order and store `transpose(m)[c]` ([`MatrixOrder::Rows`]).
 
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder, Spelling};
+use super::backend::{Backend, KernelCall, KernelEcho, WORKGROUP_SIZE};
+use super::spelling::{MatrixOrder, Spelling};
 use crate::compile::{compile_slang, CompileError, Stage, Target};
-use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{is_identifier, line_after, probe_error, GlslPacking, LayoutError, StructLayout};
 use crate::reflect;
 use crate::shader::Shader;
@@ -33,10 +33,6 @@ pub(super) const SPELLING: Spelling = Spelling {
 };
 
 impl Backend for Slang {
-    fn name(&self) -> &'static str {
-        "Slang"
-    }
-
     fn spelling(&self) -> &'static Spelling {
         &SPELLING
     }

@@ -1,9 +1,9 @@
 //! WGSL, compiled by naga: kernels are the module's text followed by the wrapper, and layouts are
 //! naga's (the WGSL rules for host-shareable memory, which storage buffers and push constants use).
 
-use super::{Backend, KernelCall, KernelEcho, MatrixOrder, Spelling};
+use super::backend::{Backend, KernelCall, KernelEcho, WORKGROUP_SIZE};
+use super::spelling::{MatrixOrder, Spelling};
 use crate::compile::{compile_wgsl, CompileError, Target};
-use crate::kernel::WORKGROUP_SIZE;
 use crate::layout::{FieldLayout, GlslPacking, LayoutError, StructLayout};
 use crate::shader::Shader;
 #[cfg(feature = "gpu")]
@@ -36,10 +36,6 @@ const SPELLING: Spelling = Spelling {
 };
 
 impl Backend for Wgsl {
-    fn name(&self) -> &'static str {
-        "WGSL"
-    }
-
     fn spelling(&self) -> &'static Spelling {
         &SPELLING
     }

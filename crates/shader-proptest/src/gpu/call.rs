@@ -3,7 +3,7 @@
 //! function's signature held against the Rust types; each fails with an error that says which,
 //! before any case runs.
 
-use super::device::Error;
+use super::error::Error;
 use crate::layout::compare;
 use crate::shader::Shader;
 use crate::signature::{mismatch, Call};
@@ -19,14 +19,17 @@ pub(crate) fn compile_call(shader: &Shader, call: &Call<'_>, kernel: &str) -> Re
     match shader.compile_kernel(kernel) {
         Ok(spirv) => {
             let called = backend.called_signature(&spirv, call.function);
-            match called.and_then(|signature| mismatch(backend, call, &[signature])) {
+            match called
+                .and_then(|signature| mismatch(shader.language(), backend.spelling(), call, &[signature]))
+            {
                 Some(message) => Err(Error::Signature(message)),
                 None => Ok(spirv),
             }
         }
         Err(error) => {
             let declared = backend.declared_signatures(shader, call.function);
-            let explained = declared.and_then(|declared| mismatch(backend, call, &declared));
+            let explained = declared
+                .and_then(|declared| mismatch(shader.language(), backend.spelling(), call, &declared));
             Err(explained.map_or_else(
                 || Error::Compile(format!("{error}\n--- kernel ---\n{kernel}")),
                 Error::Signature,

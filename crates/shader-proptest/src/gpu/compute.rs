@@ -3,11 +3,12 @@
 //! The buffers and their descriptor set are made by the first dispatch and reused by the next
 //! ones while they are large enough.
 
-use super::device::{Error, Gpu};
-use super::lock;
+use super::device::Gpu;
+use super::error::Error;
+use super::lock::lock;
 use super::phases::{Phase, PhaseTimes};
 use super::resources::{barrier_shader_writes_to_host, Buffer, Location, Owner};
-use crate::kernel::WORKGROUP_SIZE;
+use crate::back::WORKGROUP_SIZE;
 use ash::vk;
 use std::sync::Mutex;
 use std::time::Instant;

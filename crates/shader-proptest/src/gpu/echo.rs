@@ -2,7 +2,8 @@
 //! a shader, from a storage buffer and from push constants, and must come back bit for bit.
 
 use super::compute::ComputeKernel;
-use super::device::{Error, Gpu};
+use super::device::Gpu;
+use super::error::Error;
 use crate::kernel::echo_kernel_source;
 use crate::layout::GlslPacking;
 use crate::shader::Shader;

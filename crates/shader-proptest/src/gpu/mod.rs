@@ -8,6 +8,8 @@ mod check;
 mod compute;
 mod device;
 mod echo;
+mod error;
+mod lock;
 mod phases;
 mod resources;
 mod submission;
@@ -27,16 +29,11 @@ pub use check::{
     RunConfig, MAX_VACUOUS, SEED_ENV,
 };
 pub use compute::ComputeKernel;
-pub use device::{vulkan, DeviceRequest, Error, Gpu, DEVICE_ENV};
+pub use device::{DeviceRequest, Gpu, DEVICE_ENV};
 pub use echo::echo;
+pub use error::{vulkan, Error};
 pub use phases::{Phase, PhaseTimes};
 pub use resources::{barrier_shader_writes, barrier_shader_writes_to_host, Buffer, Location, Object, Owner};
 pub use suite::run_checks;
 #[cfg(feature = "wgpu")]
 pub use wgpu_device::WgpuDevice;
-
-/// Locks `mutex`, whose data stays valid if a holder panicked: the device's validation messages
-/// (a panic elsewhere must not lose them), its submitters and queues, and a kernel's buffers.
-pub(crate) fn lock<T>(mutex: &std::sync::Mutex<T>) -> std::sync::MutexGuard<'_, T> {
-    mutex.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
-}

@@ -3,7 +3,8 @@
 //! addresses where the device has them), mip-mapped RGBA8 textures, and one-time command
 //! submission that reports validation messages.
 
-use super::device::{vulkan, Error, Gpu};
+use super::device::Gpu;
+use super::error::{vulkan, Error};
 use crate::shader::Feature;
 use ash::vk;
 

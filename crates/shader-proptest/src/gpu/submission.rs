@@ -2,8 +2,8 @@
 //! with its pool and fence, that threads take one each, over the queues the device was created
 //! with.
 
-use super::device::{vulkan, Error};
-use super::lock;
+use super::error::{vulkan, Error};
+use super::lock::lock;
 use ash::vk;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, MutexGuard};

@@ -9,7 +9,8 @@
 //! their shaders ([`Check::run_prepared`]); two such groups run at once, and report in order.
 
 use super::check::{Check, PreparedCheck, Report, RunConfig};
-use super::device::{Error, Gpu};
+use super::device::Gpu;
+use super::error::Error;
 use super::phases::Phase;
 use crate::shader::Shader;
 use std::collections::{BTreeMap, VecDeque};

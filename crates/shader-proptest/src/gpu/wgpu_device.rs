@@ -10,7 +10,8 @@
 
 use super::check::{FunctionCheck, PreparedCheck, Report, RunConfig};
 use super::compute::{Dispatch, KernelRun};
-use super::device::{Error, DEVICE_ENV};
+use super::device::DEVICE_ENV;
+use super::error::Error;
 use super::phases::{Phase, PhaseTimes};
 use super::wgsl_device::WgslDevice;
 use crate::shader::{Feature, Shader};

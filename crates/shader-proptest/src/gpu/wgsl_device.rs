@@ -4,7 +4,7 @@
 
 use super::check::{FunctionCheck, PreparedCheck};
 use super::compute::Dispatch;
-use super::device::Error;
+use super::error::Error;
 use super::phases::{Phase, PhaseTimes};
 use crate::shader::{Feature, Shader};
 use crate::value::{Args, Value};

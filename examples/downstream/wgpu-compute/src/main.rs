@@ -1,46 +1,32 @@
-//! A wgpu user's compute shader: the WGSL ray-cone module pasted in front of the user's kernel,
-//! validated by wgpu's own shader validation and run through wgpu's Vulkan backend (lavapipe unless
-//! `SHADER_PROPTEST_DEVICE` names another adapter), checked against the Rust mirror.
+//! A wgpu user's compute shader, the same kernel with ray-footprint's modules brought in two ways:
+//! the WGSL modules pasted in front (`ray_footprint::wgpu::shader_with_modules`, where
+//! `include_wgsl!` would be), and the WESL package imported by path (`src/shaders/lod.wesl`,
+//! linked by wesl-rs in `build.rs`). Each is validated by wgpu, run through its Vulkan backend
+//! (lavapipe unless `SHADER_PROPTEST_DEVICE` names another adapter) and checked against the Rust
+//! mirror.
 
 use glam::{Vec2, Vec3};
 use ray_footprint::ray_cone;
-use ray_footprint::shaders::{wgsl_prelude, Module};
+use ray_footprint::shaders::Module;
 use std::process::ExitCode;
 
-/// The user's kernel: texture LOD of a pinhole camera's ray cone hitting a ground plane.
-const KERNEL: &str = "
-@group(0) @binding(0) var<storage, read> cases: array<vec4<f32>>; // t, fov_y, image height, |cos|
-@group(0) @binding(1) var<storage, read_write> lods: array<f32>;
-
-@compute @workgroup_size(64)
-fn main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if id.x >= arrayLength(&lods) {
-        return;
-    }
-    let input = cases[id.x];
-    let cone = rf_pinhole_ray_cone(rf_pixel_spread_angle(input.y, input.z));
-    let direction = vec3<f32>(sqrt(1.0 - input.w * input.w), -input.w, 0.0);
-    lods[id.x] = rf_texture_lod(0.0, rf_width_at(cone, input.x), vec2<f32>(1024.0), vec3<f32>(0.0, 1.0, 0.0), direction);
-}
-";
-
-/// The same computation with the Rust mirror.
-fn mirror(case: [f32; 4]) -> f32 {
+/// The same computation with the Rust mirror: world footprint and texture LOD.
+fn mirror(case: [f32; 4]) -> [f32; 2] {
     let [t, fov_y, height, cos] = case;
     let cone = ray_cone::pinhole_ray_cone(ray_cone::pixel_spread_angle(fov_y, height));
     let direction = Vec3::new((1.0 - cos * cos).sqrt(), -cos, 0.0);
-    ray_cone::texture_lod(
-        0.0,
-        ray_cone::width_at(cone, t),
-        Vec2::splat(1024.0),
-        Vec3::Y,
-        direction,
-    )
+    let footprint = ray_cone::world_footprint(cone, t, Vec3::Y, direction);
+    let lod = ray_cone::texture_lod(0.0, ray_cone::width_at(cone, t), Vec2::splat(1024.0), Vec3::Y, direction);
+    [footprint, lod]
 }
 
-/// Largest allowed difference in mip levels. Vulkan allows `tan` an absolute error of 2^-11 and
-/// `atan` 4096 ULP; through `log2` these move the LOD by less than 2e-3 for the fields of view here
-/// (0.3 to 1.5 rad), and `log2` itself adds at most 3 ULP. A mip level is 1.
+/// Largest allowed relative difference of the footprint. Vulkan allows `tan` an absolute error of
+/// 2^-11 and `atan` 4096 ULP; at the narrowest field of view here (0.3 rad, tan(0.15) = 0.15) the
+/// first is 3.2e-3 of the pixel's size, the second 2.4e-4; the division by |cos| adds 2.5 ULP.
+const FOOTPRINT_TOLERANCE: f32 = 4.0e-3;
+
+/// Largest allowed difference in mip levels: the same errors through `log2` move the LOD by less
+/// than 2e-3 for the fields of view here, and `log2` itself adds at most 3 ULP. A mip level is 1.
 const LOD_TOLERANCE: f32 = 2.0e-3;
 
 fn cases() -> Vec<[f32; 4]> {
@@ -100,12 +86,33 @@ async fn run() -> Result<(), String> {
         .request_device(&wgpu::DeviceDescriptor::default())
         .await
         .map_err(|e| format!("request_device: {e}"))?;
-    let source = format!("{}{KERNEL}", wgsl_prelude(&[Module::RayCone]));
+    let kernels = [
+        (
+            "WGSL modules pasted in front",
+            ray_footprint::wgpu::shader_with_modules("lod.wgsl", include_str!("shaders/lod.wgsl"), &[Module::RayCone]),
+        ),
+        (
+            "WESL package imported by path",
+            wgpu::ShaderModuleDescriptor {
+                label: Some("lod.wesl"),
+                // What `wesl::include_wesl!("lod")` reads: the artifact `build.rs` wrote.
+                source: wgpu::ShaderSource::Wgsl(include_str!(concat!(env!("OUT_DIR"), "/lod.wgsl")).into()),
+            },
+        ),
+    ];
+    let cases = cases();
+    for (way, descriptor) in kernels {
+        let pipeline = pipeline(&device, descriptor).await?;
+        let results = compute(&device, &queue, &pipeline, &cases).await?;
+        check(way, &cases, &results)?;
+    }
+    Ok(())
+}
+
+/// The compute pipeline of `descriptor`'s shader; wgpu's validation errors are returned.
+async fn pipeline(device: &wgpu::Device, descriptor: wgpu::ShaderModuleDescriptor<'_>) -> Result<wgpu::ComputePipeline, String> {
     let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("lod"),
-        source: wgpu::ShaderSource::Wgsl(source.into()),
-    });
+    let module = device.create_shader_module(descriptor);
     let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some("lod"),
         layout: None,
@@ -114,25 +121,29 @@ async fn run() -> Result<(), String> {
         compilation_options: Default::default(),
         cache: None,
     });
-    if let Some(error) = scope.pop().await {
-        return Err(format!("wgpu rejected the shader: {error}"));
+    match scope.pop().await {
+        Some(error) => Err(format!("wgpu rejected the shader: {error}")),
+        None => Ok(pipeline),
     }
-    let cases = cases();
-    let lods = compute(&device, &queue, &pipeline, &cases).await?;
-    let worst = cases
-        .iter()
-        .zip(&lods)
-        .map(|(&case, &lod)| (lod - mirror(case)).abs())
-        .fold(0.0f32, f32::max);
+}
+
+/// The largest differences of `results` from the mirror, printed; an error past a tolerance.
+fn check(way: &str, cases: &[[f32; 4]], results: &[[f32; 2]]) -> Result<(), String> {
+    let (mut footprint, mut lod) = (0.0f32, 0.0f32);
+    for (&case, result) in cases.iter().zip(results) {
+        let [want_footprint, want_lod] = mirror(case);
+        footprint = footprint.max((result[0] - want_footprint).abs() / want_footprint);
+        lod = lod.max((result[1] - want_lod).abs());
+    }
     println!(
-        "{} LODs computed by wgpu; largest difference from the Rust mirror: {worst:.3e} mip levels",
-        lods.len()
+        "{way}: {} cases; largest difference from the Rust mirror: footprint {footprint:.3e} (relative), LOD {lod:.3e} mip levels",
+        results.len()
     );
-    if worst <= LOD_TOLERANCE {
+    if footprint <= FOOTPRINT_TOLERANCE && lod <= LOD_TOLERANCE {
         Ok(())
     } else {
         Err(format!(
-            "wgpu and the mirror differ by {worst} mip levels (tolerance {LOD_TOLERANCE})"
+            "{way}: wgpu and the mirror differ by {footprint} (relative footprint, tolerance {FOOTPRINT_TOLERANCE}) or {lod} mip levels (tolerance {LOD_TOLERANCE})"
         ))
     }
 }
@@ -142,16 +153,16 @@ async fn compute(
     queue: &wgpu::Queue,
     pipeline: &wgpu::ComputePipeline,
     cases: &[[f32; 4]],
-) -> Result<Vec<f32>, String> {
+) -> Result<Vec<[f32; 2]>, String> {
     use wgpu::util::DeviceExt;
     let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("cases"),
         contents: bytemuck::cast_slice(cases),
         usage: wgpu::BufferUsages::STORAGE,
     });
-    let size = (cases.len() * 4) as u64;
+    let size = (cases.len() * 8) as u64;
     let output = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("lods"),
+        label: Some("results"),
         size,
         usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
         mapped_at_creation: false,
@@ -195,6 +206,5 @@ async fn compute(
     let view = slice
         .get_mapped_range()
         .map_err(|e| format!("reading the results: {e}"))?;
-    let lods = bytemuck::cast_slice(&view).to_vec();
-    Ok(lods)
+    Ok(bytemuck::cast_slice(&view).to_vec())
 }

@@ -2,7 +2,7 @@
 //! through the `headless_chrome` crate: pages opened in it, scripts evaluated (promises awaited),
 //! screenshots taken, each call bounded by one timeout.
 
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption;
 use headless_chrome::protocol::cdp::Runtime;
 use headless_chrome::{Browser, Tab};

@@ -31,8 +31,8 @@ pub use server::{Handler, LoopbackServer, Request, Response};
 
 use super::check::{Check, FunctionCheck, PreparedCheck, Report, RunConfig};
 use super::compute::{Dispatch, KernelRun};
-use super::device::Error;
-use super::lock;
+use super::error::Error;
+use super::lock::lock;
 use super::phases::{Phase, PhaseTimes};
 use super::wgsl_device::WgslDevice;
 use crate::shader::{Feature, Shader};

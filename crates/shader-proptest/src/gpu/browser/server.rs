@@ -3,7 +3,7 @@
 //! connections open); a request is a method, a path and a body, an answer a status, a type and a
 //! body.
 
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use std::io::{BufRead, BufReader, Write};
 use std::net::{SocketAddr, TcpListener, TcpStream};
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -7,7 +7,7 @@ use super::judge::{count_vacuous, Vacuous};
 use super::oracle::Oracle;
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use crate::gpu::phases::{Phase, PhaseTimes};
 use crate::value::{Args, Value};
 use proptest::strategy::Strategy;

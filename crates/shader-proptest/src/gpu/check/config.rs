@@ -1,6 +1,6 @@
 //! How many cases a check runs, how they are batched, and the seeds they are generated from.
 
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
 /// Environment variable that sets [`RunConfig::seed`] (decimal, or hexadecimal after `0x`), to

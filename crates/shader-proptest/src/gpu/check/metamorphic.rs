@@ -4,7 +4,8 @@
 use super::config::splitmix;
 use super::oracle::Oracle;
 use super::{Check, FunctionCheck, PreparedCheck, Report, RunConfig};
-use crate::gpu::device::{Error, Gpu};
+use crate::gpu::device::Gpu;
+use crate::gpu::error::Error;
 use crate::shader::Shader;
 use crate::tolerance::Tolerance;
 use crate::value::{Args, Value};

@@ -26,10 +26,11 @@ pub use report::{Failure, Outcome, Report, MAX_VACUOUS};
 
 use super::call::compile_call;
 use super::compute::{ComputeKernel, Dispatch};
-use super::device::{Error, Gpu};
+use super::device::Gpu;
+use super::error::Error;
 use super::phases::{Phase, PhaseTimes};
-use crate::back::Language;
 use crate::kernel::kernel_source;
+use crate::language::Language;
 use crate::shader::Shader;
 use crate::signature::Call;
 use crate::tolerance::Tolerance;

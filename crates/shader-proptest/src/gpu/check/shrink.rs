@@ -21,7 +21,7 @@ use super::config::{batch_runner, RunConfig};
 use super::oracle::Judged;
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
-use crate::gpu::device::Error;
+use crate::gpu::error::Error;
 use crate::gpu::phases::PhaseTimes;
 use crate::value::{Args, Value};
 use proptest::prelude::Rng;
