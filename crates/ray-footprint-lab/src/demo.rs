@@ -362,6 +362,28 @@ async fn read_image(
 mod tests {
     use super::*;
 
+    /// The page's table quotes the README's method guide: every cell with a number is there word
+    /// for word.
+    #[test]
+    fn the_page_quotes_the_method_guide() {
+        let root = repository();
+        let page = std::fs::read_to_string(root.join(PAGE_PATH.trim_start_matches('/'))).expect("the page");
+        let readme = std::fs::read_to_string(root.join("README.md")).expect("the README");
+        let cells: Vec<&str> = page
+            .split("<td>")
+            .skip(1)
+            .filter_map(|cell| cell.split_once("</td>").map(|(text, _)| text))
+            .filter(|text| text.contains(|c: char| c.is_ascii_digit()))
+            .collect();
+        assert!(cells.len() >= 4, "the page's table: {cells:?}");
+        for cell in cells {
+            assert!(
+                readme.contains(cell),
+                "the page says {cell:?}, the README does not"
+            );
+        }
+    }
+
     /// Only plain names in the two folders are served.
     #[test]
     fn only_the_page_and_the_modules_are_served() {
