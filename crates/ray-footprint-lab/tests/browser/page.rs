@@ -4,6 +4,7 @@
 
 use super::browser_options;
 use ray_footprint_lab::demo::{render_with_wgpu, serve, DemoMode, IMAGE_SIZE, PAGE_PATH};
+use ray_footprint_lab::figure::write_png;
 use ray_footprint_lab::quality::image::Image;
 use ray_footprint_lab::quality::metrics::flip;
 use shader_proptest::{BrowserPage, Chromium};
@@ -74,6 +75,12 @@ fn each_mode_matches_lavapipe() {
         "the page in {}, against lavapipe through wgpu (mean FLIP, at most)",
         chromium.version()
     );
+    let folder = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("demo");
+    std::fs::create_dir_all(&folder).expect("a folder for the images");
+    println!(
+        "each mode's images: {}/<mode>_{{chromium,lavapipe}}.png",
+        folder.display()
+    );
     let mut images = Vec::new();
     let mut over = Vec::new();
     for (mode, max) in DemoMode::ALL.into_iter().zip(MAX_FLIP) {
@@ -87,6 +94,10 @@ fn each_mode_matches_lavapipe() {
         );
         let browser = canvas_image(&page);
         let lavapipe = render_with_wgpu(mode).unwrap_or_else(|error| panic!("{}: {error}", mode.name()));
+        for (image, name) in [(&browser, "chromium"), (&lavapipe, "lavapipe")] {
+            let path = folder.join(format!("{}_{name}.png", mode.name()));
+            write_png(&path, &image.to_rgba()).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+        }
         let mean = flip(&lavapipe, &browser).expect("same sizes").mean();
         println!("{:<18} {mean:.4} (at most {max})", mode.name());
         if mean > max {
