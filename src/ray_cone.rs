@@ -533,7 +533,7 @@ pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3,
 /// Signed as [`edge_curvature`]: positive where the surface bends away from the side the normals
 /// point to, so a saddle gives opposite signs along its two principal directions.
 ///
-/// `direction` need not be unit length: it is made unit first ([`clamped_unit`]), so any length
+/// `direction` need not be unit length: it is made unit first, so any length
 /// from 1e-12 up gives the same curvature. Its part in the triangle's plane, `sqrt(a² + b²)`, is
 /// the sine of its angle with the face normal. Where that sine is well above `MIN_COS` the `MIN_COS²`
 /// terms change the result by a share of at most `MIN_COS² / (a² + b²)` of `k - (e + g) / 2` (1e-6

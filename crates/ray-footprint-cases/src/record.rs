@@ -267,7 +267,7 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
     /// name ([`reference_seed`]); then once more through each scale symmetry whose restore is
     /// exact ([`Symmetry::restores_exactly`]): the function evaluated at each case scaled by the
     /// power of two its words draw over the documented range, and restored
-    /// ([`Record::scaled_mirror`]), so that the reference holds far from 1 too.
+    /// (`Record::scaled_mirror`), so that the reference holds far from 1 too.
     pub fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport {
         let reference = &self.references[index];
         let seed = reference_seed(seed, self.module, self.function, index);
