@@ -2,14 +2,15 @@
 # Installs what ray-footprint's GPU tests and main job need on Debian 12 (bookworm): the Vulkan
 # loader, Mesa's lavapipe >= 24.1 from bookworm-backports (bookworm's own 22.3 lacks ray tracing),
 # the Khronos validation layer, glslang and SPIRV-Tools, g++ (the quality lab's nv-flip builds
-# NVIDIA's FLIP from C++), and the Slang compiler slangc. Debian has no Slang package; slangc comes
+# NVIDIA's FLIP from C++), Chromium (the browser tests run WGSL in its WebGPU), and the Slang
+# compiler slangc. Debian has no Slang package; slangc comes
 # from the PyPI wheel slangtorch, which ships slangc and libslang-compiler (and nothing else is taken
 # from it: no Python import, no PyTorch). Idempotent: installs only what is missing. Elsewhere it
 # prints what to install and exits non-zero.
 set -euo pipefail
 
 MIN_MESA=24.1
-PACKAGES=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools g++ python3-pip)
+PACKAGES=(libvulkan1 mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools g++ python3-pip chromium)
 # slangc: the wheel's version, the compiler version it ships, and where it goes.
 SLANGTORCH_VERSION=1.3.22
 SLANGC_VERSION=2026.14.1
@@ -22,6 +23,7 @@ other_system() {
     say "this script installs packages on Debian 12 (bookworm) only."
     say "elsewhere, install: the Vulkan loader, Mesa lavapipe >= $MIN_MESA (VK_KHR_ray_tracing_pipeline),"
     say "the Khronos validation layer (VK_LAYER_KHRONOS_validation), glslangValidator, SPIRV-Tools, a C++ compiler,"
+    say "Chromium or Chrome (for the browser tests; SHADER_PROPTEST_CHROMIUM names its executable if not on the PATH),"
     say "slangc $SLANGC_VERSION or newer on the PATH (the Vulkan SDK has it; so does the PyPI wheel"
     say "slangtorch==$SLANGTORCH_VERSION as slangtorch/bin/slangc: pip install --no-deps --target DIR),"
     say "and a Rust toolchain (1.87 or newer)."

@@ -33,7 +33,8 @@ pub mod ray_diff_f64;
     doctest,
     feature = "validate",
     feature = "naga_oil",
-    feature = "shader-proptest"
+    feature = "shader-proptest",
+    feature = "wesl"
 ))]
 #[doc = include_str!("../README.md")]
 mod readme_examples {}

@@ -30,8 +30,12 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 
 /// Smallest `|cos|` between a normal and a direction used as a divisor (grazing-angle clamp).
 pub const MIN_COS: f32 = 1.0e-4;
-/// Smallest magnitude passed to `log2` or used as a divisor (zero width, area, distance, spread).
+/// Smallest magnitude passed to `log2` or used as a divisor (zero width, distance, spread).
 pub const MIN_MAGNITUDE: f32 = 1.0e-20;
+/// Smallest squared length or doubled area used as a divisor or passed to `log2` (a zero-length
+/// edge, a zero-area triangle): far below the square of the shortest length the functions are
+/// right for (1e-12), and a normal float, which no device flushes to zero.
+pub const MIN_SQUARED_MAGNITUDE: f32 = 1.0e-36;
 /// Largest vertical field of view in radians; wider values are clamped so `tan(fov_y / 2)` stays finite.
 pub const MAX_FOV_Y: f32 = 3.1;
 /// Largest finite f16; packed cone values are clamped to `[-F16_MAX, F16_MAX]`.
@@ -429,7 +433,8 @@ pub fn surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f
 
 /// Curvature along one triangle edge from its vertex normals (JCGT 2021, Sec. 3):
 /// `k = dot(n_j - n_i, p_j - p_i) / |p_j - p_i|^2`; 1/R on a sphere of radius R with outward normals.
-/// The squared length is clamped to `>= MIN_MAGNITUDE` (a zero-length edge gives 0).
+/// The squared length is clamped to `>= MIN_SQUARED_MAGNITUDE` (a zero-length edge gives 0), so
+/// that edges down to 1e-18 long are measured as they are.
 ///
 /// # Examples
 ///
@@ -444,7 +449,7 @@ pub fn surface_spread_angle(normal_spread_angle: f32, curvature_sign: f32, k1: f
 /// ```
 pub fn edge_curvature(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
     let edge = p_j - p_i;
-    (n_j - n_i).dot(edge) / edge.dot(edge).max(MIN_MAGNITUDE)
+    (n_j - n_i).dot(edge) / edge.dot(edge).max(MIN_SQUARED_MAGNITUDE)
 }
 
 /// Curvature estimate of a triangle: the mean of its three [`edge_curvature`] values (JCGT 2021).
@@ -500,20 +505,23 @@ fn shape_frame_v(u: Vec3, p0: Vec3, p2: Vec3) -> Vec3 {
 /// The frame is the triangle's own: `u = unit(p1 - p0)`, `v = face × u` with the face normal of the
 /// counter-clockwise winding `p0, p1, p2`. For each edge `p_j - p_i` with components `(a, b)` in
 /// `(u, v)` and normal change `(du, dv) = ((n_j - n_i).u, (n_j - n_i).v)`, the fit asks
-/// `II [a, b] = [du, dv]`: six equations in three unknowns. With the sums over the three edges
-/// `A = Σa²`, `B = Σb²`, `C = Σab` (divided by `A + B`, so that they are dimensionless and
-/// `A + B = 1`), `r = (Σa du, Σ(b du + a dv), Σb dv)` (divided by the same), the normal equations
-/// `[[A, C, 0], [C, 1, C], [0, C, B]] (e, f, g) = r` are solved in closed form by cofactors over the
-/// determinant `AB - C²` (which is `12 area² / (A + B)²` before the division: 1/4 for an equilateral
-/// triangle, 0 for a degenerate one).
+/// `II [a, b] = [du, dv]`: six equations in three unknowns. The edge components are first divided
+/// by the largest of them, `extent = max |a|, |b|` (at least `MIN_MAGNITUDE`), so that the fit is
+/// the same at every scale and nothing is squared but numbers of at most 1: the fit in these units
+/// is `extent II`. With the sums over the three edges `A = Σa²`, `B = Σb²`, `C = Σab` (divided by `A + B`,
+/// so that `A + B = 1`), `r = (Σa du, Σ(b du + a dv), Σb dv)` (divided by the same), the normal
+/// equations `[[A, C, 0], [C, 1, C], [0, C, B]] (e, f, g) = r` are solved in closed form by
+/// cofactors over the determinant `AB - C²` (which is `12 area² / (A + B)²` before the division:
+/// 1/4 for an equilateral triangle, 0 for a degenerate one), and the solution divided by `extent`.
+/// Scaling the corners by `s` divides the result by `s` exactly where `s` is a power of two.
 ///
 /// Sign: as [`edge_curvature`], positive where the surface bends away from the side its normals
 /// point to (a sphere of radius R with outward normals has `II = I / R`); flipping the normals
 /// flips `II`. The fit is exact wherever the normals change linearly along the surface (spheres,
 /// cylinders), and approaches a smooth surface's shape operator as the triangle shrinks.
 ///
-/// Clamps: `A + B` and the determinant are kept at least `MIN_MAGNITUDE`; a zero-area triangle whose
-/// edges are exactly parallel (or coincident vertices) gives `(0, 0, 0)`, a flat one. A nearly
+/// Clamps: `extent`, `A + B` and the determinant are kept at least `MIN_MAGNITUDE`; a zero-area triangle
+/// whose edges are exactly parallel (or coincident vertices) gives `(0, 0, 0)`, a flat one. A nearly
 /// degenerate sliver is ill-conditioned: its error grows as the inverse of the determinant.
 ///
 /// One shape operator serves every ray that meets the triangle: compute it once per hit (or store
@@ -535,8 +543,11 @@ pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3,
     let v = shape_frame_v(u, p0, p2);
     let (e01, e12, e20) = (p1 - p0, p2 - p1, p0 - p2);
     let (t01, t12, t20) = (n1 - n0, n2 - n1, n0 - n2);
-    let a = Vec3::new(e01.dot(u), e12.dot(u), e20.dot(u));
-    let b = Vec3::new(e01.dot(v), e12.dot(v), e20.dot(v));
+    let along_u = Vec3::new(e01.dot(u), e12.dot(u), e20.dot(u));
+    let along_v = Vec3::new(e01.dot(v), e12.dot(v), e20.dot(v));
+    let largest = along_u.abs().max(along_v.abs());
+    let extent = largest.x.max(largest.y).max(largest.z.max(MIN_MAGNITUDE));
+    let (a, b) = (along_u / extent, along_v / extent);
     let du = Vec3::new(t01.dot(u), t12.dot(u), t20.dot(u));
     let dv = Vec3::new(t01.dot(v), t12.dot(v), t20.dot(v));
     let scale = (a.dot(a) + b.dot(b)).max(MIN_MAGNITUDE);
@@ -546,20 +557,27 @@ pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3,
     let e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
     let f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
     let g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
-    Vec3::new(e, f, g) / determinant
+    Vec3::new(e, f, g) / (determinant * extent)
 }
 
 /// Normal curvature of a triangle along `direction`: `k = II(d, d) / |d|²` with `d = (a, b)` the
-/// direction's components in the triangle's frame `(u, v)` (its projection into the triangle's
-/// plane) and `II = (e, f, g)` from [`triangle_shape_operator`] of the same corners (Euler's
-/// formula; Rusinkiewicz 2004, Sec. 3):
-/// `k = (e a² + 2 f a b + g b² + MIN_MAGNITUDE (e + g) / 2) / (a² + b² + MIN_MAGNITUDE)`.
+/// components of the unit direction in the triangle's frame `(u, v)` (its projection into the
+/// triangle's plane) and `II = (e, f, g)` from [`triangle_shape_operator`] of the same corners
+/// (Euler's formula; Rusinkiewicz 2004, Sec. 3):
+/// `k = (e a² + 2 f a b + g b² + MIN_COS² (e + g) / 2) / (a² + b² + MIN_COS²)`.
 ///
 /// Signed as [`edge_curvature`]: positive where the surface bends away from the side the normals
-/// point to, so a saddle gives opposite signs along its two principal directions. The
-/// `MIN_MAGNITUDE` terms change nothing measurable for a direction with any component in the
-/// plane, and make a direction along the face normal (or a zero direction), which has no plane of
-/// incidence, give the mean curvature `(e + g) / 2`. `direction` need not be unit length.
+/// point to, so a saddle gives opposite signs along its two principal directions.
+///
+/// `direction` need not be unit length: it is made unit first, so any length
+/// from 1e-12 up gives the same curvature. Its part in the triangle's plane, `sqrt(a² + b²)`, is
+/// the sine of its angle with the face normal. Where that sine is well above `MIN_COS` the `MIN_COS²`
+/// terms change the result by a share of at most `MIN_COS² / (a² + b²)` of `k - (e + g) / 2` (1e-6
+/// at a sine of 0.1). Within about `MIN_COS` radians of the face normal the direction has no
+/// reliable plane of incidence (a face normal rounded to f32 keeps in-plane components of about
+/// 1e-7), and the result goes to the mean curvature `(e + g) / 2`, the normal curvature averaged
+/// over every direction around the normal: exactly along either face normal, and for a zero
+/// direction.
 ///
 /// It takes the corners rather than the frame so that the frame stays private to this module and
 /// one call per ray needs nothing but what a hit has.
@@ -581,11 +599,13 @@ pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3,
 /// ```
 pub fn normal_curvature(p0: Vec3, p1: Vec3, p2: Vec3, shape_operator: Vec3, direction: Vec3) -> f32 {
     let u = shape_frame_u(p0, p1);
-    let a = direction.dot(u);
-    let b = direction.dot(shape_frame_v(u, p0, p2));
+    let unit = clamped_unit(direction);
+    let a = unit.dot(u);
+    let b = unit.dot(shape_frame_v(u, p0, p2));
     let (e, f, g) = (shape_operator.x, shape_operator.y, shape_operator.z);
     let mean = 0.5 * (e + g);
-    (e * a * a + 2.0 * f * a * b + g * b * b + MIN_MAGNITUDE * mean) / (a * a + b * b + MIN_MAGNITUDE)
+    let normal_weight = MIN_COS * MIN_COS;
+    (e * a * a + 2.0 * f * a * b + g * b * b + normal_weight * mean) / (a * a + b * b + normal_weight)
 }
 
 /// Principal curvatures of a shape operator `II = (e, f, g)` from [`triangle_shape_operator`],
@@ -876,7 +896,7 @@ pub fn triangle_uv_area2(uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
 }
 
 /// Texel density of a triangle, UV units per world unit: `sqrt(uv_area2) / sqrt(world_area2)`
-/// (ray-cone tutorial), with `world_area2` clamped to `>= MIN_MAGNITUDE`.
+/// (ray-cone tutorial), with `world_area2` clamped to `>= MIN_SQUARED_MAGNITUDE`.
 ///
 /// # Examples
 ///
@@ -890,11 +910,13 @@ pub fn triangle_uv_area2(uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
 /// assert!((density - 0.5).abs() < 1e-7);
 /// ```
 pub fn texel_density(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
-    triangle_uv_area2(uv0, uv1, uv2).sqrt() / triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE).sqrt()
+    triangle_uv_area2(uv0, uv1, uv2).sqrt()
+        / triangle_world_area2(p0, p1, p2).max(MIN_SQUARED_MAGNITUDE).sqrt()
 }
 
 /// Base level of detail of a triangle in UV units (RTG Eq. 4):
-/// `Delta = 0.5 * (log2(uv_area2) - log2(world_area2))`, both areas clamped to `>= MIN_MAGNITUDE`.
+/// `Delta = 0.5 * (log2(uv_area2) - log2(world_area2))`, both areas clamped to
+/// `>= MIN_SQUARED_MAGNITUDE`.
 /// Add `0.5 * log2(W * H)` for a W x H texture (see [`texture_lod`]).
 ///
 /// # Examples
@@ -910,8 +932,8 @@ pub fn texel_density(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Ve
 /// assert!((base - -1.0).abs() < 1e-6);
 /// ```
 pub fn triangle_base_lod(p0: Vec3, p1: Vec3, p2: Vec3, uv0: Vec2, uv1: Vec2, uv2: Vec2) -> f32 {
-    let uv_area2 = triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
-    let world_area2 = triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
+    let uv_area2 = triangle_uv_area2(uv0, uv1, uv2).max(MIN_SQUARED_MAGNITUDE);
+    let world_area2 = triangle_world_area2(p0, p1, p2).max(MIN_SQUARED_MAGNITUDE);
     0.5 * (uv_area2.log2() - world_area2.log2())
 }
 

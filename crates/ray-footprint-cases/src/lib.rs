@@ -12,8 +12,13 @@
 //!   table into the root crate's `src/degenerate.md`;
 //! - [`fuzzing`]: the cargo-fuzz targets and the replay of their corpora;
 //! - [`reference`](mod@reference): each function against independent references (exact geometry, f64 finite
-//!   differences, closed forms computed another way, identities, peer originals); [`pages`]
-//!   renders the table of the root crate's `src/proven.md`.
+//!   differences, closed forms computed another way, identities, peer originals), once as drawn and
+//!   once more at scales from 2^-40 to 2^40 through each exact scale symmetry; [`pages`]
+//!   renders the table of the root crate's `src/proven.md`;
+//! - [`symmetry`]: the transformations each function's math respects (a scale with the function's
+//!   degree, a rotation, a translation, an order or a sign exchanged), declared in its record or
+//!   refused with a reason, run on the mirror (`tests/symmetries.rs`, 100,000 cases each) and on
+//!   the device as metamorphic checks (the lab's GPU tests).
 //!
 //! # One file per function
 //!
@@ -53,6 +58,7 @@ pub mod reference;
 pub mod sections;
 pub mod special;
 pub mod strategy;
+pub mod symmetry;
 pub mod wireframe;
 
 pub use record::{Function, IllConditioned, Promises, Record};

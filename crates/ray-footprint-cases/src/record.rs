@@ -32,13 +32,15 @@
 
 use crate::degenerate::{Row, RowsOf};
 use crate::fuzzing::draw::{Draw, Mode};
-use crate::reference::{reference_seed, Kind, Reference, ReferenceReport};
+use crate::reference::{reference_seed, Kind, Reference, ReferenceReport, Summary};
 use crate::special::Perturb;
+use crate::symmetry::{self, Kind as SymmetryKind, Symmetry, SymmetryReport};
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::Interval;
 use shader_proptest::{evaluate, Args, Check, Error, FunctionCheck, Gpu, Language, Tolerance, Value};
+use std::cell::Cell;
 
 /// What the fuzzer checks of a result beyond finiteness, for arguments in the documented domain.
 enum Promise<A, R> {
@@ -128,6 +130,8 @@ pub struct Record<A, R> {
     fuzz: Option<fn(&mut Draw) -> A>,
     promise: Promise<A, R>,
     references: Vec<Reference<A, R>>,
+    symmetries: Vec<Symmetry<A, R>>,
+    without_symmetry: Option<&'static str>,
     found: Option<&'static str>,
 }
 
@@ -152,6 +156,8 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
             fuzz: None,
             promise: Promise::Finite,
             references: Vec::new(),
+            symmetries: Vec::new(),
+            without_symmetry: None,
             found: None,
         }
     }
@@ -233,6 +239,21 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
         self
     }
 
+    /// A transformation the function's math respects ([`crate::symmetry`]); a function may
+    /// have several.
+    pub fn symmetry(mut self, symmetry: Symmetry<A, R>) -> Self {
+        self.symmetries.push(symmetry);
+        self
+    }
+
+    /// Why the function has no symmetry to declare.
+    pub fn without_symmetry(self, reason: &'static str) -> Self {
+        Record {
+            without_symmetry: Some(reason),
+            ..self
+        }
+    }
+
     /// The bug that a check or reference of this function found, in words (for the table of
     /// `src/proven.md`).
     pub fn found(self, bug: &'static str) -> Self {
@@ -243,17 +264,91 @@ impl<A: Args + Perturb, R: Value> Record<A, R> {
     }
 
     /// Runs reference `index` on cases drawn from a seed derived from `seed` and the function's
-    /// name ([`reference_seed`]).
+    /// name ([`reference_seed`]); then once more through each scale symmetry whose restore is
+    /// exact ([`Symmetry::restores_exactly`]): the function evaluated at each case scaled by the
+    /// power of two its words draw over the documented range, and restored
+    /// (`Record::scaled_mirror`), so that the reference holds far from 1 too.
     pub fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport {
         let reference = &self.references[index];
         let seed = reference_seed(seed, self.module, self.function, index);
+        let scales = self
+            .symmetries
+            .iter()
+            .filter(|symmetry| symmetry.kind() == SymmetryKind::Scale && symmetry.restores_exactly());
+        let outcome = scales.fold(reference.run(&self.mirror, seed), |outcome, symmetry| {
+            let evaluations_scaled = Cell::new(0);
+            let scaled = reference
+                .run(
+                    &|args| self.scaled_mirror(symmetry, args, &evaluations_scaled),
+                    seed,
+                )
+                .map_err(|failure| format!("the case scaled ({}): {failure}", symmetry.description()));
+            match (outcome, scaled) {
+                (Ok(unit), Ok(scaled)) => Ok(Summary {
+                    cases: unit.cases + scaled.cases,
+                    left_out: unit.left_out + scaled.left_out,
+                    scaled: unit.scaled + evaluations_scaled.get(),
+                    worst: unit.worst.and(scaled.worst),
+                }),
+                (Err(failure), _) | (_, Err(failure)) => Err(failure),
+            }
+        });
         ReferenceReport {
             function: format!("{}::{}", self.module.stem(), self.function),
             kind: reference.kind(),
             description: reference.description(),
             seed,
-            outcome: reference.run(self.mirror, seed),
+            outcome,
         }
+    }
+
+    /// The mirror at `args` through a scale symmetry: the case scaled by the power of two its words
+    /// draw ([`shader_proptest::case_seed`]) and the result restored, counted in `scaled`, where
+    /// that change applies; else the mirror at `args`.
+    fn scaled_mirror(&self, symmetry: &Symmetry<A, R>, args: A, scaled: &Cell<u32>) -> R {
+        let change = symmetry.change(shader_proptest::case_seed(&args));
+        if symmetry.applies(&args, &change) {
+            scaled.set(scaled.get() + 1);
+            symmetry.restore((self.mirror)(symmetry.transform(&args, &change)), &change)
+        } else {
+            (self.mirror)(args)
+        }
+    }
+
+    /// The mirror's result for `args`.
+    pub fn mirror(&self, args: A) -> R {
+        (self.mirror)(args)
+    }
+
+    /// The tolerance.
+    pub fn tolerance(&self) -> &Tolerance<A> {
+        &self.tolerance
+    }
+
+    /// The strategy of the agreement cases (before the conditioning filter).
+    pub fn cases(&self) -> fn() -> BoxedStrategy<A> {
+        self.cases
+    }
+
+    /// The mirror.
+    pub fn mirror_fn(&self) -> fn(A) -> R {
+        self.mirror
+    }
+
+    /// Where the function is well-conditioned ([`Record::conditioned`]): `None` where it is
+    /// everywhere.
+    pub fn conditioning(&self) -> Option<fn(&A) -> bool> {
+        self.conditioning.map(|conditioning| conditioning.holds)
+    }
+
+    /// Whether the function is well-conditioned at `args` ([`Record::conditioned`]).
+    pub fn well_conditioned_at(&self, args: &A) -> bool {
+        self.conditioning().is_none_or(|holds| holds(args))
+    }
+
+    /// The declared symmetries.
+    pub fn symmetries(&self) -> &[Symmetry<A, R>] {
+        &self.symmetries
     }
 
     /// The degenerate rows with the function, mirror and tolerance they run against.
@@ -357,6 +452,15 @@ pub trait Function: Send + Sync {
     fn run_reference(&self, index: usize, seed: u64) -> ReferenceReport;
     /// [`Record::found`]'s bug, if any.
     fn found(&self) -> Option<&'static str>;
+    /// The kind and description of each declared symmetry, in the record's order.
+    fn symmetry_list(&self) -> Vec<(SymmetryKind, &'static str)>;
+    /// Why the function declares no symmetry, where it says so.
+    fn without_symmetry(&self) -> Option<&'static str>;
+    /// Runs symmetry `index` on the mirror over `cases` cases drawn from `seed`
+    /// ([`crate::symmetry`]).
+    fn symmetry_cpu(&self, index: usize, cases: usize, seed: u64) -> SymmetryReport;
+    /// Symmetry `index` as a metamorphic check of the shader function against itself.
+    fn symmetry_check(&self, index: usize) -> Box<dyn Check>;
 }
 
 impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
@@ -448,6 +552,25 @@ impl<A: Args + Perturb, R: Value> Function for Record<A, R> {
 
     fn found(&self) -> Option<&'static str> {
         self.found
+    }
+
+    fn symmetry_list(&self) -> Vec<(SymmetryKind, &'static str)> {
+        self.symmetries
+            .iter()
+            .map(|symmetry| (symmetry.kind(), symmetry.description()))
+            .collect()
+    }
+
+    fn without_symmetry(&self) -> Option<&'static str> {
+        self.without_symmetry
+    }
+
+    fn symmetry_cpu(&self, index: usize, cases: usize, seed: u64) -> SymmetryReport {
+        symmetry::run_on_mirror(self, index, cases, seed)
+    }
+
+    fn symmetry_check(&self, index: usize) -> Box<dyn Check> {
+        Box::new(symmetry::metamorphic_check(self, index))
     }
 
     fn fuzz(&self, data: &[u8], mode: Mode) -> Result<(), String> {

@@ -171,10 +171,10 @@ impl Deviation {
 
 /// A reference's property: its case, and the mirror of the function it checks, to the deviation
 /// measured, or `None` where the case lies outside the reference's domain (it is then not counted).
-type Property<T, A, R> = fn(&T, fn(A) -> R) -> Option<Deviation>;
+type Property<T, A, R> = fn(&T, &dyn Fn(A) -> R) -> Option<Deviation>;
 
 /// Runs a reference on the mirror from a seed.
-type Runner<A, R> = Box<dyn Fn(fn(A) -> R, u64) -> Result<Summary, String> + Send + Sync>;
+type Runner<A, R> = Box<dyn Fn(&dyn Fn(A) -> R, u64) -> Result<Summary, String> + Send + Sync>;
 
 /// One independent reference of a function: its kind, a one-line description, and how it runs.
 pub struct Reference<A, R> {
@@ -191,6 +191,9 @@ pub struct Summary {
     /// The cases drawn that lay outside the reference's domain (not checked; at most four times
     /// [`CASES`]).
     pub left_out: u32,
+    /// The function's evaluations made at another scale, through a scale symmetry
+    /// ([`crate::Record::run_reference`]).
+    pub scaled: u32,
     /// The deviation that used the largest share of its bound.
     pub worst: Deviation,
 }
@@ -224,7 +227,7 @@ impl<A: 'static, R: 'static> Reference<A, R> {
 
     /// Runs [`CASES`] cases drawn from `seed` through `mirror`: the summary, or the failure with the
     /// minimal failing case.
-    pub fn run(&self, mirror: fn(A) -> R, seed: u64) -> Result<Summary, String> {
+    pub fn run(&self, mirror: &dyn Fn(A) -> R, seed: u64) -> Result<Summary, String> {
         (self.run)(mirror, seed)
     }
 }
@@ -232,7 +235,7 @@ impl<A: 'static, R: 'static> Reference<A, R> {
 fn run<T: Debug + Clone + 'static, A, R>(
     inputs: fn() -> BoxedStrategy<T>,
     property: Property<T, A, R>,
-    mirror: fn(A) -> R,
+    mirror: &dyn Fn(A) -> R,
     seed: u64,
 ) -> Result<Summary, String> {
     let config = Config {
@@ -266,6 +269,7 @@ fn run<T: Debug + Clone + 'static, A, R>(
     Ok(Summary {
         cases: CASES,
         left_out: left_out.get(),
+        scaled: 0,
         worst: worst.get(),
     })
 }
@@ -344,9 +348,10 @@ impl fmt::Display for ReferenceReport {
         match &self.outcome {
             Ok(summary) => write!(
                 f,
-                "{} cases ({} left out), largest deviation {:.3e} = {:.1}% of its bound {:.3e}",
+                "{} cases ({} left out, {} evaluations scaled), largest deviation {:.3e} = {:.1}% of its bound {:.3e}",
                 summary.cases,
                 summary.left_out,
+                summary.scaled,
                 summary.worst.measured,
                 100.0 * summary.worst.share(),
                 summary.worst.bound

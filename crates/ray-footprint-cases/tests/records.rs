@@ -47,14 +47,19 @@ fn every_case_file_is_in_its_sections_folder() {
     }
 }
 
-/// Every record says how the fuzzer draws its arguments and documents degenerate rows; the first
-/// incomplete record, in module order, is named.
+/// Every record says how the fuzzer draws its arguments, documents degenerate rows, and declares
+/// at least one symmetry or says why it has none; the first incomplete record, in module order,
+/// is named.
 #[test]
 fn every_record_is_complete() {
     for record in records() {
         let name = format!("{}::{}", record.module().stem(), record.name());
         assert!(record.has_fuzz_draw(), "{name} has no fuzz draw");
         assert!(record.degenerate_rows() > 0, "{name} has no degenerate rows");
+        assert!(
+            !record.symmetry_list().is_empty() || record.without_symmetry().is_some(),
+            "{name} declares no symmetry and gives no reason"
+        );
     }
 }
 

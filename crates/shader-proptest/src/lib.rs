@@ -121,5 +121,10 @@ pub use gpu::{
     MetamorphicCheck, Object, Outcome, Owner, Phase, PhaseTimes, PreparedCheck, Report, RunConfig,
     DEVICE_ENV, MAX_VACUOUS, SEED_ENV,
 };
+#[cfg(feature = "browser")]
+pub use gpu::{
+    BrowserDevice, BrowserPage, Chromium, ChromiumOptions, Handler, LoopbackServer, Request, Response,
+    CHROMIUM_ENV,
+};
 #[cfg(feature = "gpu")]
 pub use {ash, proptest};

@@ -169,3 +169,48 @@ pub fn tan_error(angle: f32) -> f32 {
 pub fn dot_error(a: glam::Vec3, b: glam::Vec3) -> f32 {
     ulps(3.0, (a * b).abs().element_sum())
 }
+
+/// Cases of a batch with a vacuous bound (one that could not have failed): in any component, and
+/// per component.
+#[derive(Default)]
+pub struct Vacuous {
+    /// Cases with a vacuous bound in any component.
+    pub cases: usize,
+    /// Cases with a vacuous bound, per component.
+    pub by_component: Vec<usize>,
+}
+
+/// The cases of a batch (`cases` of them, as many components each) with a vacuous bound: one at
+/// least as wide as the spread of its component's (finite) expected values over the batch, where
+/// that spread is not zero.
+pub fn count_vacuous(expected: &[f32], bounds: &[f32], cases: usize) -> Vacuous {
+    let per_case = expected.len() / cases.max(1);
+    let spreads: Vec<f32> = (0..per_case)
+        .map(|component| {
+            let values = expected
+                .iter()
+                .skip(component)
+                .step_by(per_case.max(1))
+                .filter(|x| x.is_finite());
+            let (low, high) = values.fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &x| {
+                (lo.min(x), hi.max(x))
+            });
+            high - low
+        })
+        .collect();
+    let mut vacuous = Vacuous {
+        cases: 0,
+        by_component: vec![0; per_case],
+    };
+    for case in 0..cases {
+        let mut any = false;
+        for (component, &spread) in spreads.iter().enumerate() {
+            if spread > 0.0 && bounds[case * per_case + component] >= spread {
+                vacuous.by_component[component] += 1;
+                any = true;
+            }
+        }
+        vacuous.cases += usize::from(any);
+    }
+    vacuous
+}

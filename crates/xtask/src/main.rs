@@ -43,6 +43,7 @@ const SHADER_BLOCKS: &[(&str, &[&[&str]])] = &[
             &[
                 "MIN_COS",
                 "MIN_MAGNITUDE",
+                "MIN_SQUARED_MAGNITUDE",
                 "MAX_FOV_Y",
                 "F16_MAX",
                 "RayCone",

@@ -24,6 +24,7 @@ fn agree(module: Module, language: Language) {
         &shader,
         language,
         checks.iter().map(AsRef::as_ref),
+        &RunConfig::default(),
         "disagree",
     );
 }

@@ -61,6 +61,7 @@ mod degenerate;
 mod quality;
 mod rt;
 mod special_cases;
+mod symmetry;
 
 use shader_proptest::{Check, Gpu, Language, RunConfig, Shader};
 
@@ -73,19 +74,20 @@ fn gpu() -> Gpu {
     Gpu::new().unwrap_or_else(|error| panic!("{error}\non Debian 12 run `{SETUP_COMMAND}`"))
 }
 
-/// Runs every check on `shader` in `language` with the default configuration, printing each report;
-/// fails with the reports of those that did not pass, as function(s) that `failed`.
+/// Runs every check on `shader` in `language` with `config`, printing each report; fails with the
+/// reports of those that did not pass, as function(s) that `failed`.
 fn assert_all_pass<'a>(
     gpu: &Gpu,
     shader: &Shader,
     language: Language,
     checks: impl Iterator<Item = &'a dyn Check>,
+    config: &RunConfig,
     failed: &str,
 ) {
     let mut failures = Vec::new();
     for check in checks {
         let report = check
-            .run(gpu, shader, &RunConfig::default())
+            .run(gpu, shader, config)
             .unwrap_or_else(|error| panic!("{} ({}): {error}", check.function(), language.name()));
         println!("{report}");
         if !report.passed() {

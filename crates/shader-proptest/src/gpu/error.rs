@@ -20,6 +20,11 @@ pub enum Error {
     Signature(String),
     /// The validation layer reported messages (each one fails the run).
     Validation(Vec<String>),
+    /// A browser's WebGPU reported errors during a run (an error scope's, an uncaptured error,
+    /// the device's loss): each one fails the run, as the validation layer's messages do.
+    WebGpu(Vec<String>),
+    /// A browser did not start, or a page in it threw or did not answer in time: what failed.
+    Browser(String),
     /// A batch is larger than one dispatch can hold.
     BatchTooLarge(usize),
     /// A check's strategy produced no value: proptest's reason.
@@ -52,6 +57,11 @@ impl fmt::Display for Error {
                 )?;
                 messages.iter().try_for_each(|m| write!(f, "\n  {m}"))
             }
+            Error::WebGpu(messages) => {
+                write!(f, "WebGPU reported {} message(s):", messages.len())?;
+                messages.iter().try_for_each(|m| write!(f, "\n  {m}"))
+            }
+            Error::Browser(message) => write!(f, "{message}"),
             Error::BatchTooLarge(cases) => write!(f, "a batch of {cases} cases does not fit in one dispatch"),
             Error::Strategy(reason) => write!(f, "no cases: {reason}"),
             Error::Config {

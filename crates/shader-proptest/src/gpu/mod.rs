@@ -1,6 +1,8 @@
 //! The device side (feature `gpu`): a Vulkan device with the validation layer on, the objects made
 //! on it, compute kernels, and the checks that run on them.
 
+#[cfg(feature = "browser")]
+mod browser;
 mod call;
 mod check;
 mod compute;
@@ -14,7 +16,14 @@ mod submission;
 mod suite;
 #[cfg(feature = "wgpu")]
 mod wgpu_device;
+#[cfg(any(feature = "wgpu", feature = "browser"))]
+mod wgsl_device;
 
+#[cfg(feature = "browser")]
+pub use browser::{
+    BrowserDevice, BrowserPage, Chromium, ChromiumOptions, Handler, LoopbackServer, Request, Response,
+    CHROMIUM_ENV,
+};
 pub use check::{
     case_seed, evaluate, Check, Failure, FunctionCheck, MetamorphicCheck, Outcome, PreparedCheck, Report,
     RunConfig, MAX_VACUOUS, SEED_ENV,

@@ -13,6 +13,7 @@ use super::compute::{Dispatch, KernelRun};
 use super::device::DEVICE_ENV;
 use super::error::Error;
 use super::phases::{Phase, PhaseTimes};
+use super::wgsl_device::WgslDevice;
 use crate::shader::{Feature, Shader};
 use crate::value::{Args, Value};
 use std::time::Instant;
@@ -84,19 +85,6 @@ impl WgpuDevice {
         })
     }
 
-    /// The first feature of `features` this device lacks, as a reason: only 64-bit floats are
-    /// available through wgpu's compute path.
-    fn missing_feature(&self, features: &[Feature]) -> Option<String> {
-        let has = |feature: Feature| match feature {
-            Feature::ShaderFloat64 => self.device.features().contains(wgpu::Features::SHADER_F64),
-            _ => false,
-        };
-        features
-            .iter()
-            .find(|&&feature| !has(feature))
-            .map(|feature| format!("{} lacks {}", self.description, feature.name()))
-    }
-
     /// Runs `call` inside an error scope: a validation error of wgpu fails it.
     fn validated<T>(&self, call: impl FnOnce() -> T) -> Result<T, Error> {
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -128,32 +116,31 @@ impl<A: Args, R: Value> FunctionCheck<A, R> {
         device: &'g WgpuDevice,
         shader: &Shader,
     ) -> Result<PreparedCheck<'g>, Error> {
-        if shader.language() != crate::Language::Wgsl {
-            return Err(Error::Setup(format!(
-                "wgpu takes WGSL; run {} checks on a Gpu",
-                shader.language()
-            )));
-        }
-        let started = Instant::now();
-        let (mut clock, mut times) = (started, PhaseTimes::default());
-        let kernel = self.kernel(shader);
-        let pipeline = match device.missing_feature(shader.features()) {
-            Some(reason) => Err(reason),
-            None => {
-                self.compile(shader, &kernel)?;
-                times.lap(Phase::Compile, &mut clock);
-                let pipeline = WgpuKernel::new(device, &kernel)?;
-                times.lap(Phase::Pipeline, &mut clock);
-                Ok(Box::new(pipeline) as Box<dyn Dispatch>)
-            }
+        self.prepare_wgsl(device, shader)
+    }
+}
+
+impl WgslDevice for WgpuDevice {
+    const TAKER: &'static str = "wgpu";
+
+    fn description(&self) -> String {
+        self.description.clone()
+    }
+
+    /// Only 64-bit floats are available through wgpu's compute path.
+    fn missing_feature(&self, features: &[Feature]) -> Option<String> {
+        let has = |feature: Feature| match feature {
+            Feature::ShaderFloat64 => self.device.features().contains(wgpu::Features::SHADER_F64),
+            _ => false,
         };
-        Ok(PreparedCheck::new(
-            shader,
-            device.description.clone(),
-            kernel,
-            pipeline,
-            (started, times),
-        ))
+        features
+            .iter()
+            .find(|&&feature| !has(feature))
+            .map(|feature| format!("{} lacks {}", self.description, feature.name()))
+    }
+
+    fn pipeline<'g>(&'g self, kernel: &str) -> Result<Box<dyn Dispatch + 'g>, Error> {
+        Ok(Box::new(WgpuKernel::new(self, kernel)?))
     }
 }
 

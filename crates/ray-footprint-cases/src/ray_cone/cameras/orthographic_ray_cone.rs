@@ -8,6 +8,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
 use crate::special::Perturb;
 use crate::strategy::{magnitude, pixels};
+use crate::symmetry::Symmetry;
 use glam::DVec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
@@ -26,6 +27,14 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // One division: 2.5 ULP on the device, 0.5 in the mirror.
     .bound(|_, _, expected| ulps(3.0, expected))
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the view height scaled by s: the width by s",
+        |&(view_height, image_height): &(f32, f32), s| (view_height * s, image_height),
+        |cone: RayCone, s| RayCone {
+            width: cone.width / s,
+            ..cone
+        },
+    ))
     .fuzz(|d| (d.scalar(), d.scalar()))
     .degenerate(vec![
         value(

@@ -24,6 +24,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         || one_argument(angle()),
     )
     .reference(reference())
+    .without_symmetry("the cone is its argument with a zero width: nothing to transform")
     .fuzz(|d| (d.angle(),))
     .degenerate(vec![
         value("zero spread", "(0, 0)", (0.0,), vec![0.0, 0.0]),

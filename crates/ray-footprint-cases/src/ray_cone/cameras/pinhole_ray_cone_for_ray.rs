@@ -7,6 +7,7 @@ use crate::ray_cone::bound::unit_excess;
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::strategy::{angle, normal_and_direction};
+use crate::symmetry::Symmetry;
 use glam::{DQuat, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
@@ -44,6 +45,11 @@ pub fn record() -> Record<PinholeRayConeForRayArgs, RayCone> {
         }
     })
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the ray and the view axis turned: the same",
+        |&(spread, direction, view_axis): &(f32, Vec3, Vec3), r| (spread, r * direction, r * view_axis),
+        |cone: RayCone, _| cone,
+    ))
     .fuzz(|d| (d.angle(), d.unit(), d.unit()))
     .range(-3.2, 3.2, "width and spread")
     .degenerate(vec![

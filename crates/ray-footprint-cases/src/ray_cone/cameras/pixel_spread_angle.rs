@@ -30,6 +30,10 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         )
     })
     .reference(reference())
+    .without_symmetry(
+        "the arctangent of the pixel's tangent ratio: an angle and a pixel count, no length, frame \
+         or order, and no exact change of either input carries through the arctangent",
+    )
     .fuzz(|d| (d.angle(), d.scalar()))
     .range(0.0, FRAC_PI_2, "spread angle")
     .degenerate(vec![

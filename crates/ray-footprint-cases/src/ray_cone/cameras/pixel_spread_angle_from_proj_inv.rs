@@ -9,6 +9,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{perspective_proj_inv, pixels, scalar};
+use crate::symmetry::Symmetry;
 use glam::dcamera::rh::proj::{opengl, vulkan};
 use glam::{DVec4, Mat4};
 use proptest::prelude::*;
@@ -34,6 +35,15 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         atan_error(ratio, ulps(3.5, ratio))
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the inverse projection's y axis negated (the image upside down): the same",
+        |&(inverse_projection, image_height): &(Mat4, f32)| {
+            let mut flipped = inverse_projection;
+            flipped.y_axis = -flipped.y_axis;
+            (flipped, image_height)
+        },
+        |spread: f32| spread,
+    ))
     .fuzz(|d| (d.mat4(), d.scalar()))
     .range(0.0, FRAC_PI_2, "spread angle")
     .degenerate(vec![

@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{fov_y, pixels};
+use crate::symmetry::Symmetry;
 use glam::dcamera::rh::proj::opengl;
 use glam::DVec4;
 use proptest::prelude::*;
@@ -26,6 +27,11 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     .bound(|&(fov, height), _, _| tan_ratio_error(fov, height))
     .reference(reference())
     .reference(pixel_spread_angle_small_approximation())
+    .symmetry(Symmetry::exchange(
+        "the image height (at least 1, as clamped) doubled: the spread halved",
+        |&(fov_y, image_height): &(f32, f32)| (fov_y, 2.0 * image_height.max(1.0)),
+        |spread: f32| 2.0 * spread,
+    ))
     .fuzz(|d| (d.angle(), d.scalar()))
     .range(0.0, f32::MAX, "spread angle")
     .degenerate(vec![

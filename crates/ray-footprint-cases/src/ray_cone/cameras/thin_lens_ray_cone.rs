@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{angle, magnitude, scalar};
+use crate::symmetry::Symmetry;
 use glam::DVec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone, MIN_MAGNITUDE};
@@ -33,6 +34,15 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         }
     })
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the aperture and the focus distance (above MIN_MAGNITUDE, where it is not clamped) scaled by s: the width by s, the spread the same",
+        |&(spread, aperture, focus): &(f32, f32, f32), s| (spread, aperture * s, focus * s),
+        |cone: RayCone, s| RayCone {
+            width: cone.width / s,
+            ..cone
+        },
+    )
+    .within(|&(_, _, focus)| focus > MIN_MAGNITUDE))
     .fuzz(|d| (d.angle(), d.scalar(), d.distance()))
     .degenerate(vec![
         value(

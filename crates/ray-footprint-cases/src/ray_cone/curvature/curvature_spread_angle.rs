@@ -9,6 +9,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{normal_and_direction, scalar};
+use crate::symmetry::Symmetry;
 use glam::{DVec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_COS};
@@ -43,6 +44,21 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         "the reflected cone's curvature sign: past a focus and on hits behind the stored normals the spread had the wrong sign (it used |width| and |dot(n, d)|); found by the convex- and concave-mirror reproductions of `tests/ray_cone_math.rs`",
     )
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the normal and the ray turned: the same",
+        |&(curvature, width, normal, direction): &(f32, f32, Vec3, Vec3), r| (curvature, width, r * normal, r * direction),
+        |spread: f32, _| spread,
+    ))
+    .symmetry(Symmetry::scale(
+        "lengths scaled by s (the width by s, the curvature by 1/s): the same",
+        |&(curvature, width, normal, direction): &(f32, f32, Vec3, Vec3), s| (curvature / s, width * s, normal, direction),
+        |spread: f32, _| spread,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal and the ray both reversed: the same",
+        |&(curvature, width, normal, direction): &(f32, f32, Vec3, Vec3)| (curvature, width, -normal, -direction),
+        |spread: f32| spread,
+    ))
     .fuzz(|d| (d.scalar(), d.scalar(), d.unit(), d.unit()))
     .degenerate(vec![
         value(

@@ -6,6 +6,8 @@ use crate::degenerate::value;
 use crate::ray_cone::curvature::{principal_curvatures, triangle_shape_operator};
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
+use crate::symmetry::Symmetry;
+use glam::Vec2Swizzles;
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -33,6 +35,21 @@ pub fn record() -> Record<IsotropicCurvatureArgs, f32> {
     )
     .enclosure(|&(principal_curvatures,)| vec![enclosure(interval2(principal_curvatures))])
     .reference(isotropic_curvature_directions())
+    .symmetry(Symmetry::scale(
+        "the principal curvatures scaled by s: the curvature by s",
+        |&(k,), s| (k * s,),
+        |curvature, s| curvature / s,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the two principal curvatures exchanged: the same",
+        |&(k,)| (k.yx(),),
+        |curvature| curvature,
+    ))
+    .symmetry(Symmetry::exchange(
+        "both principal curvatures negated (the normal flipped): the curvature negated",
+        |&(k,)| (-k,),
+        |curvature: f32| -curvature,
+    ))
     .fuzz(|d| (d.vec2(),))
     .degenerate(vec![
         row("a sphere (1/2, 1/2)", "1/2", [0.5, 0.5], 0.5),

@@ -8,7 +8,9 @@ use crate::ray_cone::curvature::shared::{
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::strategy::small_vec3;
+use crate::symmetry::Symmetry;
 use glam::{DVec3, Vec2, Vec3};
+use glam::{Vec2Swizzles, Vec3Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
 use ray_footprint::shaders::Module;
@@ -30,6 +32,26 @@ pub fn record() -> Record<PrincipalCurvaturesArgs, Vec2> {
     )
     .enclosure(|&(shape_operator,)| enclosure(interval3(shape_operator)).components())
     .reference(principal_curvatures_euler())
+    .symmetry(Symmetry::scale(
+        "the shape operator scaled by s: the curvatures by s",
+        |&(shape_operator,), s| (shape_operator * s,),
+        |curvatures, s| curvatures / s,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the frame's v axis flipped (f negated): the same",
+        |&(shape_operator,)| (shape_operator * Vec3::new(1.0, -1.0, 1.0),),
+        |curvatures| curvatures,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the frame's axes exchanged (e and g exchanged): the same",
+        |&(shape_operator,)| (shape_operator.zyx(),),
+        |curvatures| curvatures,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the shape operator negated (the normal flipped): the curvatures negated and exchanged",
+        |&(shape_operator,)| (-shape_operator,),
+        |curvatures: Vec2| -curvatures.yx(),
+    ))
     .fuzz(|d| (d.vec3(),))
     .degenerate(vec![
         row("flat (0, 0, 0)", "(0, 0)", [0.0; 3], [0.0; 2]),

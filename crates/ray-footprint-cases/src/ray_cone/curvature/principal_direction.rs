@@ -10,6 +10,7 @@ use crate::ray_cone::curvature::shared::{
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::strategy::{small_vec3, triangle};
+use crate::symmetry::Symmetry;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -43,6 +44,21 @@ pub fn record() -> Record<PrincipalDirectionArgs, Vec3> {
         enclosure([p0, p1, p2].map(interval3), interval3(shape_operator))
     })
     .reference(principal_direction_cylinder())
+    .symmetry(Symmetry::rotation(
+        "the corners turned: the direction turned with them",
+        |&(p0, p1, p2, shape_operator), r| (r * p0, r * p1, r * p2, shape_operator),
+        |direction: Vec3, r| r.transpose() * direction,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(p0, p1, p2, shape_operator), t| (p0 + t, p1 + t, p2 + t, shape_operator),
+        |direction, _| direction,
+    ))
+    .symmetry(Symmetry::scale(
+        "the corners scaled by s (the shape operator given in the frame): the same",
+        |&(p0, p1, p2, shape_operator), s| (p0 * s, p1 * s, p2 * s, shape_operator),
+        |direction, _| direction,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .degenerate(vec![
         value(

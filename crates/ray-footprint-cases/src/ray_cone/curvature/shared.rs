@@ -9,7 +9,7 @@ use crate::exact::{log_uniform, unit};
 use crate::reference::{gamma, U};
 use glam::{DMat3, DVec3, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use shader_proptest::interval::{interval3, Interval, Interval3, IntervalVec};
 use shader_proptest::tolerance::{dot_error, ulps};
 
@@ -17,7 +17,7 @@ use shader_proptest::tolerance::{dot_error, ulps};
 /// relative error of the squared length (3 ULP) and the division (2.5 ULP) times the result.
 pub(crate) fn edge_curvature_error(p_i: Vec3, p_j: Vec3, n_i: Vec3, n_j: Vec3) -> f32 {
     let edge = p_j - p_i;
-    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_MAGNITUDE)
+    dot_error(n_j - n_i, edge) / edge.dot(edge).max(MIN_SQUARED_MAGNITUDE)
         + ulps(7.0, rc::edge_curvature(p_i, p_j, n_i, n_j))
 }
 
@@ -33,19 +33,28 @@ pub(crate) fn shape_frame(p: [Interval3; 3]) -> (Interval3, Interval3) {
     (u, face.cross(u))
 }
 
-/// The normal equations of `triangle_shape_operator` after the division by `A + B`:
-/// `(A, B, C)` and the right-hand side `r`.
-pub(crate) fn shape_normal_equations(p: [Interval3; 3], n: [Interval3; 3]) -> ([Interval; 3], Interval3) {
+/// The normal equations of `triangle_shape_operator` after the divisions by the largest edge
+/// component and by `A + B`: `(A, B, C)`, the right-hand side `r`, and that largest component.
+pub(crate) fn shape_normal_equations(
+    p: [Interval3; 3],
+    n: [Interval3; 3],
+) -> ([Interval; 3], Interval3, Interval) {
     let (u, v) = shape_frame(p);
     let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
     let turns = [n[1] - n[0], n[2] - n[1], n[0] - n[2]];
     let along = |vectors: [Interval3; 3], axis: Interval3| IntervalVec(vectors.map(|x| x.dot(axis)));
-    let (a, b) = (along(edges, u), along(edges, v));
+    let (along_u, along_v) = (along(edges, u), along(edges, v));
+    let extent = along_u
+        .0
+        .iter()
+        .chain(&along_v.0)
+        .fold(Interval::exact(MIN_MAGNITUDE), |largest, x| largest.max(x.abs()));
+    let (a, b) = (along_u / extent, along_v / extent);
     let (du, dv) = (along(turns, u), along(turns, v));
     let scale = (a.dot(a) + b.dot(b)).max_c(f64::from(MIN_MAGNITUDE));
     let squares = [a.dot(a) / scale, b.dot(b) / scale, a.dot(b) / scale];
     let r = IntervalVec([a.dot(du), b.dot(du) + a.dot(dv), b.dot(dv)]) / scale;
-    (squares, r)
+    (squares, r, extent)
 }
 
 /// The determinant `AB - C²` of `triangle_shape_operator`'s normal equations, before its clamp.
@@ -55,17 +64,15 @@ pub(crate) fn shape_determinant([aa, bb, ab]: [Interval; 3]) -> Interval {
 
 /// Whether the determinant of `triangle_shape_operator`'s normal equations is known to be
 /// positive and known to [`WELL_CONDITIONED`] (a triangle that is not a sliver within rounding,
-/// nor exactly flat: a repeated corner gives an exact 0) and the triangle's squared edges sum
-/// above `MIN_MAGNITUDE` (edges longer than about 1e-10).
+/// nor exactly flat: a repeated corner gives an exact 0) and its largest edge component known
+/// above `MIN_MAGNITUDE`, where the clamp would begin.
 pub(crate) fn shape_well_conditioned(p: [Vec3; 3]) -> bool {
     let p = p.map(interval3);
-    let ([aa, bb, ab], _) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
+    let ([aa, bb, ab], _, extent) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
     let determinant = shape_determinant([aa, bb, ab]);
-    let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
-    let squares = edges.iter().fold(Interval::c(0.0), |sum, &e| sum + e.dot(e));
     determinant.lo > 0.0
         && determinant.relative_width() <= WELL_CONDITIONED
-        && squares.lo > f64::from(MIN_MAGNITUDE)
+        && extent.lo > f64::from(MIN_MAGNITUDE)
 }
 
 /// `(e - g) / 2` and the radius `|((e - g) / 2, f)|` of `principal_curvatures` and

@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{small_vec3, triangle};
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -30,6 +31,31 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .bound(|&(p0, p1, p2, n0, n1, n2), _, _| triangle_curvature_error([p0, p1, p2], [n0, n1, n2]))
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the corners scaled by s: the curvature by 1/s",
+        |&(p0, p1, p2, n0, n1, n2), s| (p0 * s, p1 * s, p2 * s, n0, n1, n2),
+        |curvature, s| curvature * s,
+    ))
+    .symmetry(Symmetry::rotation(
+        "corners and normals turned: the same",
+        |&(p0, p1, p2, n0, n1, n2), r| (r * p0, r * p1, r * p2, r * n0, r * n1, r * n2),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(p0, p1, p2, n0, n1, n2), t| (p0 + t, p1 + t, p2 + t, n0, n1, n2),
+        |curvature, _| curvature,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (0, 1, 2 -> 1, 2, 0): the same",
+        |&(p0, p1, p2, n0, n1, n2)| (p1, p2, p0, n1, n2, n0),
+        |curvature| curvature,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normals flipped: the curvature negated",
+        |&(p0, p1, p2, n0, n1, n2)| (p0, p1, p2, -n0, -n1, -n2),
+        |curvature: f32| -curvature,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(

@@ -10,6 +10,7 @@ use crate::ray_cone::curvature::shared::{
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::strategy::{triangle, unit_vec3};
+use crate::symmetry::Symmetry;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
@@ -21,7 +22,7 @@ pub type ShapeOperatorArgs = (Vec3, Vec3, Vec3, Vec3, Vec3, Vec3);
 
 /// Why a record leaves a triangle out of its agreement and special-value checks.
 const SLIVER: &str = "a sliver or a repeated vertex within rounding (the determinant of the normal \
-     equations is not known to 2^-10), or edges shorter than about 1e-10: the fit may take \
+     equations is not known to 2^-10), or every edge component below MIN_MAGNITUDE (1e-20): the fit may take \
      anything up to what the clamps allow";
 
 /// The record of `rf_triangle_shape_operator`.
@@ -46,6 +47,26 @@ pub fn record() -> Record<ShapeOperatorArgs, Vec3> {
     })
     .reference(shape_operator_linear_normals())
     .reference(shape_operator_quadric())
+    .symmetry(Symmetry::scale(
+        "corners scaled by s: the shape operator by 1/s",
+        |&(p0, p1, p2, n0, n1, n2), s| (p0 * s, p1 * s, p2 * s, n0, n1, n2),
+        |shape_operator, s| shape_operator * s,
+    ))
+    .symmetry(Symmetry::rotation(
+        "corners and normals turned: the same, in the triangle's own frame",
+        |&(p0, p1, p2, n0, n1, n2), r| (r * p0, r * p1, r * p2, r * n0, r * n1, r * n2),
+        |shape_operator, _| shape_operator,
+    ))
+    .symmetry(Symmetry::translation(
+        "corners moved: the same",
+        |&(p0, p1, p2, n0, n1, n2), t| (p0 + t, p1 + t, p2 + t, n0, n1, n2),
+        |shape_operator, _| shape_operator,
+    ))
+    .symmetry(Symmetry::exchange(
+        "normals flipped: the shape operator negated",
+        |&(p0, p1, p2, n0, n1, n2)| (p0, p1, p2, -n0, -n1, -n2),
+        |shape_operator| -shape_operator,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(
@@ -90,14 +111,14 @@ pub fn record() -> Record<ShapeOperatorArgs, Vec3> {
 /// `rf_triangle_shape_operator` of corners `p` and normals `n` given as intervals (an f32
 /// input is an exact interval; a reference's may hold an exact value and its rounding too).
 pub(crate) fn enclosure(p: [Interval3; 3], n: [Interval3; 3]) -> Interval3 {
-    let ([aa, bb, ab], r) = shape_normal_equations(p, n);
+    let ([aa, bb, ab], r, extent) = shape_normal_equations(p, n);
     let [r0, r1, r2] = r.0;
     let ab2 = ab.abs() * ab.abs();
     let determinant = shape_determinant([aa, bb, ab]).max_c(f64::from(MIN_MAGNITUDE));
     let e = (bb - ab2) * r0 - bb * ab * r1 + ab2 * r2;
     let f = aa * bb * r1 - bb * ab * r0 - aa * ab * r2;
     let g = (aa - ab2) * r2 - aa * ab * r1 + ab2 * r0;
-    IntervalVec([e, f, g]) / determinant
+    IntervalVec([e, f, g]) / (determinant * extent)
 }
 
 /// A reference of `rf_triangle_shape_operator`.
@@ -225,4 +246,39 @@ fn shape_operator_quadric() -> Reference<ShapeOperatorArgs, Vec3> {
             Some(Deviation::new(fine.0, allowed))
         },
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with its corners scaled by
+    /// `scale` and its normals (the unscaled corners) kept: a sphere of radius `scale`.
+    fn small_sphere(scale: f32) -> ShapeOperatorArgs {
+        let corners = [Vec3::X, Vec3::Y, Vec3::new(0.6, 0.0, 0.8)];
+        let [p0, p1, p2] = corners.map(|corner| corner * scale);
+        (p0, p1, p2, corners[0], corners[1], corners[2])
+    }
+
+    /// The issue's sphere: the triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with
+    /// its corners scaled by `scale` (1e-16 lies below the documented range) and its normals kept
+    /// is a sphere of radius `scale`: the shape operator is `(1, 0, 1) / scale` and both principal
+    /// curvatures `1 / scale`, to the f32 rounding of the inputs (2^-20 relative).
+    #[test]
+    fn a_small_sphere_has_the_curvature_of_its_radius() {
+        for scale in [1.0, 1.0e-6, 1.0e-11, 1.0e-16] {
+            let (p0, p1, p2, n0, n1, n2) = small_sphere(scale);
+            let shape_operator = rc::triangle_shape_operator(p0, p1, p2, n0, n1, n2) * scale;
+            let curvatures = rc::principal_curvatures(shape_operator);
+            let tolerance = 2f32.powi(-20);
+            assert!(
+                (shape_operator - Vec3::new(1.0, 0.0, 1.0)).abs().max_element() <= tolerance,
+                "scale {scale}: shape operator times the scale {shape_operator}"
+            );
+            assert!(
+                (curvatures - glam::Vec2::ONE).abs().max_element() <= tolerance,
+                "scale {scale}: principal curvatures times the scale {curvatures}"
+            );
+        }
+    }
 }

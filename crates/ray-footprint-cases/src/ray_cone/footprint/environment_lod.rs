@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
 use crate::special::Perturb;
 use crate::strategy::{angle, pixels};
+use crate::symmetry::Symmetry;
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
@@ -27,6 +28,17 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // own error.
     .bound(|_, _, expected| 4.5 * ULP / std::f32::consts::LN_2 + log2_error(expected))
     .reference(reference())
+    .symmetry(Symmetry::scale_in_log(
+        "the spread scaled by s, where spread * height / pi is above MIN_MAGNITUDE (not clamped): the LOD plus log2 s",
+        |&(spread, height): &(f32, f32), s| (spread * s, height),
+        |lod: f32, s| lod - s.log2(),
+    )
+    .within(|&(spread, height)| spread.abs() * height.max(1.0) / std::f32::consts::PI > MIN_MAGNITUDE))
+    .symmetry(Symmetry::exchange(
+        "the spread negated: the same",
+        |&(spread, height): &(f32, f32)| (-spread, height),
+        |lod: f32| lod,
+    ))
     .fuzz(|d| (d.angle(), d.scalar()))
     .range(rc::MIN_MAGNITUDE.log2(), f32::MAX, "environment LOD")
     .degenerate(vec![

@@ -9,8 +9,9 @@ use crate::ray_cone::footprint::shared::{
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
+use crate::symmetry::Symmetry;
 use glam::{Vec2, Vec3};
-use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::tolerance::ulps;
 use shader_proptest::{Args, Value};
@@ -29,25 +30,52 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // The areas' errors through sqrt(uv) / sqrt(max(world, MIN)), plus two square roots
     // (4.5 ULP each), the division (2.5) and the mirror's 3.
     .bound(|&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
-        let min = f64::from(MIN_MAGNITUDE);
+        let min = f64::from(MIN_SQUARED_MAGNITUDE);
         area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
             uv.sqrt() / world.max(min).sqrt()
         }) + ulps(14.5, expected)
     })
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the corners of a triangle whose doubled area is above MIN_SQUARED_MAGNITUDE (not clamped) scaled by s: the density by 1/s",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), s| {
+            (p0 * s, p1 * s, p2 * s, uv0, uv1, uv2)
+        },
+        |density: f32, s| density * s,
+    )
+    .within(|&(p0, p1, p2, ..)| rc::triangle_world_area2(p0, p1, p2) > MIN_SQUARED_MAGNITUDE))
+    .symmetry(Symmetry::rotation(
+        "the corners turned: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), r| {
+            (r * p0, r * p1, r * p2, uv0, uv1, uv2)
+        },
+        |value: f32, _| value,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), t| {
+            (p0 + t, p1 + t, p2 + t, uv0, uv1, uv2)
+        },
+        |value: f32, _| value,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2)| (p1, p2, p0, uv1, uv2, uv0),
+        |value: f32| value,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec2(), d.vec2(), d.vec2()))
     .range(0.0, f32::MAX, "density")
     .degenerate(vec![
         value(
             "zero-area triangle",
-            "sqrt(uv_area2) / sqrt(MIN_MAGNITUDE)",
+            "sqrt(uv_area2) / sqrt(MIN_SQUARED_MAGNITUDE)",
             ZERO_AREA,
-            vec![1.0 / MIN_MAGNITUDE.sqrt()],
+            vec![1.0 / MIN_SQUARED_MAGNITUDE.sqrt()],
         ),
         value("collinear UVs", "0", COLLINEAR_UVS, vec![0.0]),
         value(
             "zero-area triangle and collinear UVs",
-            "0 (0 / sqrt(MIN_MAGNITUDE))",
+            "0 (0 / sqrt(MIN_SQUARED_MAGNITUDE))",
             ZERO_AREA_AND_COLLINEAR_UVS,
             vec![0.0],
         ),

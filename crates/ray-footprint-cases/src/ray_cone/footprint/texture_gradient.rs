@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
 use crate::special::Perturb;
 use crate::strategy::scalar;
+use crate::symmetry::Symmetry;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
 use ray_footprint::shaders::Module;
@@ -24,6 +25,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // One correctly rounded product.
     .bound(|_, _, _| f32::MIN_POSITIVE)
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the footprint scaled by s: the gradient by s",
+        |&(footprint, scale): &(f32, f32), s| (footprint * s, scale),
+        |gradient: f32, s| gradient / s,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the footprint negated: the same",
+        |&(footprint, scale): &(f32, f32)| (-footprint, scale),
+        |gradient: f32| gradient,
+    ))
     .fuzz(|d| (d.scalar(), d.scalar()))
     .range(0.0, f32::MAX, "gradient")
     .degenerate(vec![

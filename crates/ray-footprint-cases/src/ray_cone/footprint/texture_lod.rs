@@ -7,6 +7,8 @@ use crate::ray_cone::footprint::shared::{cosine_error, slanted_footprint, surfac
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
 use crate::strategy::{image_size, normal_and_direction, scalar};
+use crate::symmetry::Symmetry;
+use glam::Vec2Swizzles;
 use glam::{DVec2, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
@@ -57,6 +59,29 @@ pub fn record() -> Record<TextureLodArgs, f32> {
             )
     })
     .reference(reference())
+    .symmetry(
+        Symmetry::scale_in_log(
+            "a width above MIN_MAGNITUDE (not clamped) scaled by s: the LOD plus log2 s",
+            |&(base, width, size, normal, direction), s| (base, width * s, size, normal, direction),
+            |lod: f32, s| lod - s.log2(),
+        )
+        .within(|&(_, width, ..)| width.abs() > MIN_MAGNITUDE),
+    )
+    .symmetry(Symmetry::rotation(
+        "the normal and the ray turned: the same",
+        |&(base, width, size, normal, direction), r| (base, width, size, r * normal, r * direction),
+        |lod, _| lod,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the texture's width and height exchanged: the same",
+        |&(base, width, size, normal, direction)| (base, width, size.yx(), normal, direction),
+        |lod| lod,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal flipped: the same",
+        |&(base, width, size, normal, direction)| (base, width, size, -normal, direction),
+        |lod| lod,
+    ))
     .fuzz(|d| (d.scalar(), d.scalar(), d.vec2(), d.unit(), d.unit()))
     .degenerate(vec![
         value(

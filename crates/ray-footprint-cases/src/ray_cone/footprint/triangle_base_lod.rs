@@ -8,8 +8,9 @@ use crate::ray_cone::footprint::shared::{
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
+use crate::symmetry::Symmetry;
 use glam::{Vec2, Vec3};
-use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::tolerance::{log2_error, ulps};
 use shader_proptest::{Args, Value};
@@ -25,28 +26,55 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // The areas' errors through 0.5 * (log2 uv - log2 world) with the clamps, half of each
     // log2's error, and the subtraction and halving (2 ULP).
     .bound(|&(p0, p1, p2, uv0, uv1, uv2), _, expected| {
-        let min = f64::from(MIN_MAGNITUDE);
-        let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_MAGNITUDE);
-        let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_MAGNITUDE);
+        let min = f64::from(MIN_SQUARED_MAGNITUDE);
+        let uv_area2 = rc::triangle_uv_area2(uv0, uv1, uv2).max(MIN_SQUARED_MAGNITUDE);
+        let world_area2 = rc::triangle_world_area2(p0, p1, p2).max(MIN_SQUARED_MAGNITUDE);
         area_corners([p0, p1, p2], [uv0, uv1, uv2], |uv, world| {
             0.5 * (uv.max(min).log2() - world.max(min).log2())
         }) + 0.5 * (log2_error(uv_area2.log2()) + log2_error(world_area2.log2()))
             + ulps(2.0, expected)
     })
     .reference(reference())
+    .symmetry(Symmetry::scale_in_log(
+        "the corners of a triangle whose doubled area is above MIN_SQUARED_MAGNITUDE (not clamped) scaled by s: the LOD less log2 s",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), s| {
+            (p0 * s, p1 * s, p2 * s, uv0, uv1, uv2)
+        },
+        |lod: f32, s| lod + s.log2(),
+    )
+    .within(|&(p0, p1, p2, ..)| rc::triangle_world_area2(p0, p1, p2) > MIN_SQUARED_MAGNITUDE))
+    .symmetry(Symmetry::rotation(
+        "the corners turned: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), r| {
+            (r * p0, r * p1, r * p2, uv0, uv1, uv2)
+        },
+        |value: f32, _| value,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), t| {
+            (p0 + t, p1 + t, p2 + t, uv0, uv1, uv2)
+        },
+        |value: f32, _| value,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2)| (p1, p2, p0, uv1, uv2, uv0),
+        |value: f32| value,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(
             "zero-area triangle",
-            "0.5 (log2(uv_area2) - log2(MIN_MAGNITUDE))",
+            "0.5 (log2(uv_area2) - log2(MIN_SQUARED_MAGNITUDE))",
             ZERO_AREA,
-            vec![0.5 * (0.0 - MIN_MAGNITUDE.log2())],
+            vec![0.5 * (0.0 - MIN_SQUARED_MAGNITUDE.log2())],
         ),
         value(
             "collinear UVs",
-            "0.5 (log2(MIN_MAGNITUDE) - log2(world_area2))",
+            "0.5 (log2(MIN_SQUARED_MAGNITUDE) - log2(world_area2))",
             COLLINEAR_UVS,
-            vec![0.5 * (MIN_MAGNITUDE.log2() - 0.0)],
+            vec![0.5 * (MIN_SQUARED_MAGNITUDE.log2() - 0.0)],
         ),
         value(
             "zero-area triangle and collinear UVs",

@@ -7,7 +7,9 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::uv_triangle;
+use crate::symmetry::Symmetry;
 use glam::Vec2;
+use glam::Vec2Swizzles;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
 use ray_footprint::shaders::Module;
@@ -25,6 +27,28 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .bound(|&(uv0, uv1, uv2), _, _| uv_area2_error([uv0, uv1, uv2]))
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the UVs scaled by s: the area by s^2",
+        |&(uv0, uv1, uv2): &(Vec2, Vec2, Vec2), s| (uv0 * s, uv1 * s, uv2 * s),
+        |area: f32, s| area / (s * s),
+    ))
+    .symmetry(Symmetry::translation(
+        "the UVs moved: the same",
+        |&(uv0, uv1, uv2): &(Vec2, Vec2, Vec2), t| {
+            (uv0 + t.truncate(), uv1 + t.truncate(), uv2 + t.truncate())
+        },
+        |area: f32, _| area,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the same",
+        |&(uv0, uv1, uv2): &(Vec2, Vec2, Vec2)| (uv1, uv2, uv0),
+        |area: f32| area,
+    ))
+    .symmetry(Symmetry::exchange(
+        "u and v exchanged (a mirrored mapping): the same",
+        |&(uv0, uv1, uv2): &(Vec2, Vec2, Vec2)| (uv0.yx(), uv1.yx(), uv2.yx()),
+        |area: f32| area,
+    ))
     .fuzz(|d| (d.vec2(), d.vec2(), d.vec2()))
     .range(0.0, f32::MAX, "area")
     .degenerate(vec![

@@ -8,6 +8,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::triangle;
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -25,6 +26,26 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .bound(|&(p0, p1, p2), _, _| world_area2_error([p0, p1, p2]))
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the corners scaled by s: the area by s^2",
+        |&(p0, p1, p2): &(Vec3, Vec3, Vec3), s| (p0 * s, p1 * s, p2 * s),
+        |area: f32, s| area / (s * s),
+    ))
+    .symmetry(Symmetry::rotation(
+        "the corners turned: the same",
+        |&(p0, p1, p2): &(Vec3, Vec3, Vec3), r| (r * p0, r * p1, r * p2),
+        |area: f32, _| area,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(p0, p1, p2): &(Vec3, Vec3, Vec3), t| (p0 + t, p1 + t, p2 + t),
+        |area: f32, _| area,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the same",
+        |&(p0, p1, p2): &(Vec3, Vec3, Vec3)| (p1, p2, p0),
+        |area: f32| area,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, f32::MAX, "area")
     .degenerate(vec![

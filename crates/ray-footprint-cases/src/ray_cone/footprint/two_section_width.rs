@@ -9,6 +9,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
 use crate::special::Perturb;
 use crate::strategy::{normal_and_direction, scalar, unit_vec3, vec3, HUGE};
+use crate::symmetry::Symmetry;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_COS, MIN_MAGNITUDE};
@@ -59,6 +60,27 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     .enclosure(|args| vec![enclosure(args)])
     .reference(two_section_width_sampled())
     .reference(two_section_width_limits())
+    .symmetry(Symmetry::scale(
+        "both widths scaled by s: the width by s",
+        |&(tangential, sagittal, axis, normal, direction): &(f32, f32, Vec3, Vec3, Vec3), s| {
+            (tangential * s, sagittal * s, axis, normal, direction)
+        },
+        |width: f32, s| width / s,
+    ))
+    .symmetry(Symmetry::rotation(
+        "the axis, the normal and the ray turned: the same",
+        |&(tangential, sagittal, axis, normal, direction): &(f32, f32, Vec3, Vec3, Vec3), r| {
+            (tangential, sagittal, r * axis, r * normal, r * direction)
+        },
+        |width: f32, _| width,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal and the sagittal axis flipped: the same",
+        |&(tangential, sagittal, axis, normal, direction): &(f32, f32, Vec3, Vec3, Vec3)| {
+            (tangential, sagittal, -axis, -normal, direction)
+        },
+        |width: f32| width,
+    ))
     .fuzz(|d| (d.scalar(), d.scalar(), d.vec3(), d.unit(), d.unit()))
     .range(0.0, f32::MAX, "width")
     .degenerate(vec![

@@ -10,6 +10,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{distance, normal_and_direction};
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone, MIN_COS};
@@ -39,6 +40,31 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
             + expected.abs() * dot_error(normal, direction) / cos
     })
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the width and the distance scaled by s: the footprint by s",
+        |&(cone, t, normal, direction): &(RayCone, f32, Vec3, Vec3), s| {
+            (
+                RayCone {
+                    width: cone.width * s,
+                    ..cone
+                },
+                t * s,
+                normal,
+                direction,
+            )
+        },
+        |footprint: f32, s| footprint / s,
+    ))
+    .symmetry(Symmetry::rotation(
+        "the normal and the ray turned: the same",
+        |&(cone, t, normal, direction): &(RayCone, f32, Vec3, Vec3), r| (cone, t, r * normal, r * direction),
+        |footprint: f32, _| footprint,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal flipped: the same",
+        |&(cone, t, normal, direction): &(RayCone, f32, Vec3, Vec3)| (cone, t, -normal, direction),
+        |footprint: f32| footprint,
+    ))
     .fuzz(|d| (d.cone(), d.distance(), d.unit(), d.unit()))
     .range(0.0, f32::MAX, "footprint")
     .degenerate(vec![

@@ -24,6 +24,10 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // relative, 2^-24 absolute for f16 subnormals).
     .bound(|_, _, expected| (expected.abs() / 1024.0).max(1.0 / 16_777_216.0))
     .reference(reference())
+    .without_symmetry(
+        "an encoding into two IEEE halves: the halves' rounding and range depend on the magnitude, \
+         so no scale is exact over the documented range, and a cone has no frame, position or order",
+    )
     .fuzz(|d| (d.cone(),))
     .range(-rc::F16_MAX, rc::F16_MAX, "unpacked half")
     .degenerate(vec![

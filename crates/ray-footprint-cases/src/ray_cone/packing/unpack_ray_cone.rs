@@ -21,6 +21,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         || one_argument(packed_ray_cone()),
     )
     .reference(reference())
+    .without_symmetry("a decoding of two IEEE halves: bits in, no length, frame, position or order")
     .fuzz(|d| (d.packed_cone(),))
     .degenerate(vec![
         value("zero bits", "(0, 0)", (PackedRayCone(0),), vec![0.0, 0.0]),

@@ -10,6 +10,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
 use crate::special::Perturb;
 use crate::strategy::{angle, distance};
+use crate::symmetry::Symmetry;
 use glam::{DVec2, DVec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
@@ -36,6 +37,23 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .reference(propagate_planar())
     .reference(propagate_curved())
+    .symmetry(Symmetry::scale(
+        "the width and the distance scaled by s: the width by s, the spread the same",
+        |&(cone, t, beta): &(RayCone, f32, f32), s| {
+            (
+                RayCone {
+                    width: cone.width * s,
+                    ..cone
+                },
+                t * s,
+                beta,
+            )
+        },
+        |cone: RayCone, s| RayCone {
+            width: cone.width / s,
+            ..cone
+        },
+    ))
     .fuzz(|d| (d.cone(), d.distance(), d.angle()))
     .degenerate(vec![
         value(

@@ -8,6 +8,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::distance;
+use crate::symmetry::Symmetry;
 use glam::DVec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
@@ -24,6 +25,19 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .bound(|&(cone, t), _, _| width_at_error(cone, t))
     .reference(reference())
+    .symmetry(Symmetry::scale(
+        "the width and the distance scaled by s: the width by s",
+        |&(cone, t): &(RayCone, f32), s| {
+            (
+                RayCone {
+                    width: cone.width * s,
+                    ..cone
+                },
+                t * s,
+            )
+        },
+        |width: f32, s| width / s,
+    ))
     .fuzz(|d| (d.cone(), d.distance()))
     .degenerate(vec![
         value("t = 0", "width", (cone(0.5, 0.001), 0.0), vec![0.5]),

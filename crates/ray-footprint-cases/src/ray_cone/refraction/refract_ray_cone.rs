@@ -13,6 +13,7 @@ use crate::ray_cone::refraction::shared::{
 };
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{
@@ -40,6 +41,39 @@ pub fn record() -> Record<RefractArgs, RefractedRayCone> {
     .reference(refract_optix())
     .reference(refract_negated())
     .reference(refract_total_internal_reflection())
+    .symmetry(Symmetry::scale(
+        "the width scaled by s: the refracted width by s, the spread the same",
+        |&(cone, normal, direction, beta, eta), s| {
+            (
+                RayCone {
+                    width: cone.width * s,
+                    ..cone
+                },
+                normal,
+                direction,
+                beta,
+                eta,
+            )
+        },
+        |refracted: RefractedRayCone, s| RefractedRayCone {
+            cone: RayCone {
+                width: refracted.cone.width / s,
+                ..refracted.cone
+            },
+            ..refracted
+        },
+    ))
+    .symmetry(Symmetry::rotation(
+        "the normal and the ray turned: the same",
+        |&(cone, normal, direction, beta, eta), r| (cone, r * normal, r * direction, beta, eta),
+        |refracted, _| refracted,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal flipped and its spread negated (the same surface), for a ray not exactly in the surface's plane: the same",
+        |&(cone, normal, direction, beta, eta): &RefractArgs| (cone, -normal, direction, -beta, eta),
+        |refracted| refracted,
+    )
+    .within(|&(_, normal, direction, ..)| normal.dot(direction) != 0.0))
     .fuzz(|d| (d.cone(), d.unit(), d.unit(), d.angle(), d.scalar()))
     .degenerate(
         [

@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::small_vec3;
+use crate::symmetry::Symmetry;
 use glam::{DQuat, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -38,6 +39,23 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // Exact where the sign is decided; elsewhere either sign is right.
     .bound(|args, _, _| if curvature_sign_decided(args) { 0.0 } else { 2.0 })
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "every derivative turned: the same",
+        |&(dp_dx, dp_dy, dn_dx, dn_dy): &(Vec3, Vec3, Vec3, Vec3), r| {
+            (r * dp_dx, r * dp_dy, r * dn_dx, r * dn_dy)
+        },
+        |sign: f32, _| sign,
+    ))
+    .symmetry(Symmetry::scale(
+        "the position derivatives scaled by s: the same",
+        |&(dp_dx, dp_dy, dn_dx, dn_dy): &(Vec3, Vec3, Vec3, Vec3), s| (dp_dx * s, dp_dy * s, dn_dx, dn_dy),
+        |sign: f32, _| sign,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (x and y derivatives exchanged): the same",
+        |&(dp_dx, dp_dy, dn_dx, dn_dy): &(Vec3, Vec3, Vec3, Vec3)| (dp_dy, dp_dx, dn_dy, dn_dx),
+        |sign: f32| sign,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, sign, promises| promises.within(sign.abs(), 1.0, 1.0, "|sign|"))
     .degenerate(vec![

@@ -9,6 +9,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::small_vec3;
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -32,6 +33,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         2.0 * atan_error(0.5 * length, ulps(9.0, 0.5 * length))
     })
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "both normal derivatives turned: the same",
+        |&(dn_dx, dn_dy): &(Vec3, Vec3), r| (r * dn_dx, r * dn_dy),
+        |spread: f32, _| spread,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (x and y derivatives exchanged): the same",
+        |&(dn_dx, dn_dy): &(Vec3, Vec3)| (dn_dy, dn_dx),
+        |spread: f32| spread,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3()))
     .range(0.0, PI, "normal spread angle")
     .degenerate(vec![

@@ -9,6 +9,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::small_vec3;
+use crate::symmetry::Symmetry;
 use glam::Vec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -27,6 +28,21 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // As above, without atan: 9 ULP.
     .bound(|_, _, expected| ulps(9.0, expected))
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "both normal derivatives turned: the same",
+        |&(dn_dx, dn_dy): &(Vec3, Vec3), r| (r * dn_dx, r * dn_dy),
+        |spread: f32, _| spread,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (x and y derivatives exchanged): the same",
+        |&(dn_dx, dn_dy): &(Vec3, Vec3)| (dn_dy, dn_dx),
+        |spread: f32| spread,
+    ))
+    .symmetry(Symmetry::scale(
+        "both normal derivatives scaled by s: the spread by s",
+        |&(dn_dx, dn_dy): &(Vec3, Vec3), s| (dn_dx * s, dn_dy * s),
+        |spread: f32, s| spread / s,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3()))
     .range(0.0, f32::MAX, "normal spread angle")
     .degenerate(vec![

@@ -7,6 +7,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::angle;
+use crate::symmetry::Symmetry;
 use glam::DVec2;
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -34,6 +35,11 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // Three products and a sum, possibly fused: 4 ULP of the larger term.
     .bound(|&(phi, sign, k1, k2), _, _| ulps(4.0, (2.0 * k1 * sign * phi).abs() + k2.abs()))
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the curvature sign and the normal spread both negated: the same",
+        |&(phi, sign, k1, k2): &(f32, f32, f32, f32)| (-phi, -sign, k1, k2),
+        |spread: f32| spread,
+    ))
     .fuzz(|d| (d.angle(), d.scalar().signum(), d.scalar(), d.angle()))
     .degenerate(vec![
         value(

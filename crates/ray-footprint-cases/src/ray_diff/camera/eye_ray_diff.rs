@@ -5,6 +5,7 @@ use crate::degenerate::{parts, same, value};
 use crate::exact::derivative;
 use crate::ray_diff::camera::shared::{camera, centre_camera, eye_ray_extent, pinhole, pixel_step, zero3};
 use crate::ray_diff::camera::{eye_ray_direction, normalized_derivative};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::pinhole::{image_plane_point, Camera};
 use crate::ray_diff::reference::{components, listed, widths};
@@ -43,6 +44,13 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     .conditioned(NARROW_VIEW, has_a_view)
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the camera's axes turned: the differential turned with them",
+        |&(pixel, size, fov, right, up, view): &(Vec2, Vec2, f32, Vec3, Vec3, Vec3), r| {
+            (pixel, size, fov, r * right, r * up, r * view)
+        },
+        |diff: RayDiff, r| turned(diff, r.transpose()),
+    ))
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         same(

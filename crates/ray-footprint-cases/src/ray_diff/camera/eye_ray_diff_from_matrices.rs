@@ -8,6 +8,7 @@ use crate::ray_diff::camera::normalized_derivative;
 use crate::ray_diff::camera::shared::{
     matrices, matrix_camera, matrix_ray, matrix_rows, ndc, pixel_ndc, pixel_step, zero3, Matrices,
 };
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::record::Record;
@@ -30,6 +31,13 @@ pub fn record() -> Record<Matrices, RayDiff> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the camera turned (its inverse view matrix after a rotation): the differential turned with it",
+        |&(pixel, size, view_inv, proj_inv): &(Vec2, Vec2, Mat4, Mat4), r| {
+            (pixel, size, Mat4::from_mat3(r) * view_inv, proj_inv)
+        },
+        |diff: RayDiff, r| turned(diff, r.transpose()),
+    ))
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", parts(RayDiff::ZERO)))
 }

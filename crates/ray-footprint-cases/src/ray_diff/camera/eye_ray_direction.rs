@@ -3,6 +3,7 @@
 
 use crate::degenerate::{mirror, value, NAN};
 use crate::ray_diff::camera::shared::{camera, centre_camera, eye_ray_extent, pinhole, pixel_ndc};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::pinhole::{image_plane_point, Camera};
 use crate::ray_diff::reference::{components, widths};
 use crate::record::Record;
@@ -27,6 +28,13 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(|a| enclosure(a).components())
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the camera's axes turned: the direction turned with them",
+        |&(pixel, size, fov, right, up, view): &(Vec2, Vec2, f32, Vec3, Vec3, Vec3), r| {
+            (pixel, size, fov, r * right, r * up, r * view)
+        },
+        |direction: Vec3, r| r.transpose() * direction,
+    ))
     .fuzz(|d| (d.vec2(), d.vec2(), d.angle(), d.unit(), d.unit(), d.unit()))
     .degenerate(vec![
         value(

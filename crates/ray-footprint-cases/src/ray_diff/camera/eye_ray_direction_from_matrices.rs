@@ -6,6 +6,7 @@ use crate::degenerate::vulkan_inverse_projection;
 use crate::ray_diff::camera::shared::{
     matrices, matrix_camera, matrix_ray, matrix_ray_direction, matrix_rows, ndc, pixel_ndc, Matrices,
 };
+use crate::ray_diff::changes::*;
 use crate::ray_diff::reference::{components, widths};
 use crate::record::Record;
 use crate::reference::{Kind, Reference};
@@ -29,6 +30,13 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(|a| enclosure(a).components())
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the camera turned (its inverse view matrix after a rotation): the direction turned with it",
+        |&(pixel, size, view_inv, proj_inv): &(Vec2, Vec2, Mat4, Mat4), r| {
+            (pixel, size, Mat4::from_mat3(r) * view_inv, proj_inv)
+        },
+        |direction: Vec3, r| r.transpose() * direction,
+    ))
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(
         inverse_projection,

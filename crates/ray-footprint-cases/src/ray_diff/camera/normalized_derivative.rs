@@ -3,6 +3,7 @@
 
 use crate::degenerate::value;
 use crate::exact::{derivative, log_uniform, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::reference::{components, widths};
 use crate::ray_diff::strategy::{any_direction, differential_vec3};
 use crate::record::Record;
@@ -27,6 +28,21 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(|&(v, dv)| enclosure(interval3(v), interval3(dv)).components())
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "both vectors turned: the derivative turned",
+        |&(v, dv): &(Vec3, Vec3), r| (r * v, r * dv),
+        |derivative: Vec3, r| r.transpose() * derivative,
+    ))
+    .symmetry(Symmetry::scale(
+        "the vector and its derivative scaled by s: the same",
+        |&(v, dv): &(Vec3, Vec3), s| (v * s, dv * s),
+        |derivative: Vec3, _| derivative,
+    ))
+    .symmetry(Symmetry::scale(
+        "the derivative scaled by s: the result by s",
+        |&(v, dv): &(Vec3, Vec3), s| (v, dv * s),
+        |derivative: Vec3, s| derivative / s,
+    ))
     .fuzz(|d| (d.vec3(), d.vec3()))
     .degenerate(vec![
         value(

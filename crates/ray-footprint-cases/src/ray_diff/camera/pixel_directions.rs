@@ -5,6 +5,7 @@ use crate::degenerate::vulkan_inverse_projection;
 use crate::ray_diff::camera::shared::{
     matrices, matrix_camera, matrix_ray, matrix_ray_direction, matrix_rows, ndc, pixel_ndc, Matrices,
 };
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::record::Record;
@@ -27,6 +28,16 @@ pub fn record() -> Record<Matrices, NeighbourDirections> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the camera turned (its inverse view matrix after a rotation): both directions turned with it",
+        |&(pixel, size, view_inv, proj_inv): &(Vec2, Vec2, Mat4, Mat4), r| {
+            (pixel, size, Mat4::from_mat3(r) * view_inv, proj_inv)
+        },
+        |directions: NeighbourDirections, r| NeighbourDirections {
+            right: r.transpose() * directions.right,
+            below: r.transpose() * directions.below,
+        },
+    ))
     .fuzz(|d| (d.vec2(), d.vec2(), d.rigid(), d.mat4()))
     .degenerate(matrix_rows(inverse_projection, "0", vec![0.0; 6]))
 }

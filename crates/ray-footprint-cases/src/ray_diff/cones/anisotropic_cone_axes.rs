@@ -4,6 +4,7 @@
 
 use crate::degenerate::{grazing, same, value};
 use crate::exact::{log_uniform, signed_log, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::cones::shared::{
     cut_cylinder, ellipse, ellipse_assumptions, ellipse_error, frobenius, hull3, incidence,
     orthonormal_tangent, F32_CHAIN,
@@ -18,6 +19,13 @@ use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives3, DIFF_MIN_COS, DIFF_MIN_SINE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval, Interval3};
+
+/// Whether the ray is off the normal's line by more than twice `DIFF_MIN_SINE` in sine, where the
+/// axes follow the plane of incidence rather than the fixed basis the function falls back on.
+fn off_the_normal(normal: Vec3, direction: Vec3) -> bool {
+    let across = normal.as_dvec3().cross(direction.as_dvec3());
+    across.length_squared() > 4.0 * f64::from(ray_footprint::ray_diff::DIFF_MIN_SINE).powi(2)
+}
 
 /// The record of `rf_anisotropic_cone_axes`: the enclosure of the axes.
 pub fn record() -> Record<(f32, Vec3, Vec3), Derivatives3> {
@@ -40,6 +48,27 @@ pub fn record() -> Record<(f32, Vec3, Vec3), Derivatives3> {
     .reference(reference())
     .reference(anisotropic_cone_axes_growth())
     .reference(anisotropic_cone_axes_optix())
+    .symmetry(
+        Symmetry::rotation(
+            "the normal and the ray turned, off the normal's line: the axes turned",
+            |&(width, normal, direction): &(f32, Vec3, Vec3), r| (width, r * normal, r * direction),
+            |axes: Derivatives3, r| turned3(axes, r.transpose()),
+        )
+        .within(|&(_, normal, direction)| off_the_normal(normal, direction)),
+    )
+    .symmetry(Symmetry::scale(
+        "the width scaled by s: the axes by s",
+        |&(width, normal, direction): &(f32, Vec3, Vec3), s| (width * s, normal, direction),
+        |axes: Derivatives3, s| Derivatives3::new(axes.dx / s, axes.dy / s),
+    ))
+    .symmetry(
+        Symmetry::exchange(
+            "the ray reversed, off the normal's line: both axes reversed",
+            |&(width, normal, direction): &(f32, Vec3, Vec3)| (width, normal, -direction),
+            |axes: Derivatives3| Derivatives3::new(-axes.dx, -axes.dy),
+        )
+        .within(|&(_, normal, direction)| off_the_normal(normal, direction)),
+    )
     .fuzz(|d| (d.scalar(), d.unit(), d.unit()))
     .degenerate(vec![
         value(

@@ -4,6 +4,7 @@
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, signed_log, tangent, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::cones::anisotropic_cone_axes;
 use crate::ray_diff::cones::shared::{
     cut_cylinder, ellipse, ellipse_assumptions, ellipse_error, frobenius, incidence, scaled_length, F32_CHAIN,
@@ -73,6 +74,14 @@ pub fn record() -> Record<ConeGradientArgs, Derivatives2> {
     )
     .reference(reference())
     .reference(anisotropic_cone_gradients_isotropic())
+    // Turned or scaled, the gradients are the same too, but the bounds derived from the enclosure
+    // are vacuous for about 1.5% of such cases (above the 1% a check allows), so only the
+    // translation is declared.
+    .symmetry(Symmetry::translation(
+        "the triangle moved: the same",
+        |&(w, d, p0, p1, p2, uv0, uv1, uv2): &(f32, Vec3, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), t| (w, d, p0 + t, p1 + t, p2 + t, uv0, uv1, uv2),
+        |gradients: Derivatives2, _| gradients,
+    ))
     .fuzz(|d| {
         (
             d.scalar(),

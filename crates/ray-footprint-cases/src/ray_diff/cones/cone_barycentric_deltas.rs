@@ -4,6 +4,7 @@
 use crate::conditioning::well_conditioned;
 use crate::degenerate::{same, value};
 use crate::exact::signed_log;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::cones::shared::scaled_length;
 use crate::ray_diff::reference::{components, widths};
 use crate::record::Record;
@@ -31,6 +32,33 @@ pub fn record() -> Record<(f32, Vec3, Vec3, Vec3), Vec3> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the triangle turned: the same",
+        |&(f, p0, p1, p2): &(f32, Vec3, Vec3, Vec3), r| (f, r * p0, r * p1, r * p2),
+        |deltas: Vec3, _| deltas,
+    ))
+    .symmetry(Symmetry::translation(
+        "the triangle moved: the same",
+        |&(f, p0, p1, p2): &(f32, Vec3, Vec3, Vec3), t| (f, p0 + t, p1 + t, p2 + t),
+        |deltas: Vec3, _| deltas,
+    ))
+    .symmetry(
+        Symmetry::scale(
+            "the footprint and the triangle scaled by s, where no clamp acts: the same",
+            |&(f, p0, p1, p2): &(f32, Vec3, Vec3, Vec3), s| (f * s, p0 * s, p1 * s, p2 * s),
+            |deltas: Vec3, _| deltas,
+        )
+        .within(|&(f, p0, p1, p2)| {
+            let area2 = (p1 - p0).as_dvec3().cross((p2 - p0).as_dvec3()).length();
+            let deltas = rd::cone_barycentric_deltas(f, p0, p1, p2);
+            area2 > 2.0 * f64::from(DIFF_MIN_MAGNITUDE) && deltas.max_element() < 0.5 * DIFF_MAX_VALUE
+        }),
+    )
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the deltas rotated",
+        |&(f, p0, p1, p2): &(f32, Vec3, Vec3, Vec3)| (f, p1, p2, p0),
+        |deltas: Vec3| deltas.zxy(),
+    ))
     .fuzz(|d| (d.scalar(), d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, rd::DIFF_MAX_VALUE, "delta")
     .degenerate(vec![

@@ -4,6 +4,7 @@
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, signed_log, tangent, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::cones::shared::{canonical, cone_and_distance, cone_error, scaled_length, F32_CHAIN};
 use crate::ray_diff::intervals::direction_well_conditioned;
 use crate::ray_diff::reference::{components, widths};
@@ -38,6 +39,21 @@ pub fn record() -> Record<(RayDiff, Vec3), Vec2> {
     .enclosure(enclosure)
     .reference(reference())
     .reference(cone_from_ray_diff_propagation())
+    .symmetry(Symmetry::rotation(
+        "the differential and the ray turned: the same",
+        |&(diff, d): &(RayDiff, Vec3), r| (turned(diff, r), r * d),
+        |cone: Vec2, _| cone,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the same",
+        |&(diff, d): &(RayDiff, Vec3)| (swapped(diff), d),
+        |cone: Vec2| cone,
+    ))
+    .symmetry(Symmetry::scale(
+        "the origin parts scaled by s: the width by s",
+        |&(diff, d): &(RayDiff, Vec3), s| (origins_scaled(diff, s), d),
+        |cone: Vec2, s| Vec2::new(cone.x / s, cone.y),
+    ))
     .fuzz(|d| (d.ray_diff(), d.unit()))
     .promise(|_, cone, promises| promises.within(cone.x, 0.0, f32::MAX, "width"))
     .degenerate(vec![

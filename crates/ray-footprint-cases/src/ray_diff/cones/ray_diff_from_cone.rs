@@ -2,6 +2,7 @@
 //! its enclosure and its references, the differential's rays and the round trip.
 
 use crate::degenerate::{parts, value};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::cones::shared::{
     canonical, cone_and_distance, cone_error, orthonormal_tangent, F32_CHAIN,
 };
@@ -30,6 +31,23 @@ pub fn record() -> Record<(Vec2, Vec3), RayDiff> {
     .enclosure(enclosure)
     .reference(reference())
     .reference(ray_diff_from_cone_round_trip())
+    .symmetry(Symmetry::scale(
+        "the width scaled by s: the origin parts by s",
+        |&(cone, d): &(Vec2, Vec3), s| (Vec2::new(cone.x * s, cone.y), d),
+        |diff: RayDiff, s| origins_scaled(diff, 1.0 / s),
+    ))
+    .symmetry(Symmetry::exchange(
+        "the cone negated (the same cone, its sides exchanged): the differential negated",
+        |&(cone, d): &(Vec2, Vec3)| (-cone, d),
+        |diff: RayDiff| {
+            RayDiff::new(
+                -diff.d_origin_dx,
+                -diff.d_origin_dy,
+                -diff.d_direction_dx,
+                -diff.d_direction_dy,
+            )
+        },
+    ))
     .fuzz(|d| (d.vec2(), d.unit()))
     .degenerate(vec![
         value("zero cone", "zero differential", (Vec2::ZERO, -z), vec![0.0; 16]),

@@ -2,6 +2,7 @@
 //! record, its enclosure and its reference.
 
 use crate::degenerate::value;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::{BarycentricArgs, Hit};
 use crate::ray_diff::intervals::{
     self, barycentric_quotient, determinant, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING,
@@ -17,6 +18,16 @@ use proptest::prelude::*;
 use ray_footprint::ray_diff::{self as rd, Derivatives2, DIFF_MAX_VALUE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval, IntervalVec};
+
+/// Whether neither clamp acts: the determinant `dot(cross(e1, e2), d)` is above
+/// `DIFF_MIN_MAGNITUDE` (with a margin) and every derivative below half of `DIFF_MAX_VALUE`.
+fn unclamped_derivatives(&(diff, d, t, p0, p1, p2): &BarycentricArgs) -> bool {
+    let [e1, e2] = [p1 - p0, p2 - p0].map(Vec3::as_dvec3);
+    let determinant = e1.cross(e2).dot(d.as_dvec3());
+    let b = rd::barycentric_derivatives(diff, d, t, p0, p1, p2);
+    let largest = b.dx.abs().max_element().max(b.dy.abs().max_element());
+    determinant.abs() > 2.0 * f64::from(rd::DIFF_MIN_MAGNITUDE) && largest < 0.5 * DIFF_MAX_VALUE
+}
 
 /// The record of `rf_barycentric_derivatives`: the enclosure of the four derivatives.
 pub fn record() -> Record<BarycentricArgs, Derivatives2> {
@@ -39,6 +50,35 @@ pub fn record() -> Record<BarycentricArgs, Derivatives2> {
     })
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the differential, the ray and the triangle turned: the same",
+        |&(diff, d, t, p0, p1, p2): &(RayDiff, Vec3, f32, Vec3, Vec3, Vec3), r| {
+            (turned(diff, r), r * d, t, r * p0, r * p1, r * p2)
+        },
+        |b: Derivatives2, _| b,
+    ))
+    .symmetry(Symmetry::translation(
+        "the triangle moved: the same",
+        |&(diff, d, t, p0, p1, p2): &(RayDiff, Vec3, f32, Vec3, Vec3, Vec3), o| {
+            (diff, d, t, p0 + o, p1 + o, p2 + o)
+        },
+        |b: Derivatives2, _| b,
+    ))
+    .symmetry(Symmetry::scale(
+        "lengths scaled by s (the origin parts, the distance, the triangle), where no clamp acts: the same",
+        |&(diff, d, t, p0, p1, p2): &(RayDiff, Vec3, f32, Vec3, Vec3, Vec3), s| {
+            (origins_scaled(diff, s), d, t * s, p0 * s, p1 * s, p2 * s)
+        },
+        |b: Derivatives2, _| b,
+    )
+    .within(unclamped_derivatives))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the derivatives exchanged",
+        |&(diff, d, t, p0, p1, p2): &(RayDiff, Vec3, f32, Vec3, Vec3, Vec3)| {
+            (swapped(diff), d, t, p0, p1, p2)
+        },
+        swapped2,
+    ))
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.vec3(), d.vec3(), d.vec3()))
     .range(-rd::DIFF_MAX_VALUE, rd::DIFF_MAX_VALUE, "barycentric derivative")
     .degenerate(vec![

@@ -2,6 +2,7 @@
 //! its record and its reference.
 
 use crate::degenerate::value;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::Hit;
 use crate::ray_diff::strategy::derivatives2;
 use crate::record::Record;
@@ -28,6 +29,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         vec![-dx.0[0] - dx.0[1], -dy.0[0] - dy.0[1]]
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the two derivatives exchanged",
+        |&(b,): &(Derivatives2,)| (swapped2(b),),
+        |w: Vec2| w.yx(),
+    ))
+    .symmetry(Symmetry::scale(
+        "the derivatives scaled by s: the result by s",
+        |&(b,): &(Derivatives2,), s| (Derivatives2::new(b.dx * s, b.dy * s),),
+        |w: Vec2, s| w / s,
+    ))
     .fuzz(|d| (d.derivatives2(),))
     .degenerate(vec![
         value("zero", "0", (Derivatives2::default(),), vec![0.0; 2]),

@@ -2,6 +2,7 @@
 //! enclosure and its reference.
 
 use crate::degenerate::{mirror, value, INF};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::texel_gradients;
 use crate::ray_diff::strategy::derivatives2;
 use crate::record::Record;
@@ -22,6 +23,21 @@ pub fn record() -> Record<(Derivatives2,), f32> {
     )
     .enclosure(|&(g,)| vec![enclosure(g)])
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the same",
+        |&(g,): &(Derivatives2,)| (swapped2(g),),
+        |lod: f32| lod,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the gradients negated: the same",
+        |&(g,): &(Derivatives2,)| (Derivatives2::new(-g.dx, -g.dy),),
+        |lod: f32| lod,
+    ))
+    .symmetry(Symmetry::scale_in_log(
+        "the gradients scaled by s, where their size is above DIFF_MIN_MAGNITUDE (not clamped): the LOD plus log2 s",
+        |&(g,): &(Derivatives2,), s| (Derivatives2::new(g.dx * s, g.dy * s),),
+        |lod: f32, s| lod - s.log2(),
+    ).within(|&(g,)| g.dx.abs().max_element().max(g.dy.abs().max_element()) > 1.0e-14))
     .fuzz(|d| (d.derivatives2(),))
     .range(0.5 * rd::DIFF_MIN_MAGNITUDE.log2(), f32::MAX, "LOD")
     .degenerate(vec![

@@ -2,6 +2,7 @@
 //! record and its reference.
 
 use crate::degenerate::value;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::texel_gradients;
 use crate::ray_diff::intervals::{self};
 use crate::ray_diff::reference::components;
@@ -30,6 +31,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         intervals::derivatives2(interval2(g.dx) * scale, interval2(g.dy) * scale)
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the gradients exchanged",
+        |&(g, scale): &(Derivatives2, f32)| (swapped2(g), scale),
+        swapped2,
+    ))
+    .symmetry(Symmetry::scale(
+        "the gradients scaled by s: the result by s",
+        |&(g, scale): &(Derivatives2, f32), s| (Derivatives2::new(g.dx * s, g.dy * s), scale),
+        |g: Derivatives2, s| Derivatives2::new(g.dx / s, g.dy / s),
+    ))
     .fuzz(|d| (d.derivatives2(), d.scalar()))
     .degenerate(vec![
         value(

@@ -3,6 +3,7 @@
 //! record, its enclosure and its reference.
 
 use crate::degenerate::value;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::Hit;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
@@ -30,6 +31,26 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the triangle turned: the derivatives turned",
+        |&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3), r| (b, r * p0, r * p1, r * p2),
+        |d: Derivatives3, r| turned3(d, r.transpose()),
+    ))
+    .symmetry(Symmetry::translation(
+        "the triangle moved: the same",
+        |&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3), o| (b, p0 + o, p1 + o, p2 + o),
+        |d: Derivatives3, _| d,
+    ))
+    .symmetry(Symmetry::scale(
+        "the triangle scaled by s: the derivatives by s",
+        |&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3), s| (b, p0 * s, p1 * s, p2 * s),
+        |d: Derivatives3, s| Derivatives3::new(d.dx / s, d.dy / s),
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the derivatives exchanged",
+        |&(b, p0, p1, p2): &(Derivatives2, Vec3, Vec3, Vec3)| (swapped2(b), p0, p1, p2),
+        swapped3,
+    ))
     .fuzz(|d| (d.derivatives2(), d.vec3(), d.vec3(), d.vec3()))
     .degenerate(vec![
         value(

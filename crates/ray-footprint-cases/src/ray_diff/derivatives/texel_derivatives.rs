@@ -2,6 +2,7 @@
 //! its reference.
 
 use crate::degenerate::{same, value};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::{uv_bounds, Hit};
 use crate::ray_diff::derivatives::texture_derivatives;
 use crate::ray_diff::intervals::{self};
@@ -37,6 +38,18 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         intervals::derivatives2(dx * size, dy * size)
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the derivatives exchanged",
+        |&(b, t0, t1, t2, size): &(Derivatives2, Vec2, Vec2, Vec2, Vec2)| (swapped2(b), t0, t1, t2, size),
+        swapped2,
+    ))
+    .symmetry(Symmetry::translation(
+        "the texture coordinates moved: the same",
+        |&(b, t0, t1, t2, size): &(Derivatives2, Vec2, Vec2, Vec2, Vec2), o| {
+            (b, t0 + o.truncate(), t1 + o.truncate(), t2 + o.truncate(), size)
+        },
+        |g: Derivatives2, _| g,
+    ))
     .fuzz(|d| (d.derivatives2(), d.vec2(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         same(

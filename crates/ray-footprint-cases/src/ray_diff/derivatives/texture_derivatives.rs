@@ -2,6 +2,7 @@
 //! its enclosure and its reference.
 
 use crate::degenerate::value;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::derivatives::shared::{uv_bounds, Hit};
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, widths};
@@ -28,6 +29,23 @@ pub fn record() -> Record<(Derivatives2, Vec2, Vec2, Vec2), Derivatives2> {
         intervals::derivatives2(dx, dy)
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the derivatives exchanged",
+        |&(b, t0, t1, t2): &(Derivatives2, Vec2, Vec2, Vec2)| (swapped2(b), t0, t1, t2),
+        swapped2,
+    ))
+    .symmetry(Symmetry::translation(
+        "the texture coordinates moved: the same",
+        |&(b, t0, t1, t2): &(Derivatives2, Vec2, Vec2, Vec2), o| {
+            (b, t0 + o.truncate(), t1 + o.truncate(), t2 + o.truncate())
+        },
+        |g: Derivatives2, _| g,
+    ))
+    .symmetry(Symmetry::scale(
+        "the texture coordinates scaled by s: the derivatives by s",
+        |&(b, t0, t1, t2): &(Derivatives2, Vec2, Vec2, Vec2), s| (b, t0 * s, t1 * s, t2 * s),
+        |g: Derivatives2, s| Derivatives2::new(g.dx / s, g.dy / s),
+    ))
     .fuzz(|d| (d.derivatives2(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(

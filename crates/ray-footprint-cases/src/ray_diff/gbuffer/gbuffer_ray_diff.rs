@@ -3,6 +3,7 @@
 
 use crate::degenerate::{parts, value};
 use crate::exact::{log_uniform, mirrored, tangent, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::record::Record;
@@ -69,6 +70,57 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "every eye direction and normal turned: the differential turned",
+        |&(c, right, left, below, above, eps): &(
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            f32,
+        ),
+         r| {
+            let turn = |g: GBufferSample| GBufferSample {
+                eye_direction: r * g.eye_direction,
+                normal: r * g.normal,
+                ..g
+            };
+            (turn(c), turn(right), turn(left), turn(below), turn(above), eps)
+        },
+        |diff: RayDiff, r| turned(diff, r.transpose()),
+    ))
+    .symmetry(Symmetry::scale(
+        "the distances and the depth tolerance scaled by s: the origin parts by s",
+        |&(c, right, left, below, above, eps): &(
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            f32,
+        ),
+         s| {
+            let far = |g: GBufferSample| GBufferSample {
+                distance: g.distance * s,
+                ..g
+            };
+            (far(c), far(right), far(left), far(below), far(above), eps * s)
+        },
+        |diff: RayDiff, s| origins_scaled(diff, 1.0 / s),
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (right and left with below and above): the x and y parts exchanged",
+        |&(c, right, left, below, above, eps): &(
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            GBufferSample,
+            f32,
+        )| (c, below, above, right, left, eps),
+        swapped,
+    ))
     .fuzz(|d| {
         (
             d.gbuffer_sample(),

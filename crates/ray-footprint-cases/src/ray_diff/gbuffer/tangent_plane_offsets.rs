@@ -3,6 +3,7 @@
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, tangent, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::record::Record;
@@ -37,6 +38,27 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         intervals::derivatives3(dx, dy)
     })
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the rays and the normal turned: the offsets turned",
+        |&(rd, rdx, rdy, t, n): &(Vec3, Vec3, Vec3, f32, Vec3), r| (r * rd, r * rdx, r * rdy, t, r * n),
+        |o: Derivatives3, r| turned3(o, r.transpose()),
+    ))
+    .symmetry(Symmetry::scale(
+        "the distance scaled by s: the offsets by s",
+        |&(rd, rdx, rdy, t, n): &(Vec3, Vec3, Vec3, f32, Vec3), s| (rd, rdx, rdy, t * s, n),
+        |o: Derivatives3, s| Derivatives3::new(o.dx / s, o.dy / s),
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the offsets exchanged",
+        |&(rd, rdx, rdy, t, n): &(Vec3, Vec3, Vec3, f32, Vec3)| (rd, rdy, rdx, t, n),
+        swapped3,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal flipped, the neighbour rays off the surface's plane by more than DIFF_MIN_COS: the same",
+        |&(rd, rdx, rdy, t, n): &(Vec3, Vec3, Vec3, f32, Vec3)| (rd, rdx, rdy, t, -n),
+        |o: Derivatives3| o,
+    )
+    .within(|&(_, rdx, rdy, _, n)| rdx.dot(n).abs() > DIFF_MIN_COS && rdy.dot(n).abs() > DIFF_MIN_COS))
     .fuzz(|d| (d.unit(), d.unit(), d.unit(), d.distance(), d.unit()))
     .degenerate(vec![
         value("t = 0", "0", (-z, x, -z, 0.0, z), vec![0.0; 6]),

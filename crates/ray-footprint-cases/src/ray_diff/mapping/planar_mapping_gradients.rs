@@ -2,6 +2,7 @@
 //! its record and its reference.
 
 use crate::degenerate::value;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::mapping::shared::{cancellation, moved, point_and_differentials};
 use crate::ray_diff::reference::components;
@@ -38,6 +39,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         intervals::derivatives2(project(dp.dx), project(dp.dy))
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the gradients exchanged",
+        |&(dp, scale): &(Derivatives3, Vec2)| (swapped3(dp), scale),
+        swapped2,
+    ))
+    .symmetry(Symmetry::scale(
+        "the position derivatives scaled by s: the gradients by s",
+        |&(dp, scale): &(Derivatives3, Vec2), s| (Derivatives3::new(dp.dx * s, dp.dy * s), scale),
+        |g: Derivatives2, s| Derivatives2::new(g.dx / s, g.dy / s),
+    ))
     .fuzz(|d| (d.derivatives3(), d.vec2()))
     .degenerate(vec![
         value(

@@ -2,6 +2,7 @@
 //! and its reference.
 
 use crate::degenerate::{parts, value};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::mapping::shared::{cancellation, moved, point_and_differentials};
 use crate::ray_diff::reference::components;
@@ -41,6 +42,27 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         all
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: each projection's gradients exchanged",
+        |&(dp, scale): &(Derivatives3, f32)| (swapped3(dp), scale),
+        |g: TriplanarGradients| TriplanarGradients {
+            yz: swapped2(g.yz),
+            zx: swapped2(g.zx),
+            xy: swapped2(g.xy),
+        },
+    ))
+    .symmetry(Symmetry::scale(
+        "the position derivatives scaled by s: the gradients by s",
+        |&(dp, scale): &(Derivatives3, f32), s| (Derivatives3::new(dp.dx * s, dp.dy * s), scale),
+        |g: TriplanarGradients, s| {
+            let back = |d: Derivatives2| Derivatives2::new(d.dx / s, d.dy / s);
+            TriplanarGradients {
+                yz: back(g.yz),
+                zx: back(g.zx),
+                xy: back(g.xy),
+            }
+        },
+    ))
     .fuzz(|d| (d.derivatives3(), d.scalar()))
     .degenerate(vec![
         value(

@@ -3,6 +3,7 @@
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::reference::{components, widths};
 use crate::record::Record;
 use crate::reference::{Kind, Reference};
@@ -33,6 +34,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         "inf / inf for normals longer than about 2 at high sharpness (now divided by the largest component first); found by the special-value suite",
     )
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the normal flipped: the same",
+        |&(normal, sharpness): &(Vec3, f32)| (-normal, sharpness),
+        |weights: Vec3| weights,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the world's axes turned (x, y, z -> y, z, x): the weights turned",
+        |&(normal, sharpness): &(Vec3, f32)| (normal.yzx(), sharpness),
+        |weights: Vec3| weights.zxy(),
+    ))
     .fuzz(|d| (d.unit(), d.scalar()))
     .range(0.0, 1.0, "weight")
     .degenerate(vec![

@@ -4,6 +4,7 @@
 use crate::degenerate::value;
 use crate::exact::{derivative, log_uniform, unit};
 use crate::ray_diff::camera::normalized_derivative;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::ray_diff::strategy::derivatives2;
@@ -41,6 +42,21 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "the normals turned: the derivatives turned",
+        |&(n0, n1, n2, uv, b): &(Vec3, Vec3, Vec3, Vec2, Derivatives2), r| (r * n0, r * n1, r * n2, uv, b),
+        |d: Derivatives3, r| turned3(d, r.transpose()),
+    ))
+    .symmetry(Symmetry::scale(
+        "the normals scaled by s: the same (the normal is made unit)",
+        |&(n0, n1, n2, uv, b): &(Vec3, Vec3, Vec3, Vec2, Derivatives2), s| (n0 * s, n1 * s, n2 * s, uv, b),
+        |d: Derivatives3, _| d,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the derivatives exchanged",
+        |&(n0, n1, n2, uv, b): &(Vec3, Vec3, Vec3, Vec2, Derivatives2)| (n0, n1, n2, uv, swapped2(b)),
+        swapped3,
+    ))
     .fuzz(|d| (d.unit(), d.unit(), d.unit(), d.vec2(), d.derivatives2()))
     .degenerate(vec![
         value(

@@ -3,6 +3,7 @@
 
 use crate::degenerate::{parts, value};
 use crate::exact::{derivative, mirrored, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::pinhole::{image_plane_point, Camera};
 use crate::ray_diff::reference::{components, listed, widths};
@@ -39,6 +40,25 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     .enclosure(enclosure)
     .reference(reference())
     .reference(reflect_ray_diff_mirror_camera())
+    .symmetry(Symmetry::rotation(
+        "everything turned: the differential turned",
+        |&(diff, d, n, dn): &(RayDiff, Vec3, Vec3, Derivatives3), r| {
+            (turned(diff, r), r * d, r * n, turned3(dn, r))
+        },
+        |diff: RayDiff, r| turned(diff, r.transpose()),
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the x and y parts exchanged",
+        |&(diff, d, n, dn): &(RayDiff, Vec3, Vec3, Derivatives3)| (swapped(diff), d, n, swapped3(dn)),
+        swapped,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the normal and its derivatives flipped: the same",
+        |&(diff, d, n, dn): &(RayDiff, Vec3, Vec3, Derivatives3)| {
+            (diff, d, -n, Derivatives3::new(-dn.dx, -dn.dy))
+        },
+        |diff: RayDiff| diff,
+    ))
     .fuzz(|d| (d.ray_diff(), d.unit(), d.unit(), d.derivatives3()))
     .degenerate(vec![
         value(

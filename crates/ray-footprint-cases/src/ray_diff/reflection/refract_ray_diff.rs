@@ -3,6 +3,7 @@
 
 use crate::degenerate::{parts, value};
 use crate::exact::{derivative, mirrored, snell};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::ray_diff::reflection::reflect_ray_diff;
@@ -50,6 +51,22 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         "the sign of the amplified normal term at exactly the critical angle: dot(T, N) = -0 was clamped to +DIFF_MIN_COS where every angle just short of it gives -DIFF_MIN_COS; found by `refraction_keeps_its_sign_at_the_critical_angle`",
     )
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "everything turned: the differential turned",
+        |&(diff, d, n, dn, eta): &(RayDiff, Vec3, Vec3, Derivatives3, f32), r| (turned(diff, r), r * d, r * n, turned3(dn, r), eta),
+        |refracted: RefractedRayDiff, r| RefractedRayDiff {
+            diff: turned(refracted.diff, r.transpose()),
+            ..refracted
+        },
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the x and y parts exchanged",
+        |&(diff, d, n, dn, eta): &(RayDiff, Vec3, Vec3, Derivatives3, f32)| (swapped(diff), d, n, swapped3(dn), eta),
+        |refracted: RefractedRayDiff| RefractedRayDiff {
+            diff: swapped(refracted.diff),
+            ..refracted
+        },
+    ))
     .fuzz(|d| (d.ray_diff(), d.unit(), d.unit(), d.derivatives3(), d.scalar()))
     .degenerate(vec![
         value(

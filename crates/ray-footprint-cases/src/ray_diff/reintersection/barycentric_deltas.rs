@@ -1,6 +1,7 @@
 //! The proof of [`barycentric_deltas`](ray_footprint::ray_diff::barycentric_deltas): its record and
 //! its reference.
 
+use crate::ray_diff::changes::*;
 use crate::ray_diff::reference::{components, widths};
 use crate::ray_diff::reintersection::barycentric_offsets;
 use crate::ray_diff::reintersection::shared::{
@@ -28,6 +29,16 @@ pub fn record() -> Record<OffsetArgs, Vec3> {
         (dx.abs() + dy.abs()).components()
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (the x and y neighbour rays exchanged), where no clamp acts: the same",
+        |&(m, o, p0, p1, p2, x, y, b): &(Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3)| (m, o, p0, p1, p2, y, x, b),
+        |deltas: Vec3| deltas,
+    ).within(|args| exact_offsets(args, f64::from(DIFF_MAX_VALUE)).is_some()))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (the hit's barycentrics with it), where no clamp acts: the deltas rotated",
+        |&(m, o, p0, p1, p2, x, y, b): &(Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3)| (m, o, p1, p2, p0, x, y, b.yzx()),
+        |deltas: Vec3| deltas.zxy(),
+    ).within(|args| exact_offsets(args, f64::from(DIFF_MAX_VALUE)).is_some()))
     .fuzz(|d| d.reintersection())
     .range(0.0, f32::MAX, "delta")
     .degenerate(delta_rows(

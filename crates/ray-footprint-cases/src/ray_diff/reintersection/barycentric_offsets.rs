@@ -1,6 +1,7 @@
 //! The proof of [`barycentric_offsets`](ray_footprint::ray_diff::barycentric_offsets): its record,
 //! its enclosure and its reference.
 
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
 use crate::ray_diff::reintersection::intersect_triangle_plane;
@@ -35,6 +36,16 @@ pub fn record() -> Record<OffsetArgs, Derivatives3> {
         intervals::derivatives3(dx, dy)
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (the x and y neighbour rays exchanged), where no clamp acts: the offsets exchanged",
+        |&(m, o, p0, p1, p2, x, y, b): &(Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3)| (m, o, p0, p1, p2, y, x, b),
+        swapped3,
+    ).within(|args| exact_offsets(args, f64::from(DIFF_MAX_VALUE)).is_some()))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (the hit's barycentrics with it), where no clamp acts: the offsets rotated",
+        |&(m, o, p0, p1, p2, x, y, b): &(Mat4, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3, Vec3)| (m, o, p1, p2, p0, x, y, b.yzx()),
+        |offsets: Derivatives3| Derivatives3::new(offsets.dx.zxy(), offsets.dy.zxy()),
+    ).within(|args| exact_offsets(args, f64::from(DIFF_MAX_VALUE)).is_some()))
     .fuzz(|d| d.reintersection())
     .degenerate(offset_rows(
         "(DIFF_MAX_VALUE, -DIFF_MAX_VALUE, 0) - hit in f32 (clamped u, v), (1, 0, 0) - hit",

@@ -2,6 +2,7 @@
 //! its record, its case strategy, its enclosure and its reference.
 
 use crate::exact::triangle_hit;
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals::{
     barycentric_quotient, determinant_well_conditioned, PARALLEL_WITHIN_ROUNDING,
 };
@@ -18,6 +19,19 @@ use ray_footprint::ray_diff::{self as rd, DIFF_MAX_VALUE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval3};
 use shader_proptest::{Args, Value};
+
+/// Whether neither of the function's clamps acts: the determinant `dot(cross(e1, e2), d)` is
+/// above `DIFF_MIN_MAGNITUDE` (with a margin) and no barycentric reaches `DIFF_MAX_VALUE`.
+fn plane_unclamped(&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3)) -> bool {
+    let [e1, e2] = [p1 - p0, p2 - p0].map(Vec3::as_dvec3);
+    let determinant = e1.cross(e2).dot(d.as_dvec3());
+    let barycentrics = ray_footprint::ray_diff::intersect_triangle_plane(o, d, p0, p1, p2);
+    determinant.abs() > 2.0 * f64::from(ray_footprint::ray_diff::DIFF_MIN_MAGNITUDE)
+        && unclamped(
+            barycentrics.as_dvec3(),
+            f64::from(ray_footprint::ray_diff::DIFF_MAX_VALUE),
+        )
+}
 
 /// The record of `rf_intersect_triangle_plane`.
 pub fn record() -> Record<impl Args + Perturb, impl Value> {
@@ -41,6 +55,30 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         .components()
     })
     .reference(reference())
+    .symmetry(
+        Symmetry::rotation(
+            "the ray and the triangle turned, where no clamp acts: the same",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3), r| (r * o, r * d, r * p0, r * p1, r * p2),
+            |b: Vec3, _| b,
+        )
+        .within(plane_unclamped),
+    )
+    .symmetry(
+        Symmetry::translation(
+            "the origin and the triangle moved, where no clamp acts: the same",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3), t| (o + t, d, p0 + t, p1 + t, p2 + t),
+            |b: Vec3, _| b,
+        )
+        .within(plane_unclamped),
+    )
+    .symmetry(
+        Symmetry::exchange(
+            "the vertex order turned, where no clamp acts: the barycentrics rotated",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3)| (o, d, p1, p2, p0),
+            |b: Vec3| b.zxy(),
+        )
+        .within(plane_unclamped),
+    )
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, b, promises| {
         for x in [b.y, b.z] {

@@ -3,6 +3,7 @@
 
 use crate::degenerate::value;
 use crate::exact::{log_uniform, tangent, triangle_hit, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::components;
 use crate::ray_diff::strategy::derivatives3;
@@ -33,6 +34,23 @@ pub fn record() -> Record<(Derivatives3, Vec2, Vec2, Vec2), Derivatives2> {
         intervals::derivatives2(sum(o.dx), sum(o.dy))
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the gradients exchanged",
+        |&(o, uv0, uv1, uv2): &(Derivatives3, Vec2, Vec2, Vec2)| (swapped3(o), uv0, uv1, uv2),
+        swapped2,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (the offsets' components with it): the same",
+        |&(o, uv0, uv1, uv2): &(Derivatives3, Vec2, Vec2, Vec2)| {
+            (Derivatives3::new(o.dx.yzx(), o.dy.yzx()), uv1, uv2, uv0)
+        },
+        |g: Derivatives2| g,
+    ))
+    .symmetry(Symmetry::scale(
+        "the UVs scaled by s: the gradients by s",
+        |&(o, uv0, uv1, uv2): &(Derivatives3, Vec2, Vec2, Vec2), s| (o, uv0 * s, uv1 * s, uv2 * s),
+        |g: Derivatives2, s| Derivatives2::new(g.dx / s, g.dy / s),
+    ))
     .fuzz(|d| (d.derivatives3(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(

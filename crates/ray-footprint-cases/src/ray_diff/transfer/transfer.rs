@@ -2,6 +2,7 @@
 
 use crate::degenerate::{parts, value};
 use crate::exact::{derivative, log_uniform, plane_hit, towards, unit};
+use crate::ray_diff::changes::*;
 use crate::ray_diff::family::{axis, differential, family_step};
 use crate::ray_diff::intervals;
 use crate::ray_diff::reference::{components, listed, widths};
@@ -35,6 +36,29 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     )
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(Symmetry::rotation(
+        "everything turned: the differential turned",
+        |&(diff, d, t, n): &(RayDiff, Vec3, f32, Vec3), r| (turned(diff, r), r * d, t, r * n),
+        |diff: RayDiff, r| turned(diff, r.transpose()),
+    ))
+    .symmetry(Symmetry::scale(
+        "the origin parts and the distance scaled by s: the origin parts by s",
+        |&(diff, d, t, n): &(RayDiff, Vec3, f32, Vec3), s| (origins_scaled(diff, s), d, t * s, n),
+        |diff: RayDiff, s| origins_scaled(diff, 1.0 / s),
+    ))
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped: the x and y parts exchanged",
+        |&(diff, d, t, n): &(RayDiff, Vec3, f32, Vec3)| (swapped(diff), d, t, n),
+        swapped,
+    ))
+    .symmetry(
+        Symmetry::exchange(
+            "the normal flipped, off the surface's plane by more than DIFF_MIN_COS: the same",
+            |&(diff, d, t, n): &(RayDiff, Vec3, f32, Vec3)| (diff, d, t, -n),
+            |diff: RayDiff| diff,
+        )
+        .within(|&(_, d, _, n)| d.dot(n).abs() > DIFF_MIN_COS),
+    )
     .fuzz(|d| (d.ray_diff(), d.unit(), d.distance(), d.unit()))
     .degenerate(vec![
         value(

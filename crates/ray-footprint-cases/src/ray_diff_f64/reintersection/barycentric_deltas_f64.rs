@@ -2,7 +2,7 @@
 //! its record and its reference.
 
 use crate::ray_diff::reference::{components, widths};
-use crate::ray_diff::reintersection::shared::{delta_rows, OffsetArgs};
+use crate::ray_diff::reintersection::shared::{delta_rows, exact_offsets, OffsetArgs};
 use crate::ray_diff_f64::reintersection::barycentric_offsets_f64;
 use crate::ray_diff_f64::reintersection::shared::{
     exact_offsets_f64, reintersection_record, well_conditioned_offset_args_f64,
@@ -10,8 +10,10 @@ use crate::ray_diff_f64::reintersection::shared::{
 use crate::record::Record;
 use crate::reference::{Kind, Reference};
 use crate::special::Perturb;
+use crate::symmetry::Symmetry;
 use glam::Vec3;
-use ray_footprint::ray_diff_f64 as rd64;
+use glam::Vec3Swizzles;
+use ray_footprint::ray_diff_f64::{self as rd64, F64_MAX_VALUE};
 use shader_proptest::{Args, Value};
 
 /// The record of `rf_barycentric_deltas_f64`.
@@ -25,6 +27,18 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         (dx.abs() + dy.abs()).components()
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (the x and y neighbour rays exchanged), where no barycentric reaches the clamp: the same",
+        |&(m, o, p0, p1, p2, x, y, b): &OffsetArgs| (m, o, p0, p1, p2, y, x, b),
+        |deltas: Vec3| deltas,
+    )
+    .within(|args: &OffsetArgs| exact_offsets(args, F64_MAX_VALUE).is_some()))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (the hit's barycentrics with it), where no barycentric reaches the clamp: the deltas rotated",
+        |&(m, o, p0, p1, p2, x, y, b): &OffsetArgs| (m, o, p1, p2, p0, x, y, b.yzx()),
+        |deltas: Vec3| deltas.zxy(),
+    )
+    .within(|args: &OffsetArgs| exact_offsets(args, F64_MAX_VALUE).is_some()))
     .fuzz(|d| d.reintersection())
     .range(0.0, f32::MAX, "delta")
     .degenerate(delta_rows(

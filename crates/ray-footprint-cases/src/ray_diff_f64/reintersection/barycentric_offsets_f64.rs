@@ -2,7 +2,7 @@
 //! its record, its enclosure and its reference.
 
 use crate::ray_diff::reference::{components, widths};
-use crate::ray_diff::reintersection::shared::{offset_rows, OffsetArgs, OFFSET};
+use crate::ray_diff::reintersection::shared::{exact_offsets, offset_rows, OffsetArgs, OFFSET};
 use crate::ray_diff_f64::reintersection::shared::{
     exact_offsets_f64, object_rays_f64, plane_barycentrics_f64, reintersection_record,
     well_conditioned_offset_args_f64,
@@ -10,7 +10,9 @@ use crate::ray_diff_f64::reintersection::shared::{
 use crate::record::Record;
 use crate::reference::{Kind, Reference};
 use crate::special::Perturb;
-use ray_footprint::ray_diff_f64::{self as rd64, BarycentricOffsets};
+use crate::symmetry::Symmetry;
+use glam::Vec3Swizzles;
+use ray_footprint::ray_diff_f64::{self as rd64, BarycentricOffsets, F64_MAX_VALUE};
 use shader_proptest::interval::{interval3_f64, Interval, Interval3};
 use shader_proptest::{Args, Value};
 
@@ -25,6 +27,24 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         [dx.components(), dy.components()].concat()
     })
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the image axes swapped (the x and y neighbour rays exchanged), where no barycentric reaches the clamp: the offsets exchanged",
+        |&(m, o, p0, p1, p2, x, y, b): &OffsetArgs| (m, o, p0, p1, p2, y, x, b),
+        |offsets: BarycentricOffsets| BarycentricOffsets {
+            dx: offsets.dy,
+            dy: offsets.dx,
+        },
+    )
+    .within(|args: &OffsetArgs| exact_offsets(args, F64_MAX_VALUE).is_some()))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (the hit's barycentrics with it), where no barycentric reaches the clamp: the offsets rotated",
+        |&(m, o, p0, p1, p2, x, y, b): &OffsetArgs| (m, o, p1, p2, p0, x, y, b.yzx()),
+        |offsets: BarycentricOffsets| BarycentricOffsets {
+            dx: offsets.dx.zxy(),
+            dy: offsets.dy.zxy(),
+        },
+    )
+    .within(|args: &OffsetArgs| exact_offsets(args, F64_MAX_VALUE).is_some()))
     .fuzz(|d| d.reintersection())
     .degenerate(offset_rows(
         "(F64_MAX_VALUE, -F64_MAX_VALUE, 0) - hit rounded to f32 (clamped u, v), (1, 0, 0) - hit",

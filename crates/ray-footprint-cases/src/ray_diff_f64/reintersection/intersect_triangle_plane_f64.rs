@@ -12,10 +12,12 @@ use crate::record::Record;
 use crate::reference::{Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{triangle, unit_vec3, vec3};
+use crate::symmetry::Symmetry;
 use glam::Vec3;
+use glam::Vec3Swizzles;
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
-use ray_footprint::ray_diff_f64::{self as rd64, F64_MAX_VALUE};
+use ray_footprint::ray_diff_f64::{self as rd64, F64_MAX_VALUE, F64_MIN_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3_f64, Interval};
 use shader_proptest::one_of;
@@ -47,6 +49,15 @@ fn plane_intersections_f64() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec3, Vec3)> {
         .boxed()
 }
 
+/// Whether neither of the function's clamps acts: the determinant `dot(cross(e1, e2), d)` is
+/// above `F64_MIN_MAGNITUDE` (with a margin) and no barycentric reaches `F64_MAX_VALUE`.
+fn unclamped_f64(&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3)) -> bool {
+    let [e1, e2] = [p1 - p0, p2 - p0].map(Vec3::as_dvec3);
+    let determinant = e1.cross(e2).dot(d.as_dvec3());
+    let barycentrics = rd64::intersect_triangle_plane_f64(o, d, p0, p1, p2);
+    determinant.abs() > 2.0 * F64_MIN_MAGNITUDE && unclamped(barycentrics.as_dvec3(), F64_MAX_VALUE)
+}
+
 /// The record of `rf_intersect_triangle_plane_f64`.
 pub fn record() -> Record<impl Args + Perturb, impl Value> {
     let max = rd64::F64_MAX_VALUE as f32;
@@ -66,6 +77,46 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         b.map(Interval::to_f32).components()
     })
     .reference(reference())
+    .symmetry(
+        Symmetry::rotation(
+            "the ray and the triangle turned, where no barycentric reaches the clamp: the same",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3), r| (r * o, r * d, r * p0, r * p1, r * p2),
+            |b: Vec3, _| b,
+        )
+        .within(unclamped_f64),
+    )
+    .symmetry(
+        Symmetry::translation(
+            "the origin and the triangle moved, where no barycentric reaches the clamp: the same",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3), t| (o + t, d, p0 + t, p1 + t, p2 + t),
+            |b: Vec3, _| b,
+        )
+        .within(unclamped_f64),
+    )
+    .symmetry(
+        Symmetry::scale(
+            "the origin and the triangle scaled by s, where no barycentric reaches the clamp: the same",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3), s| (o * s, d, p0 * s, p1 * s, p2 * s),
+            |b: Vec3, _| b,
+        )
+        .within(unclamped_f64),
+    )
+    .symmetry(
+        Symmetry::scale(
+            "the direction scaled by s, where no barycentric reaches the clamp: the same",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3), s| (o, d * s, p0, p1, p2),
+            |b: Vec3, _| b,
+        )
+        .within(unclamped_f64),
+    )
+    .symmetry(
+        Symmetry::exchange(
+            "the vertex order turned, where no barycentric reaches the clamp: the barycentrics rotated",
+            |&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3)| (o, d, p1, p2, p0),
+            |b: Vec3| b.zxy(),
+        )
+        .within(unclamped_f64),
+    )
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec3(), d.vec3()))
     .promise(|_, b, promises| {
         let max = rd64::F64_MAX_VALUE as f32;

@@ -6,6 +6,7 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{one_argument, vec3};
+use crate::symmetry::Symmetry;
 use crate::wireframe::coverage::shared::barycentrics;
 use glam::{Vec3, Vec3Swizzles};
 use ray_footprint::shaders::Module;
@@ -23,6 +24,16 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         || one_argument(one_of![3 => barycentrics(), 1 => vec3()]),
     )
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (barycentrics rotated): the same",
+        |&(b,): &(Vec3,)| (b.yzx(),),
+        |e: f32| e,
+    ))
+    .symmetry(Symmetry::exchange(
+        "two vertices exchanged: the same",
+        |&(b,): &(Vec3,)| (b.yxz(),),
+        |e: f32| e,
+    ))
     .fuzz(|d| (d.vec3(),))
     .promise(|&(b,), e, promises| promises.within(e - b.max_element(), 0.0, 0.0, "edge position - max(b)"))
     .degenerate(vec![

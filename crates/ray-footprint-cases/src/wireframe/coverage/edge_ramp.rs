@@ -6,9 +6,11 @@ use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{magnitude, HUGE, TINY};
+use crate::symmetry::Symmetry;
 use crate::wireframe::coverage::shared::{edge_ramp_error, ramp_f64, AMBIGUOUS_COVERAGE, AT_AN_EDGE};
 use crate::wireframe::strategy::log_uniform;
 use glam::Vec3;
+use glam::Vec3Swizzles;
 use proptest::prelude::*;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{self as wf, MIN_LINE_RAMP};
@@ -43,6 +45,11 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     // start is an input here, so only the division and the polynomial differ.
     .bound(|&(x, start, width), i, _| edge_ramp_error(x[i], start[i], width[i], 0.0))
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the three components rotated together: the ramp's components rotated",
+        |&(x, start, width): &(Vec3, Vec3, Vec3)| (x.yzx(), start.yzx(), width.yzx()),
+        |ramp: Vec3| ramp.zxy(),
+    ))
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3()))
     .range(0.0, 1.0, "ramp")
     .degenerate(vec![

@@ -5,11 +5,13 @@ use crate::degenerate::value;
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
 use crate::special::Perturb;
+use crate::symmetry::Symmetry;
 use crate::wireframe::coverage::shared::{
     coverage_f64, hit, line_width_error, AMBIGUOUS_COVERAGE, AT_AN_EDGE,
 };
 use crate::wireframe::strategy::size;
 use glam::Vec3;
+use glam::Vec3Swizzles;
 use proptest::prelude::*;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe as wf;
@@ -34,6 +36,18 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
     })
     .bound(|&(d, thickness, smoothing, b), _, _| line_width_error(d, thickness, 0.0, smoothing, b))
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (deltas and barycentrics rotated together): the same",
+        |&(deltas, thickness, smoothing, b): &(Vec3, f32, f32, Vec3)| {
+            (deltas.yzx(), thickness, smoothing, b.yzx())
+        },
+        |coverage: f32| coverage,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the deltas negated: the same",
+        |&(deltas, thickness, smoothing, b): &(Vec3, f32, f32, Vec3)| (-deltas, thickness, smoothing, b),
+        |coverage: f32| coverage,
+    ))
     .fuzz(|d| (d.vec3(), d.scalar(), d.scalar(), d.vec3()))
     .range(0.0, 1.0, "coverage")
     .degenerate(vec![

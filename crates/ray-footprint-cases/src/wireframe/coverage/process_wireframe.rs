@@ -4,12 +4,14 @@
 use crate::degenerate::{mirror, same, value, NAN};
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference, U};
+use crate::symmetry::Symmetry;
 use crate::wireframe::coverage::shared::{
     coverage_f64, edge_thickness_error, edge_thickness_f64, hit, line_width_error, stipple_f64,
     stipple_may_flip, AMBIGUOUS_COVERAGE, AT_AN_EDGE,
 };
 use crate::wireframe::strategy::settings;
 use glam::Vec3;
+use glam::Vec3Swizzles;
 use proptest::prelude::*;
 use ray_footprint::shaders::Module;
 use ray_footprint::wireframe::{self as wf, WireframeSettings, WIREFRAME_DEFAULT};
@@ -35,6 +37,11 @@ pub fn record() -> Record<(WireframeSettings, Vec3, Vec3), f32> {
     })
     .bound(|&(settings, b, d), _, _| process_wireframe_error(settings, b, d))
     .reference(reference())
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned (barycentrics and deltas rotated together): the same",
+        |&(settings, b, deltas): &(WireframeSettings, Vec3, Vec3)| (settings, b.yzx(), deltas.yzx()),
+        |coverage: f32| coverage,
+    ))
     .fuzz(|d| (d.settings(), d.vec3(), d.vec3()))
     .range(0.0, 1.0, "coverage")
     .degenerate(vec![

@@ -28,6 +28,10 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         },
     )
     .reference(reference())
+    .without_symmetry(
+        "a dash pattern of the edge position clamped to [0, 1]: periodic in it, but a shift by a \
+         period is not exact in f32 and the clamp ends the pattern",
+    )
     .fuzz(|d| (d.int(), d.scalar(), d.scalar()))
     .promise(|_, on, promises| promises.within(on * (1.0 - on), 0.0, 0.0, "stipple * (1 - stipple)"))
     .degenerate(vec![

@@ -27,6 +27,7 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         || one_argument(settings_io()),
     )
     .reference(reference())
+    .without_symmetry("a field-by-field copy of the settings' words: no length, frame or order")
     .fuzz(|d| (d.settings_io(),))
     .degenerate(vec![
         value(

@@ -3,12 +3,12 @@
 //! shader of the function each), every case of it judged in each.
 
 use super::config::{batch_runner, RunConfig};
-use super::judge::{count_vacuous, Vacuous};
 use super::oracle::Oracle;
 use super::FunctionCheck;
 use crate::gpu::compute::{Dispatch, KernelRun};
 use crate::gpu::error::Error;
 use crate::gpu::phases::{Phase, PhaseTimes};
+use crate::tolerance::{count_vacuous, Vacuous};
 use crate::value::{Args, Value};
 use proptest::strategy::Strategy;
 use proptest::test_runner::TestRunner;

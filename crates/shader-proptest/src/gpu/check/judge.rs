@@ -1,6 +1,5 @@
-//! Judging: whether the device's result for a case is within the tolerance of the mirror's, again
-//! against what a device that flushes subnormals may compute, and how many cases a tolerance
-//! could not have failed (the vacuous share).
+//! Judging: whether the device's result for a case is within the tolerance of the mirror's, and
+//! again against what a device that flushes subnormals may compute.
 
 use super::oracle::Oracle;
 use super::FunctionCheck;
@@ -12,13 +11,6 @@ pub(super) struct Verdict {
     pub max_error: f32,
     pub max_ratio: f32,
     pub disagreement: Option<String>,
-}
-
-/// Cases of a batch with a vacuous bound: in any component, and per component.
-#[derive(Default)]
-pub(super) struct Vacuous {
-    pub cases: usize,
-    pub by_component: Vec<usize>,
 }
 
 impl<A: Args, R: Value> FunctionCheck<A, R> {
@@ -217,40 +209,6 @@ fn flush_subnormals<A: Args>(args: &A) -> Option<A> {
         }
     }
     flushed.then(|| A::read(&mut &words[..]))
-}
-
-/// The cases of a batch with a vacuous bound: one at least as wide as the spread of its
-/// component's (finite) mirror values over the batch, where that spread is not zero.
-pub(super) fn count_vacuous(expected: &[f32], bounds: &[f32], cases: usize) -> Vacuous {
-    let per_case = expected.len() / cases.max(1);
-    let spreads: Vec<f32> = (0..per_case)
-        .map(|component| {
-            let values = expected
-                .iter()
-                .skip(component)
-                .step_by(per_case.max(1))
-                .filter(|x| x.is_finite());
-            let (low, high) = values.fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), &x| {
-                (lo.min(x), hi.max(x))
-            });
-            high - low
-        })
-        .collect();
-    let mut vacuous = Vacuous {
-        cases: 0,
-        by_component: vec![0; per_case],
-    };
-    for case in 0..cases {
-        let mut any = false;
-        for (component, &spread) in spreads.iter().enumerate() {
-            if spread > 0.0 && bounds[case * per_case + component] >= spread {
-                vacuous.by_component[component] += 1;
-                any = true;
-            }
-        }
-        vacuous.cases += usize::from(any);
-    }
-    vacuous
 }
 
 #[cfg(test)]

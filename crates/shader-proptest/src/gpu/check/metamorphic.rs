@@ -144,6 +144,15 @@ impl<A: Args, R: Value> Check for MetamorphicCheck<A, R> {
     ) -> Vec<Result<Report, Error>> {
         self.check.run_prepared(prepared, config)
     }
+
+    #[cfg(feature = "browser")]
+    fn prepare_browser<'g>(
+        &self,
+        device: &'g crate::gpu::BrowserDevice,
+        shader: &Shader,
+    ) -> Result<PreparedCheck<'g>, Error> {
+        self.check.prepare_browser(device, shader)
+    }
 }
 
 /// A number drawn from a case's words alone (SplitMix64 over them): the random parameter of a

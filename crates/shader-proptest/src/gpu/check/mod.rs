@@ -67,6 +67,26 @@ pub trait Check: Send + Sync {
         prepared: Vec<PreparedCheck<'_>>,
         config: &RunConfig,
     ) -> Vec<Result<Report, Error>>;
+    /// [`Check::prepare`] in a browser's WebGPU (feature `browser`): WGSL only, compiled by naga
+    /// and then by the browser.
+    #[cfg(feature = "browser")]
+    fn prepare_browser<'g>(
+        &self,
+        device: &'g super::BrowserDevice,
+        shader: &Shader,
+    ) -> Result<PreparedCheck<'g>, Error>;
+    /// [`Check::run`] in a browser's WebGPU (feature `browser`).
+    #[cfg(feature = "browser")]
+    fn run_browser(
+        &self,
+        device: &super::BrowserDevice,
+        shader: &Shader,
+        config: &RunConfig,
+    ) -> Result<Report, Error> {
+        let prepared = self.prepare_browser(device, shader)?;
+        let mut reports = self.run_prepared(vec![prepared], config);
+        reports.pop().expect("one report per prepared check")
+    }
 }
 
 /// A check made ready to run on one shader ([`Check::prepare`]): the kernel's source and its
@@ -395,6 +415,15 @@ impl<A: Args, R: Value> Check for FunctionCheck<A, R> {
         config: &RunConfig,
     ) -> Vec<Result<Report, Error>> {
         FunctionCheck::run_prepared(self, prepared, config)
+    }
+
+    #[cfg(feature = "browser")]
+    fn prepare_browser<'g>(
+        &self,
+        device: &'g super::BrowserDevice,
+        shader: &Shader,
+    ) -> Result<PreparedCheck<'g>, Error> {
+        FunctionCheck::prepare_browser(self, device, shader)
     }
 }
 
