@@ -8,6 +8,7 @@ use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
 use crate::special::Perturb;
 use crate::strategy::{pixels, scalar};
+use crate::symmetry::Symmetry;
 use glam::DVec3;
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
@@ -33,6 +34,33 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         atan_error(ratio, ulps(5.5, ratio))
     })
     .reference(reference())
+    .symmetry(
+        Symmetry::scale(
+            "the plane's height and distance scaled by s, where the distance is not clamped (|D| > MIN_MAGNITUDE): the same angle",
+            |&(plane_height, plane_distance, image_height): &(f32, f32, f32), s| {
+                (plane_height * s, plane_distance * s, image_height)
+            },
+            |angle: f32, _| angle,
+        )
+        .within(|&(_, plane_distance, _)| plane_distance.abs() > MIN_MAGNITUDE),
+    )
+    .symmetry(
+        Symmetry::exchange(
+            "the plane's height and the image's height doubled, where the image height is not clamped (H >= 1): the same pixel",
+            |&(plane_height, plane_distance, image_height): &(f32, f32, f32)| {
+                (2.0 * plane_height, plane_distance, 2.0 * image_height)
+            },
+            |angle: f32| angle,
+        )
+        .within(|&(_, _, image_height)| image_height >= 1.0),
+    )
+    .symmetry(Symmetry::exchange(
+        "the plane's height and distance negated: the same",
+        |&(plane_height, plane_distance, image_height): &(f32, f32, f32)| {
+            (-plane_height, -plane_distance, image_height)
+        },
+        |angle: f32| angle,
+    ))
     .fuzz(|d| (d.scalar(), d.scalar(), d.scalar()))
     .range(0.0, FRAC_PI_2, "spread angle")
     .degenerate(vec![

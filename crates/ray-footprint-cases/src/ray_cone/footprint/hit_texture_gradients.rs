@@ -4,13 +4,14 @@
 
 use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
 use crate::ray_cone::footprint::hit_texture_lod::{
-    areas, face_normal, hit_cases, hit_conditioned, Hit, ILL_CONDITIONED,
+    areas, face_normal, hit_cases, hit_conditioned, unclamped_hit, Hit, ILL_CONDITIONED,
 };
 use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
+use crate::symmetry::Symmetry;
 use glam::{Vec2, Vec3, Vec4};
-use ray_footprint::ray_cone::{self as rc, RayCone, F16_MAX, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, RayCone, F16_MAX, MIN_COS, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval};
 
@@ -37,6 +38,48 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
     .conditioned(ILL_CONDITIONED, hit_conditioned)
     .enclosure(enclosure)
     .reference(reference())
+    .symmetry(
+        Symmetry::scale(
+            "the corners, the cone's width and the hit distance scaled by s, where neither the world area, the width nor the gradient is clamped: the same (the footprint grows by s, the texel density falls by it)",
+            |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs, s| {
+                let cone = RayCone {
+                    width: cone.width * s,
+                    ..cone
+                };
+                (cone, d, t * s, p0 * s, p1 * s, p2 * s, uv0, uv1, uv2)
+            },
+            |gradients: Vec4, _| gradients,
+        )
+        .within(|&(cone, d, t, p0, p1, p2, uv0, uv1, uv2)| {
+            unclamped_hit(cone, t, p0, p1, p2)
+                && rc::hit_texture_gradients(cone, d, t, p0, p1, p2, uv0, uv1, uv2).x < 0.5 * F16_MAX
+                && rc::texel_density(p0, p1, p2, uv0, uv1, uv2) > MIN_MAGNITUDE
+        }),
+    )
+    .symmetry(Symmetry::rotation(
+        "the ray and the corners turned: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs, r| {
+            (cone, r * d, t, r * p0, r * p1, r * p2, uv0, uv1, uv2)
+        },
+        |gradients: Vec4, _| gradients,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs, offset| {
+            (cone, d, t, p0 + offset, p1 + offset, p2 + offset, uv0, uv1, uv2)
+        },
+        |gradients: Vec4, _| gradients,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs| (cone, d, t, p1, p2, p0, uv1, uv2, uv0),
+        |gradients: Vec4| gradients,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the ray reversed: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs| (cone, -d, t, p0, p1, p2, uv0, uv1, uv2),
+        |gradients: Vec4| gradients,
+    ))
     .fuzz(|d| {
         (
             d.cone(),
@@ -59,10 +102,10 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
         ),
         value(
             "zero-area triangle (repeated vertex)",
-            "the face normal is 0: g = |width| / MIN_COS * sqrt(uv_area2) / sqrt(MIN_MAGNITUDE), clamped to about F16_MAX",
+            "the face normal is 0: g = |width| / MIN_COS * sqrt(uv_area2) / sqrt(MIN_SQUARED_MAGNITUDE), clamped to about F16_MAX",
             (narrow, down, 5.0, z0, z1, z2, zuv0, zuv1, zuv2),
             {
-                let density = 1.0f32.sqrt() / MIN_MAGNITUDE.sqrt();
+                let density = 1.0f32.sqrt() / MIN_SQUARED_MAGNITUDE.sqrt();
                 let g = (g / MIN_COS).min(F16_MAX / density.max(MIN_MAGNITUDE)) * density;
                 vec![g, 0.0, 0.0, g]
             },
@@ -109,7 +152,7 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
                 Vec2::new(0.0, 1.0e12),
             ),
             {
-                let density = (1.0e12f32 * 1.0e12).sqrt() / MIN_MAGNITUDE.sqrt();
+                let density = (1.0e12f32 * 1.0e12).sqrt() / MIN_SQUARED_MAGNITUDE.sqrt();
                 let g = (1.0e12f32 / MIN_COS).min(F16_MAX / density.max(MIN_MAGNITUDE)) * density;
                 vec![g, 0.0, 0.0, g]
             },
@@ -140,7 +183,7 @@ fn enclosure(&(cone, direction, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs)
         .dot(interval3(direction))
         .abs()
         .max_c(f64::from(MIN_COS));
-    let density = uv_area2.sqrt() / world_area2.max_c(f64::from(MIN_MAGNITUDE)).sqrt();
+    let density = uv_area2.sqrt() / world_area2.max_c(f64::from(MIN_SQUARED_MAGNITUDE)).sqrt();
     let limit = Interval::c(f64::from(F16_MAX)) / density.max_c(f64::from(MIN_MAGNITUDE));
     let gradient = (width.abs() / cosine).min(limit) * density;
     vec![gradient, Interval::c(0.0), Interval::c(0.0), gradient]
@@ -155,7 +198,7 @@ fn reference() -> Reference<HitGradientArgs, Vec4> {
         |hit, hit_texture_gradients| {
             let got = hit_texture_gradients(hit.gradient_arguments());
             let exact = hit.exact();
-            if exact.areas.0.min(exact.areas.1) < 1.0e2 * f64::from(MIN_MAGNITUDE) {
+            if exact.areas.0.min(exact.areas.1) < 1.0e2 * f64::from(MIN_SQUARED_MAGNITUDE) {
                 // The areas' clamp, a degenerate row's business.
                 return None;
             }

@@ -13,9 +13,10 @@ use crate::ray_cone::strategy::ray_cone;
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
 use crate::strategy::{distance, image_size, triangle, unit_vec3, uv_triangle};
-use glam::{DMat2, DVec2, DVec3, Vec2, Vec3};
+use crate::symmetry::Symmetry;
+use glam::{DMat2, DVec2, DVec3, Vec2, Vec2Swizzles, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_cone::{self as rc, RayCone, MIN_COS, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, RayCone, MIN_COS, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval2, interval3, sum_of_products, Interval, Interval3};
@@ -57,6 +58,55 @@ pub fn record() -> Record<HitLodArgs, f32> {
     })
     .enclosure(|args| vec![enclosure(args)])
     .reference(reference())
+    .symmetry(
+        Symmetry::scale_in_log(
+            "the corners, the cone's width and the hit distance scaled by s, where neither the world area nor the width is clamped: the same (the base LOD falls by log2 s, the width's log2 rises by it)",
+            |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs, s| {
+                let cone = RayCone {
+                    width: cone.width * s,
+                    ..cone
+                };
+                (cone, d, t * s, p0 * s, p1 * s, p2 * s, uv0, uv1, uv2, size)
+            },
+            |lod: f32, _| lod,
+        )
+        .within(|&(cone, _, t, p0, p1, p2, ..)| unclamped_hit(cone, t, p0, p1, p2)),
+    )
+    .symmetry(Symmetry::rotation(
+        "the ray and the corners turned: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs, r| {
+            (cone, r * d, t, r * p0, r * p1, r * p2, uv0, uv1, uv2, size)
+        },
+        |lod: f32, _| lod,
+    ))
+    .symmetry(Symmetry::translation(
+        "the corners moved: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs, offset| {
+            (cone, d, t, p0 + offset, p1 + offset, p2 + offset, uv0, uv1, uv2, size)
+        },
+        |lod: f32, _| lod,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the vertex order turned: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs| {
+            (cone, d, t, p1, p2, p0, uv1, uv2, uv0, size)
+        },
+        |lod: f32| lod,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the ray reversed: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs| {
+            (cone, -d, t, p0, p1, p2, uv0, uv1, uv2, size)
+        },
+        |lod: f32| lod,
+    ))
+    .symmetry(Symmetry::exchange(
+        "the texture's width and height exchanged: the same",
+        |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs| {
+            (cone, d, t, p0, p1, p2, uv0, uv1, uv2, size.yx())
+        },
+        |lod: f32| lod,
+    ))
     .fuzz(|d| {
         (
             d.cone(),
@@ -80,18 +130,18 @@ pub fn record() -> Record<HitLodArgs, f32> {
         ),
         value(
             "zero-area triangle (repeated vertex)",
-            "the face normal is 0: base LOD of MIN_MAGNITUDE's area, |dot| = MIN_COS",
+            "the face normal is 0: base LOD of MIN_SQUARED_MAGNITUDE's area, |dot| = MIN_COS",
             (narrow, down, 5.0, z0, z1, z2, zuv0, zuv1, zuv2, size),
             vec![
-                0.5 * (0.0 - MIN_MAGNITUDE.log2()) + (1.0f32 / 64.0).log2() + 0.5 * (10.0 + 10.0)
+                0.5 * (0.0 - MIN_SQUARED_MAGNITUDE.log2()) + (1.0f32 / 64.0).log2() + 0.5 * (10.0 + 10.0)
                     - MIN_COS.log2(),
             ],
         ),
         value(
             "zero UV area (collinear UVs)",
-            "base LOD 0.5 (log2(MIN_MAGNITUDE) - log2(world_area2))",
+            "base LOD 0.5 (log2(MIN_SQUARED_MAGNITUDE) - log2(world_area2))",
             (narrow, down, 5.0, c0, c1, c2, cuv0, cuv1, cuv2, size),
-            vec![0.5 * (MIN_MAGNITUDE.log2() - 0.0) + (1.0f32 / 64.0).log2() + 0.5 * (10.0 + 10.0) - 0.0],
+            vec![0.5 * (MIN_SQUARED_MAGNITUDE.log2() - 0.0) + (1.0f32 / 64.0).log2() + 0.5 * (10.0 + 10.0) - 0.0],
         ),
         same(
             "t = 0",
@@ -176,7 +226,7 @@ pub(crate) const ILL_CONDITIONED: &str = "the face normal's clamped cosine with 
 pub(crate) fn hit_conditioned(
     &(_, direction, _, p0, p1, p2, uv0, uv1, uv2): &(RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2),
 ) -> bool {
-    let min = f64::from(MIN_MAGNITUDE);
+    let min = f64::from(MIN_SQUARED_MAGNITUDE);
     let p = [p0, p1, p2].map(interval3);
     let (uv_area2, world_area2) = areas(p, [uv0, uv1, uv2]);
     let cosine = face_normal(p)
@@ -186,6 +236,13 @@ pub(crate) fn hit_conditioned(
     well_conditioned(cosine)
         && well_conditioned(uv_area2.max_c(min))
         && well_conditioned(world_area2.max_c(min))
+}
+
+/// Whether a hit is one that a uniform scale scales throughout: the triangle's doubled area above
+/// `MIN_SQUARED_MAGNITUDE` and the cone's width at the hit above `MIN_MAGNITUDE` (neither clamped).
+pub(crate) fn unclamped_hit(cone: RayCone, t: f32, p0: Vec3, p1: Vec3, p2: Vec3) -> bool {
+    rc::triangle_world_area2(p0, p1, p2) > MIN_SQUARED_MAGNITUDE
+        && rc::width_at(cone, t).abs() > MIN_MAGNITUDE
 }
 
 /// The face normal `unit(unit(p1 - p0) x unit(p2 - p0))`, as `face_normal(shape_frame_u(p0, p1), p0, p2)`.
@@ -213,17 +270,18 @@ pub(crate) fn areas(p: [Interval3; 3], uv: [Vec2; 3]) -> (Interval, Interval) {
 /// `rf_hit_texture_lod` in interval arithmetic, in the same order of operations: the base LOD of
 /// the clamped areas, the cone's width at `t`, the texture size and the face normal's cosine.
 fn enclosure(&(cone, direction, t, p0, p1, p2, uv0, uv1, uv2, size): &HitLodArgs) -> Interval {
-    let min = f64::from(MIN_MAGNITUDE);
+    let min_area = f64::from(MIN_SQUARED_MAGNITUDE);
     let p = [p0, p1, p2].map(interval3);
     let (uv_area2, world_area2) = areas(p, [uv0, uv1, uv2]);
-    let base = Interval::c(0.5) * (uv_area2.max_c(min).log2() - world_area2.max_c(min).log2());
+    let base = Interval::c(0.5) * (uv_area2.max_c(min_area).log2() - world_area2.max_c(min_area).log2());
     let width = Interval::exact(cone.width) + Interval::exact(cone.spread_angle) * Interval::exact(t);
     let size = interval2(size).map(|side| side.max_c(1.0));
     let cosine = face_normal(p)
         .dot(interval3(direction))
         .abs()
         .max_c(f64::from(MIN_COS));
-    base + width.abs().max_c(min).log2() + Interval::c(0.5) * (size.0[0].log2() + size.0[1].log2())
+    base + width.abs().max_c(f64::from(MIN_MAGNITUDE)).log2()
+        + Interval::c(0.5) * (size.0[0].log2() + size.0[1].log2())
         - cosine.log2()
 }
 
@@ -416,7 +474,7 @@ fn reference() -> Reference<HitLodArgs, f32> {
             let (cone, d, t, p0, p1, p2, uv0, uv1, uv2) = hit.gradient_arguments();
             let got = hit_texture_lod((cone, d, t, p0, p1, p2, uv0, uv1, uv2, hit.size));
             let exact = hit.exact();
-            if exact.areas.0.min(exact.areas.1) < 1.0e2 * f64::from(MIN_MAGNITUDE) {
+            if exact.areas.0.min(exact.areas.1) < 1.0e2 * f64::from(MIN_SQUARED_MAGNITUDE) {
                 // The areas' clamp, a degenerate row's business.
                 return None;
             }
