@@ -4,7 +4,7 @@
 
 use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
 use crate::ray_cone::footprint::hit_texture_lod::{
-    areas, face_normal, hit_cases, hit_conditioned, unclamped_hit, Hit, ILL_CONDITIONED,
+    areas, face_normal, hit_cases, hit_conditioned, unclamped_hit, Hit, HitGradientArgs, ILL_CONDITIONED,
 };
 use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
 use crate::record::Record;
@@ -14,10 +14,6 @@ use glam::{Vec2, Vec3, Vec4};
 use ray_footprint::ray_cone::{self as rc, RayCone, F16_MAX, MIN_COS, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval};
-
-/// Arguments of `rf_hit_texture_gradients`: the cone, the direction, the hit distance, the
-/// triangle's corners and UVs.
-pub type HitGradientArgs = (RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
 
 /// The record of `rf_hit_texture_gradients`: the enclosure of the gradients.
 pub fn record() -> Record<HitGradientArgs, Vec4> {

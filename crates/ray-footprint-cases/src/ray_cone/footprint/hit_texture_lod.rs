@@ -27,6 +27,10 @@ use std::f64::consts::LN_2;
 /// corners and UVs, the texture size.
 pub type HitLodArgs = (RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2, Vec2);
 
+/// Arguments of `rf_hit_texture_gradients`, the first nine of `rf_hit_texture_lod`: the cone, the
+/// direction, the hit distance, the triangle's corners and UVs.
+pub type HitGradientArgs = (RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
+
 /// The unit right triangle in the xy plane (face normal +Z, the rows' normal) with UVs = xy.
 const UNIT: (Vec3, Vec3, Vec3, Vec2, Vec2, Vec2) =
     (Vec3::ZERO, Vec3::X, Vec3::Y, Vec2::ZERO, Vec2::X, Vec2::Y);
@@ -185,7 +189,7 @@ pub fn record() -> Record<HitLodArgs, f32> {
 /// The arguments both hit functions share: a cone, a direction, a hit distance, a triangle and
 /// its UVs. The direction is random, or meets the triangle's plane at a cosine from head-on to
 /// grazing; the triangle ordinary, scaled, a sliver or of zero area ([`triangle`]).
-pub(crate) fn hit_cases() -> BoxedStrategy<(RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2)> {
+pub(crate) fn hit_cases() -> BoxedStrategy<HitGradientArgs> {
     let cosine = one_of![
         3 => uniform(0.0, 1.0),
         1 => uniform(-6.0, -2.0).prop_map(|e| 10f32.powf(e)),
@@ -223,9 +227,7 @@ pub(crate) const ILL_CONDITIONED: &str = "the face normal's clamped cosine with 
 
 /// Whether the clamped cosine of the face normal with the ray and the clamped doubled areas are
 /// known to [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED) ([`well_conditioned`]).
-pub(crate) fn hit_conditioned(
-    &(_, direction, _, p0, p1, p2, uv0, uv1, uv2): &(RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2),
-) -> bool {
+pub(crate) fn hit_conditioned(&(_, direction, _, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs) -> bool {
     let min = f64::from(MIN_SQUARED_MAGNITUDE);
     let p = [p0, p1, p2].map(interval3);
     let (uv_area2, world_area2) = areas(p, [uv0, uv1, uv2]);
@@ -372,7 +374,7 @@ impl Hit {
     }
 
     /// The arguments of `hit_texture_gradients`.
-    pub(crate) fn gradient_arguments(&self) -> (RayCone, Vec3, f32, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2) {
+    pub(crate) fn gradient_arguments(&self) -> HitGradientArgs {
         let (p, uv) = (self.p, self.uv);
         (
             self.cone,
