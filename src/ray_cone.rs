@@ -17,9 +17,16 @@
 //! the mesh stores them, in either orientation: no function needs them turned towards the ray.
 //! Where the math diverges, the functions clamp with the constants below, so finite inputs give
 //! finite outputs.
+//!
+//! For a texture fetch at a closest hit, [`hit_texture_lod`] (or [`hit_texture_gradients`] for
+//! `textureSampleGrad`) takes what the hit has: the cone at the ray's origin (for a primary ray
+//! [`pinhole_ray_cone`] of [`pixel_spread_angle`], [`pixel_spread_angle_from_proj_inv`] or, for an
+//! image-plane camera, [`pixel_spread_angle_from_image_plane`]), the ray, the hit distance, the
+//! triangle's corners and UVs and the texture's size. The level only matters on a texture with its
+//! mip chain ([`crate::mip`]) sampled with linear minification and mipmap filters.
 
 use bytemuck::{Pod, Zeroable};
-use glam::{Mat4, Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3, Vec4};
 
 /// Smallest `|cos|` between a normal and a direction used as a divisor (grazing-angle clamp).
 pub const MIN_COS: f32 = 1.0e-4;
@@ -163,6 +170,29 @@ pub fn pixel_spread_angle_small(fov_y: f32, image_height: f32) -> f32 {
 /// ```
 pub fn pixel_spread_angle_from_proj_inv(proj_inv: Mat4, image_height: f32) -> f32 {
     (2.0 * proj_inv.y_axis.y.abs() / image_height.max(1.0)).atan()
+}
+
+/// Spread angle of one pixel of an image-plane camera, exact form (RTG Eq. 30): the camera of "Ray
+/// Tracing in One Weekend" and most hobby ray tracers, a plane `plane_height` world units tall at
+/// `plane_distance` from the eye (its lower left corner plus its two spans), whose
+/// `2 tan(fov_y / 2)` is `plane_height / plane_distance`:
+/// `alpha = atan(|plane_height| / (max(|plane_distance|, MIN_MAGNITUDE) * max(image_height, 1)))`.
+/// Only the ratio of the plane's height to its distance matters: scaling both changes nothing.
+///
+/// # Examples
+///
+/// ```
+/// use ray_footprint::ray_cone::{pixel_spread_angle, pixel_spread_angle_from_image_plane};
+///
+/// // "Ray Tracing in One Weekend": a viewport 2 units tall at focal length 1, 225 pixels high:
+/// // a vertical field of view of 2 atan(1) = 90 degrees.
+/// let alpha = pixel_spread_angle_from_image_plane(2.0, 1.0, 225.0);
+/// let from_fov = pixel_spread_angle(std::f32::consts::FRAC_PI_2, 225.0);
+/// assert!((alpha - from_fov).abs() < 1e-6 * alpha);
+/// assert_eq!(alpha, (2.0f32 / 225.0).atan());
+/// ```
+pub fn pixel_spread_angle_from_image_plane(plane_height: f32, plane_distance: f32, image_height: f32) -> f32 {
+    (plane_height.abs() / (plane_distance.abs().max(MIN_MAGNITUDE) * image_height.max(1.0))).atan()
 }
 
 /// Primary cone of a pinhole camera: width 0 at the eye, spread `pixel_spread_angle` (RTG Eq. 30),
@@ -453,13 +483,19 @@ fn shape_frame_u(p0: Vec3, p1: Vec3) -> Vec3 {
     clamped_unit(p1 - p0)
 }
 
-/// Second axis of a triangle's shape frame, given its first, `u` ([`shape_frame_u`]): `v = face × u`,
-/// with the face normal `face = unit(u × unit(p2 - p0))` (counter-clockwise winding). `(u, v, face)` is right-handed.
-/// The edges are made unit length before the cross product so that nothing overflows for
-/// coordinates up to 1e18. A zero-area triangle whose edges are exactly parallel has `v = 0`.
+/// A triangle's unit face normal given the first axis `u` of its shape frame ([`shape_frame_u`]):
+/// `face = unit(u × unit(p2 - p0))`, the normal of the counter-clockwise winding `p0, p1, p2`. The
+/// edges are made unit length before the cross product so that nothing overflows for coordinates
+/// up to 1e18. A zero-area triangle whose edges are exactly parallel has `face = 0`.
+fn face_normal(u: Vec3, p0: Vec3, p2: Vec3) -> Vec3 {
+    clamped_unit(u.cross(clamped_unit(p2 - p0)))
+}
+
+/// Second axis of a triangle's shape frame, given its first, `u` ([`shape_frame_u`]): `v = face × u`
+/// with the face normal `face` ([`face_normal`]). `(u, v, face)` is right-handed. A zero-area
+/// triangle whose edges are exactly parallel has `v = 0`.
 fn shape_frame_v(u: Vec3, p0: Vec3, p2: Vec3) -> Vec3 {
-    let face = clamped_unit(u.cross(clamped_unit(p2 - p0)));
-    face.cross(u)
+    face_normal(u, p0, p2).cross(u)
 }
 
 /// A triangle's shape operator (second fundamental form) `II = [[e, f], [f, g]]`, returned as
@@ -951,6 +987,94 @@ pub fn texture_lod(base_lod: f32, width: f32, texture_size: Vec2, normal: Vec3, 
 /// ```
 pub fn texture_gradient(uv_footprint: f32, tex_grad_scale: f32) -> f32 {
     uv_footprint.abs() * tex_grad_scale.max(0.0)
+}
+
+/// Texture level of detail of a ray cone's hit on a triangle, in one call from what a closest hit
+/// has (RTG Eq. 34): [`texture_lod`] of the triangle's [`triangle_base_lod`], the cone's width at
+/// the hit ([`width_at`]), the texture's size and the triangle's face normal (either orientation).
+///
+/// - `cone`: the cone at the ray's origin; for a primary ray `pinhole_ray_cone(pixel_spread_angle)`.
+/// - `direction`: the unit ray direction, and `t` the hit distance along it.
+/// - `p0, p1, p2`: the triangle's corners, in the space the ray is in.
+/// - `uv0, uv1, uv2`: the texture coordinates the sampler sees (in an atlas, the atlas's, after any
+///   texture transform such as glTF's `KHR_texture_transform`), and `texture_size` the bound
+///   texture's size in texels.
+///
+/// Sample with `textureSampleLevel(texture, sampler, uv, lod)` on a texture with its full mip chain
+/// ([`crate::mip`]) through a sampler whose minification and mipmap filters are linear. A LOD at or
+/// below 0 samples mip 0.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use ray_footprint::ray_cone::{hit_texture_lod, RayCone};
+///
+/// // The 2 m floor tile with a 1024 x 1024 texture spanning it (512 texels per metre), seen head
+/// // on through a cone 1/64 m wide at the hit: 512 / 64 = 8 texels, mip level 3.
+/// let (p0, p1, p2) = (Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -2.0));
+/// let cone = RayCone { width: 1.0 / 64.0, spread_angle: 0.0 };
+/// let lod = hit_texture_lod(cone, Vec3::NEG_Y, 5.0, p0, p1, p2, Vec2::ZERO, Vec2::X, Vec2::Y, Vec2::splat(1024.0));
+/// assert!((lod - 3.0).abs() < 1e-5);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn hit_texture_lod(
+    cone: RayCone,
+    direction: Vec3,
+    t: f32,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    uv0: Vec2,
+    uv1: Vec2,
+    uv2: Vec2,
+    texture_size: Vec2,
+) -> f32 {
+    let normal = face_normal(shape_frame_u(p0, p1), p0, p2);
+    let base_lod = triangle_base_lod(p0, p1, p2, uv0, uv1, uv2);
+    texture_lod(base_lod, width_at(cone, t), texture_size, normal, direction)
+}
+
+/// The `textureSampleGrad` gradients of a ray cone's hit on a triangle, in one call, the twin of
+/// [`hit_texture_lod`] for samplers given gradients: `(ddx.x, ddx.y, ddy.x, ddy.y) = (g, 0, 0, g)`
+/// in UV units, with `g` the cone's slant-corrected footprint ([`world_footprint`] with the face
+/// normal) times the triangle's [`texel_density`] (the ray-cone tutorial's `textureGrad` form).
+/// For a square texture `log2(g * W)` is `hit_texture_lod`'s LOD. `g` is clamped to `<= F16_MAX`
+/// UV units (the footprint to `<= F16_MAX / max(density, MIN_MAGNITUDE)` before the product, so that
+/// it cannot overflow): any gradient above 1 already samples a texture's last level, so the clamp
+/// changes no sample. The arguments are
+/// `hit_texture_lod`'s without the texture size; for anisotropic filtering see
+/// `ray_diff::anisotropic_cone_gradients`.
+///
+/// # Examples
+///
+/// ```
+/// use glam::{Vec2, Vec3, Vec4};
+/// use ray_footprint::ray_cone::{hit_texture_gradients, RayCone};
+///
+/// // The floor tile seen head on through a cone 1/64 m wide: 1/128 UV units (8 texels of 1024).
+/// let (p0, p1, p2) = (Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -2.0));
+/// let cone = RayCone { width: 1.0 / 64.0, spread_angle: 0.0 };
+/// let gradients = hit_texture_gradients(cone, Vec3::NEG_Y, 5.0, p0, p1, p2, Vec2::ZERO, Vec2::X, Vec2::Y);
+/// assert!((gradients - Vec4::new(1.0, 0.0, 0.0, 1.0) / 128.0).abs().max_element() < 1e-8);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn hit_texture_gradients(
+    cone: RayCone,
+    direction: Vec3,
+    t: f32,
+    p0: Vec3,
+    p1: Vec3,
+    p2: Vec3,
+    uv0: Vec2,
+    uv1: Vec2,
+    uv2: Vec2,
+) -> Vec4 {
+    let normal = face_normal(shape_frame_u(p0, p1), p0, p2);
+    let density = texel_density(p0, p1, p2, uv0, uv1, uv2);
+    let footprint = world_footprint(cone, t, normal, direction).min(F16_MAX / density.max(MIN_MAGNITUDE));
+    let gradient = footprint * density;
+    Vec4::new(gradient, 0.0, 0.0, gradient)
 }
 
 /// Level of detail for a latitude-longitude environment map `map_height` texels tall (RTG ch. 21,

@@ -104,7 +104,32 @@ const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, thickness) == 8)
 const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, stipple) == 16);
 const _: () = assert!(std::mem::offset_of!(WireframeSettingsIo, screen_space) == 28);
 
-/// Preset "default" (wireframe tutorial): a 1-pixel anti-aliased solid line.
+/// Preset "default" (wireframe tutorial): an anti-aliased solid line about 2 pixels of ink wide
+/// across an edge, a 1-pixel core (half a pixel on each triangle's side) fading over 1 more pixel
+/// on each side. For a hard 1-pixel line, set `smoothing` to 0.
+///
+/// Each triangle covers `b < 0.5 d` fully and ramps down until `b = 1.5 d` (`d` the barycentric
+/// change per pixel), so the two triangles of an edge ink `1 + 2 * 0.5 = 2` pixels.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::wireframe::{process_wireframe, WIREFRAME_DEFAULT};
+///
+/// // The ink of one triangle's side of an edge, summed over 1/100-pixel steps away from it with
+/// // barycentric changes of 0.01 per pixel: 1 pixel, so 2 for the edge's two triangles.
+/// let deltas = Vec3::splat(0.01);
+/// let ink: f32 = (0..1000)
+///     .map(|i| (i as f32 + 0.5) / 100.0)
+///     .map(|pixels| process_wireframe(WIREFRAME_DEFAULT, Vec3::new(0.5, 0.01 * pixels, 0.5), deltas) / 100.0)
+///     .sum();
+/// assert!((2.0 * ink - 2.0).abs() < 0.01);
+/// // Smoothing 0 makes it a hard line of 1 pixel.
+/// let hard = ray_footprint::wireframe::WireframeSettings { smoothing: 0.0, ..WIREFRAME_DEFAULT };
+/// assert_eq!(process_wireframe(hard, Vec3::new(0.5, 0.0049, 0.5), deltas), 1.0);
+/// assert_eq!(process_wireframe(hard, Vec3::new(0.5, 0.0051, 0.5), deltas), 0.0);
+/// ```
 pub const WIREFRAME_DEFAULT: WireframeSettings = WireframeSettings {
     thickness_var: Vec2::new(1.0, 1.0),
     thickness: 1.0,

@@ -24,6 +24,7 @@ const TOGETHER: &[&str] = &[
     "downstream-naga-oil",
     "downstream-shader-proptest-user",
     "downstream-slang-build-script",
+    "downstream-textured-ray-tracer",
     "downstream-wgpu-compute",
 ];
 
@@ -213,6 +214,19 @@ fn wgpu_compute_shader_agrees_with_the_mirror() {
             "WGSL modules pasted in front: 4096 cases",
             "WESL package imported by path: 4096 cases",
         ],
+    );
+}
+
+/// A hobby ray tracer's first cone LOD: an image-plane camera and triangles traced in one wgpu
+/// compute shader on lavapipe, its brick texture sampled at mip 0 and at `rf_hit_texture_lod`'s
+/// level (mips from `generate_mipmaps`), each image's PSNR against 8 x 8 rays per pixel. The crate
+/// fails unless the cone's image gains at least 6 dB at both sizes and its marked lines (what cone
+/// LOD adds or changes) are at most 20; it prints both.
+#[test]
+fn textured_ray_tracer_gains_from_cone_lod() {
+    run_together(
+        "textured-ray-tracer",
+        &["cone LOD takes", "320 x 240: PSNR", "480 x 360: PSNR"],
     );
 }
 

@@ -114,6 +114,13 @@ float rf_pixel_spread_angle_from_proj_inv(float4x4 proj_inv, float image_height)
     return atan(2.0 * abs(proj_inv[1][1]) / max(image_height, 1.0));
 }
 
+// Spread angle of one pixel of an image-plane camera (a plane plane_height tall at plane_distance
+// from the eye; RTG Eq. 30): atan(|h| / (max(|d|, RF_MIN_MAGNITUDE) max(H, 1))).
+float rf_pixel_spread_angle_from_image_plane(float plane_height, float plane_distance,
+    float image_height) {
+    return atan(abs(plane_height) / (max(abs(plane_distance), RF_MIN_MAGNITUDE) * max(image_height, 1.0)));
+}
+
 // A pinhole camera's primary cone: width 0, spread angle = the pixel spread angle.
 RfRayCone rf_pinhole_ray_cone(float pixel_spread_angle) {
     RfRayCone cone = { 0.0, pixel_spread_angle };
@@ -207,10 +214,15 @@ float3 rf_shape_frame_u(float3 p0, float3 p1) {
     return rf_clamped_unit(p1 - p0);
 }
 
-// Second axis of a triangle's shape frame, given its first u: v = face x u, face = unit(u x unit(p2 - p0)).
+// A triangle's unit face normal given its frame's first axis u: unit(u x unit(p2 - p0)), the
+// normal of the counter-clockwise winding; 0 for a zero-area triangle with parallel edges.
+float3 rf_face_normal(float3 u, float3 p0, float3 p2) {
+    return rf_clamped_unit(cross(u, rf_clamped_unit(p2 - p0)));
+}
+
+// Second axis of a triangle's shape frame, given its first u: v = face x u (rf_face_normal).
 float3 rf_shape_frame_v(float3 u, float3 p0, float3 p2) {
-    float3 face = rf_clamped_unit(cross(u, rf_clamped_unit(p2 - p0)));
-    return cross(face, u);
+    return cross(rf_face_normal(u, p0, p2), u);
 }
 
 // A triangle's shape operator II = [[e, f], [f, g]] as (e, f, g) in the frame (u, v), fitted to
@@ -393,6 +405,28 @@ float rf_texture_lod(float base_lod, float width, float2 texture_size, float3 no
 // ddx = float2(g, 0) and ddy = float2(0, g).
 float rf_texture_gradient(float uv_footprint, float tex_grad_scale) {
     return abs(uv_footprint) * max(tex_grad_scale, 0.0);
+}
+
+// Texture LOD of a ray cone's hit on a triangle in one call (RTG Eq. 34): rf_texture_lod of the
+// triangle's base LOD, the cone's width at t, the texture size and the face normal. cone: at the ray's
+// origin; uv: the coordinates the sampler sees; texture_size: the bound texture's, in texels.
+float rf_hit_texture_lod(RfRayCone cone, float3 direction, float t, float3 p0, float3 p1,
+    float3 p2, float2 uv0, float2 uv1, float2 uv2, float2 texture_size) {
+    float3 normal = rf_face_normal(rf_shape_frame_u(p0, p1), p0, p2);
+    float base_lod = rf_triangle_base_lod(p0, p1, p2, uv0, uv1, uv2);
+    return rf_texture_lod(base_lod, rf_width_at(cone, t), texture_size, normal, direction);
+}
+
+// The textureSampleGrad gradients of the same hit, (ddx, ddy) = ((g, 0), (0, g)) in UV units:
+// g = rf_world_footprint with the face normal times rf_texel_density, g clamped to <= RF_F16_MAX
+// (the footprint to <= RF_F16_MAX / max(density, RF_MIN_MAGNITUDE) first): past 1 no sample changes.
+float4 rf_hit_texture_gradients(RfRayCone cone, float3 direction, float t, float3 p0, float3 p1,
+    float3 p2, float2 uv0, float2 uv1, float2 uv2) {
+    float3 normal = rf_face_normal(rf_shape_frame_u(p0, p1), p0, p2);
+    float density = rf_texel_density(p0, p1, p2, uv0, uv1, uv2);
+    float footprint = min(rf_world_footprint(cone, t, normal, direction), RF_F16_MAX / max(density, RF_MIN_MAGNITUDE));
+    float gradient = footprint * density;
+    return float4(gradient, 0.0, 0.0, gradient);
 }
 
 // LOD in a lat-long environment map (RTG ch. 21): log2(max(|spread| H / pi, RF_MIN_MAGNITUDE)).

@@ -81,7 +81,9 @@ struct RfWireframePushConstants {
     RfWireframeSettingsIo settings;
 };
 
-// Preset "default" (wireframe tutorial): a 1-pixel anti-aliased solid line.
+// Preset "default" (wireframe tutorial): an anti-aliased solid line about 2 pixels of ink wide
+// across an edge, a 1-pixel core (half a pixel on each triangle's side) fading over 1 more pixel on
+// each side. For a hard 1-pixel line, set smoothing to 0.
 static const RfWireframeSettings RF_WIREFRAME_DEFAULT = { float2(1.0, 1.0), 1.0, 1.0, false, 0.5, 5, true };
 // Preset "wire dot": as the default with a ramp half as wide.
 static const RfWireframeSettings RF_WIREFRAME_WIRE_DOT = { float2(1.0, 1.0), 1.0, 0.5, false, 0.5, 5, true };

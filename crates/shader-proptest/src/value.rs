@@ -339,7 +339,7 @@ macro_rules! args_tuple {
     };
 }
 
-/// Invokes `$tuple_impl!` once per tuple size that [`Args`] is implemented for (1 to 8), with that
+/// Invokes `$tuple_impl!` once per tuple size that [`Args`] is implemented for (1 to 10), with that
 /// many type-parameter names (`A`, then `A, B`, ...): a trait implemented for argument tuples
 /// covers the same sizes as [`Args`].
 #[macro_export]
@@ -353,6 +353,8 @@ macro_rules! for_each_args_tuple {
         $tuple_impl!(A, B, C, D, E, F);
         $tuple_impl!(A, B, C, D, E, F, G);
         $tuple_impl!(A, B, C, D, E, F, G, H);
+        $tuple_impl!(A, B, C, D, E, F, G, H, I);
+        $tuple_impl!(A, B, C, D, E, F, G, H, I, J);
     };
 }
 
