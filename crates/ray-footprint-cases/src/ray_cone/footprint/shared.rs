@@ -4,6 +4,7 @@
 //! slanted footprint, the error of an f32 cosine, and triangles mapped to UV by a known affine
 //! map.
 
+use crate::conditioning::WELL_CONDITIONED;
 use crate::exact::{heron_area2, log_uniform, plane_hit, signed_log, towards, unit};
 use crate::ray_cone::bound::unit_excess;
 use crate::reference::gamma;
@@ -45,6 +46,22 @@ pub fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) ->
                 .abs()
         })
         .fold(0.0, f64::max) as f32
+}
+
+/// Whether both doubled areas of a triangle are known to
+/// [`WELL_CONDITIONED`](crate::conditioning::WELL_CONDITIONED) of themselves ([`world_area2_error`],
+/// [`uv_area2_error`]); an area computed exactly, a repeated vertex's 0 among them, is. A quotient
+/// of the areas is ill-conditioned elsewhere: a device that fuses the cross product's multiply and
+/// subtraction leaves a residual area of a repeated vertex that depends on the vertex order.
+pub(crate) fn areas_known(&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs) -> bool {
+    let known = |area: f32, error: f32| f64::from(error) <= WELL_CONDITIONED * f64::from(area);
+    known(
+        rc::triangle_world_area2(p0, p1, p2),
+        world_area2_error([p0, p1, p2]),
+    ) && known(
+        rc::triangle_uv_area2(uv0, uv1, uv2),
+        uv_area2_error([uv0, uv1, uv2]),
+    )
 }
 
 /// A triangle's vertices ([`triangle`]), then its UVs ([`uv_triangle`]), as six arguments.
