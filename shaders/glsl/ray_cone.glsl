@@ -232,7 +232,7 @@ vec3 rf_triangle_shape_operator(vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec
     float e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
     float f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
     float g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
-    return vec3(e, f, g) / (determinant * extent);
+    return vec3(e, f, g) / determinant / extent;
 }
 
 // Normal curvature along the unit direction projected into the triangle's plane (Euler's formula):

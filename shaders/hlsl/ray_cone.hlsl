@@ -258,7 +258,7 @@ float3 rf_triangle_shape_operator(float3 p0, float3 p1, float3 p2, float3 n0, fl
     float e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
     float f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
     float g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
-    return float3(e, f, g) / (determinant * extent);
+    return float3(e, f, g) / determinant / extent;
 }
 
 // Normal curvature along the unit direction projected into the triangle's plane (Euler's formula):

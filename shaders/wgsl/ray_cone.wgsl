@@ -241,7 +241,7 @@ fn rf_triangle_shape_operator(
     let e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
     let f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
     let g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
-    return vec3<f32>(e, f, g) / (determinant * extent);
+    return vec3<f32>(e, f, g) / determinant / extent;
 }
 
 // Normal curvature along the unit direction projected into the triangle's plane (Euler's formula):

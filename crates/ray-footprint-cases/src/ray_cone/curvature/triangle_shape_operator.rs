@@ -118,7 +118,7 @@ pub(crate) fn enclosure(p: [Interval3; 3], n: [Interval3; 3]) -> Interval3 {
     let e = (bb - ab2) * r0 - bb * ab * r1 + ab2 * r2;
     let f = aa * bb * r1 - bb * ab * r0 - aa * ab * r2;
     let g = (aa - ab2) * r2 - aa * ab * r1 + ab2 * r0;
-    IntervalVec([e, f, g]) / (determinant * extent)
+    IntervalVec([e, f, g]) / determinant / extent
 }
 
 /// A reference of `rf_triangle_shape_operator`.
