@@ -522,9 +522,9 @@ fn shape_frame_v(u: Vec3, p0: Vec3, p2: Vec3) -> Vec3 {
 ///
 /// Clamps: `extent`, `A + B` and the determinant are kept at least `MIN_MAGNITUDE`; a zero-area triangle
 /// whose edges are exactly parallel (or coincident vertices) gives `(0, 0, 0)`, a flat one. The
-/// solution is divided by the determinant and then by `extent`, never by their product, which
-/// for two clamped values (1e-40) is below the smallest normal float, and which a device that
-/// flushes subnormals to zero would turn into a division by 0. A nearly
+/// solution's divisor, the determinant times `extent`, is kept at least `MIN_SQUARED_MAGNITUDE`: two
+/// clamped values multiply to 1e-40, below the smallest normal float, which a device that flushes
+/// subnormals to zero or divides through reciprocals turns into `0 * inf` (NaN). A nearly
 /// degenerate sliver is ill-conditioned: its error grows as the inverse of the determinant.
 ///
 /// One shape operator serves every ray that meets the triangle: compute it once per hit (or store
@@ -560,7 +560,7 @@ pub fn triangle_shape_operator(p0: Vec3, p1: Vec3, p2: Vec3, n0: Vec3, n1: Vec3,
     let e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
     let f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
     let g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
-    Vec3::new(e, f, g) / determinant / extent
+    Vec3::new(e, f, g) / (determinant * extent).max(MIN_SQUARED_MAGNITUDE)
 }
 
 /// Normal curvature of a triangle along `direction`: `k = II(d, d) / |d|²` with `d = (a, b)` the

@@ -205,7 +205,8 @@ fn rf_shape_frame_v(u: vec3<f32>, p0: vec3<f32>, p2: vec3<f32>) -> vec3<f32> {
 // the vertex normals by least squares (Rusinkiewicz 2004, Sec. 3): per edge II (a, b) = (du, dv);
 // edge components divided by the largest of them first (at least RF_MIN_MAGNITUDE), so that the
 // fit is the same at every scale; normal equations over A + B, solved by cofactors, the solution
-// divided by that largest component; A + B and the determinant clamped to RF_MIN_MAGNITUDE.
+// divided by that largest component; A + B and the determinant clamped to RF_MIN_MAGNITUDE, their
+// divisor (determinant times that component) to RF_MIN_SQUARED_MAGNITUDE.
 // Positive where the surface bends away from the normals; (0, 0, 0) for a zero-area triangle with
 // parallel edges.
 fn rf_triangle_shape_operator(
@@ -241,7 +242,7 @@ fn rf_triangle_shape_operator(
     let e = (bb - ab * ab) * r.x - bb * ab * r.y + ab * ab * r.z;
     let f = aa * bb * r.y - bb * ab * r.x - aa * ab * r.z;
     let g = (aa - ab * ab) * r.z - aa * ab * r.y + ab * ab * r.x;
-    return vec3<f32>(e, f, g) / determinant / extent;
+    return vec3<f32>(e, f, g) / max(determinant * extent, RF_MIN_SQUARED_MAGNITUDE);
 }
 
 // Normal curvature along the unit direction projected into the triangle's plane (Euler's formula):

@@ -13,7 +13,7 @@ use crate::strategy::{triangle, unit_vec3};
 use crate::symmetry::Symmetry;
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
-use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE};
+use ray_footprint::ray_cone::{self as rc, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
 use shader_proptest::interval::{interval3, Interval3, IntervalVec};
 
@@ -118,7 +118,7 @@ pub(crate) fn enclosure(p: [Interval3; 3], n: [Interval3; 3]) -> Interval3 {
     let e = (bb - ab2) * r0 - bb * ab * r1 + ab2 * r2;
     let f = aa * bb * r1 - bb * ab * r0 - aa * ab * r2;
     let g = (aa - ab2) * r2 - aa * ab * r1 + ab2 * r0;
-    IntervalVec([e, f, g]) / determinant / extent
+    IntervalVec([e, f, g]) / (determinant * extent).max_c(f64::from(MIN_SQUARED_MAGNITUDE))
 }
 
 /// A reference of `rf_triangle_shape_operator`.
