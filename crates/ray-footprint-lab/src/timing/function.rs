@@ -39,6 +39,7 @@ pub struct Signature {
 pub fn signatures(module: Module) -> Vec<(String, Result<Signature, String>)> {
     let glsl = module.glsl();
     let structs = glsl_structs();
+    let mut made = Vec::new();
     module
         .functions()
         .into_iter()
@@ -46,10 +47,10 @@ pub fn signatures(module: Module) -> Vec<(String, Result<Signature, String>)> {
             let name = format!("rf_{function}");
             let signature = glsl_signature(glsl, &name).and_then(|(result, parameters)| {
                 Ok(Signature {
-                    result: shader_type(&result, &structs)?,
+                    result: shader_type(&result, &structs, &mut made)?,
                     parameters: parameters
                         .iter()
-                        .map(|ty| shader_type(ty, &structs))
+                        .map(|ty| shader_type(ty, &structs, &mut made))
                         .collect::<Result<_, _>>()?,
                     name: name.clone(),
                 })
@@ -126,9 +127,14 @@ fn glsl_structs() -> Vec<(String, Vec<(String, String)>)> {
     structs
 }
 
-/// The kernels' type of the GLSL type `name`; structs from `structs` (made `'static` once per
-/// signature: a bench's few hundred).
-fn shader_type(name: &str, structs: &[(String, Vec<(String, String)>)]) -> Result<ShaderType, String> {
+/// The kernels' type of the GLSL type `name`; structs from `structs`, each made `'static` once
+/// and kept in `made` (once per [`signatures`] call: a bench's few dozen), so that a struct
+/// appearing twice in a signature is one type (HLSL kernels declare one maker per struct type).
+fn shader_type(
+    name: &str,
+    structs: &[(String, Vec<(String, String)>)],
+    made: &mut Vec<&'static StructType>,
+) -> Result<ShaderType, String> {
     Ok(match name {
         "float" => ShaderType::F32,
         "uint" => ShaderType::U32,
@@ -141,20 +147,25 @@ fn shader_type(name: &str, structs: &[(String, Vec<(String, String)>)]) -> Resul
         "mat3" => ShaderType::Mat3,
         "mat4" => ShaderType::Mat4,
         _ => {
+            if let Some(&made_before) = made.iter().find(|ty| ty.name == name) {
+                return Ok(ShaderType::Struct(made_before));
+            }
             let (struct_name, fields) = structs
                 .iter()
                 .find(|(struct_name, _)| struct_name == name)
                 .ok_or_else(|| format!("the type {name}, which the kernels carry no words of"))?;
             let fields: Vec<(&'static str, ShaderType)> = fields
                 .iter()
-                .map(|(ty, field)| Ok((leak(field), shader_type(ty, structs)?)))
+                .map(|(ty, field)| Ok((leak(field), shader_type(ty, structs, made)?)))
                 .collect::<Result<_, String>>()?;
-            ShaderType::Struct(Box::leak(Box::new(StructType {
+            let ty: &'static StructType = Box::leak(Box::new(StructType {
                 name: leak(struct_name),
                 rust_name: leak(struct_name),
                 fields: Box::leak(fields.into_boxed_slice()),
                 rust_layout: None,
-            })))
+            }));
+            made.push(ty);
+            ShaderType::Struct(ty)
         }
     })
 }
@@ -440,7 +451,7 @@ mod tests {
             .find(|(name, _)| name == "rf_propagate")
             .and_then(|(_, signature)| signature.ok())
             .expect("rf_propagate");
-        let glsl = timing_source(Language::Glsl, &signature, "rf_propagate", 8);
+        let glsl = timing_source(Language::Glsl, &signature, "rf_propagate", 8, Body::Call);
         for line in [
             "RfRayCone time_rf_propagate(RfRayCone a0, float a1, float a2, float zero) {",
             "float d = (r.width + r.spread_angle) * zero;",
