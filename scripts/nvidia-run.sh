@@ -44,8 +44,8 @@
 #    `costs` writes seven:
 #      bench mode_costs (3840 x 2160, 2 x 2 samples, every lab scene and mode, 8 rounds)
 #                                                                        -> mode_costs.log, mode_costs.csv
-#      bench function_costs (every function, 3 languages and the peers' originals from
-#        .nvidia/peers where packed)                                     -> function_costs.log
+#      bench function_costs (every function in 5 languages, each beside its empty kernel,
+#        and the peers' originals from .nvidia/peers where packed)       -> function_costs.log
 #      the quality lab at its default settings, then cost_quality: the quality gained over mip 0
 #        against the time added                                          -> quality.log,
 #                                                                           cost_quality.log, cost_quality.png

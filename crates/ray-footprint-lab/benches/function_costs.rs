@@ -1,28 +1,40 @@
-//! What each public shader function costs on the device, per language, and beside it what the
-//! peers' original functions cost.
+//! What each public shader function costs on the device, per language, with the timing loop's
+//! own cost taken out, and beside it what the peers' originals cost.
 //!
 //! For every public function of every module (its Rust mirror's, in module order) and every
-//! language but HLSL (not timed yet), a compute kernel calls the function in a loop whose every call depends on the last
-//! result ([`ray_footprint_lab::timing::function`]): on a GPU 2^18 invocations of 2048 calls,
-//! 536,870,912 evaluations per kernel. The kernels of one function are timed in rounds (at least
-//! 8), the languages in one order in even rounds and the reverse in odd ones, each round one
-//! submission that starts with an untimed dispatch of its first kernel and then has a timestamp
-//! pair around each kernel's dispatch and a barrier between two dispatches; each function first
-//! has one untimed round (lavapipe compiles a pipeline at its first dispatch), and the first
-//! function warm-up rounds until two successive round medians agree within 2%
-//! ([`ray_footprint_lab::timing`]). Per kernel: ns per evaluation (the kernel's time over its
-//! evaluations: the whole device's throughput), the median of the round medians and their spread,
-//! and the SPIR-V of the same kernel after `spirv-opt -O` (instructions inside functions; the
-//! loop's own are in every column).
+//! language (WGSL, GLSL, Slang, and HLSL through glslang and through slangc), a compute kernel calls
+//! the function in a loop whose every call depends on the last result
+//! ([`ray_footprint_lab::timing::function`]): on a GPU 2^18 invocations of 2048 calls,
+//! 536,870,912 evaluations per kernel. Beside it runs the language's *empty kernel* for the
+//! function's signature: the same loop, the same dependence chain, with the call replaced by a
+//! stand-in of a few adds that keeps the result depending on every argument ([`Body::Empty`]).
+//! The kernels of one function are timed in rounds (at least 8), each language's function kernel
+//! next to its empty kernel, in one order in even rounds and the reverse in odd ones, each round
+//! one submission that starts with an untimed dispatch of its first kernel and then has a
+//! timestamp pair around each kernel's dispatch and a barrier between two dispatches; each
+//! function first has one untimed round (lavapipe compiles a pipeline at its first dispatch), and
+//! the first function warm-up rounds until two successive round medians agree within 2%
+//! ([`ray_footprint_lab::timing`]).
+//!
+//! One line per function and language: ns per evaluation (a kernel's time over its evaluations:
+//! the whole device's throughput) of the function kernel and of the empty kernel, each the median
+//! of the round medians and their spread, and the function's own: in each round the function
+//! kernel's time less the empty kernel's, the median of those differences and their spread. Then
+//! the SPIR-V instruction counts after `spirv-opt -O` (instructions inside functions) of the
+//! function kernel and of the empty kernel, and their difference, the function's own instructions
+//! (the stand-in's few count as the loop's, so the differences are a little low).
 //!
 //! Peers: with `--peers DIR` (or `RAY_FOOTPRINT_PEERS=DIR`), the directory that holds the peers'
 //! sources (a Falcor checkout, the vk_raytracing_tutorial_KHR, nvpro_core2, or just their files),
-//! the functions of [`PEERS`] get a fourth kernel in the same rounds: the peer's original, cut out
+//! the functions of [`PEERS`] get one more kernel in the same rounds: the peer's original, cut out
 //! of its file at run time and compiled by slangc behind an adapter with the library function's
-//! signature, and the verdict on the goal that no function is slower than its peer's original by
-//! more than 10% (Slang against Slang): met where every round of ours is within 1.1 times every
-//! round of the peer's, MISSED where every round is beyond it, otherwise not separable at this
-//! load. Without a directory the peer columns say "not run". No peer code is in this repository.
+//! signature, on a line of its own after Slang's. It runs in the same loop as our Slang kernel (the
+//! signature is the same), so Slang's empty kernel is subtracted from it too. The verdict on the
+//! goal that no function is slower than its peer's original by more than 10% (Slang against
+//! Slang) is taken on the subtracted times, each round's own difference: met where every round of
+//! ours is within 1.1 times every round of the peer's, MISSED where every round is beyond it,
+//! otherwise not separable at this load; the ratio of the raw medians is printed beside it.
+//! Without a directory the peer's line says "not run". No peer code is in this repository.
 //!
 //! On lavapipe (a CPU implementation) the run is a smoke run: 2^10 invocations of 16 calls, no
 //! verdicts.
@@ -36,7 +48,7 @@
 use ash::vk;
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::cli::{bench_options, count_at_least, options_or_exit};
-use ray_footprint_lab::timing::function::{inputs, signatures, timing_kernel, Callee, Signature};
+use ray_footprint_lab::timing::function::{inputs, signatures, timing_kernel, Body, Callee, Signature};
 use ray_footprint_lab::timing::peers::{extract, Peer, PEERS};
 use ray_footprint_lab::timing::{
     self, gpu_clocks, query_pool, read_queries, round_order, warm_up, write_timestamp, Spread, Timestamps,
@@ -126,8 +138,22 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     Ok(options)
 }
 
-/// The columns of a row: the three languages, then the peer's original (Slang).
-const COLUMNS: [&str; 4] = ["WGSL", "GLSL", "Slang", "peer"];
+/// The languages timed, each with its function kernel and its empty kernel.
+const LANGUAGES: [Language; 5] = Language::ALL;
+/// A row's kernels: each language's function kernel then its empty kernel, then the peer's.
+const KERNELS: usize = 2 * LANGUAGES.len() + 1;
+/// The peer's kernel's index.
+const PEER: usize = KERNELS - 1;
+/// Slang's index in [`LANGUAGES`]: the peer's time is taken less Slang's empty kernel's.
+const SLANG: usize = 2;
+
+/// The index of the kernel of the `language`-th language (function or empty).
+fn kernel_index(language: usize, body: Body) -> usize {
+    match body {
+        Body::Call => 2 * language,
+        Body::Empty => 2 * language + 1,
+    }
+}
 
 /// A compiled kernel, ready to dispatch.
 struct Kernel {
@@ -135,15 +161,16 @@ struct Kernel {
     statistics: Statistics,
 }
 
-/// One function: its kernels (per column, or why there is none) and their buffers.
+/// One function: its kernels (by [`kernel_index`], then [`PEER`]; or why there is none) and their
+/// buffers.
 struct Row {
     module: Module,
     name: String,
     peer: Option<&'static Peer>,
-    kernels: [Result<Kernel, String>; 4],
+    kernels: Vec<Result<Kernel, String>>,
     set: vk::DescriptorSet,
-    /// Each column's round medians, in ns per evaluation.
-    times: [Vec<f64>; 4],
+    /// Each kernel's round medians, in ns per evaluation, round by round.
+    times: Vec<Vec<f64>>,
 }
 
 /// The device objects every kernel shares: the owner, the descriptor-set and pipeline layouts.
@@ -168,10 +195,16 @@ impl<'g> Bench<'g> {
         })
     }
 
-    /// The kernel of `callee` in `language` for `module`, compiled and made a pipeline; the
-    /// reason where it cannot run here.
-    fn kernel(&mut self, module: Module, language: Language, callee: Callee<'_>) -> Result<Kernel, String> {
-        let (shader, kernel) = timing_kernel(module, language, callee);
+    /// The kernel of `callee` in `language` for `module`, or its empty kernel (`body`), compiled
+    /// and made a pipeline; the reason where it cannot run here.
+    fn kernel(
+        &mut self,
+        module: Module,
+        language: Language,
+        callee: Callee<'_>,
+        body: Body,
+    ) -> Result<Kernel, String> {
+        let (shader, kernel) = timing_kernel(module, language, callee, body);
         if let Some(feature) = shader.features().iter().find(|&&f| !self.gpu.has(f)) {
             return Err(format!("not run: the device lacks {}", feature.name()));
         }
@@ -220,9 +253,9 @@ impl<'g> Bench<'g> {
     }
 
     /// One round over `row`'s kernels, in the round's order: each kernel's time in ns per
-    /// evaluation, by column (`None` where the column has no kernel).
-    fn round(&self, row: &Row, round: usize, timestamps: Timestamps) -> Result<[Option<f64>; 4], Error> {
-        let columns: Vec<usize> = round_order(COLUMNS.len(), round)
+    /// evaluation, by kernel index (`None` where there is no kernel).
+    fn round(&self, row: &Row, round: usize, timestamps: Timestamps) -> Result<Vec<Option<f64>>, Error> {
+        let columns: Vec<usize> = round_order(KERNELS, round)
             .into_iter()
             .filter(|&column| row.kernels[column].is_ok())
             .collect();
@@ -261,7 +294,7 @@ impl<'g> Bench<'g> {
             }
         })?;
         let times = timestamps.pairs(&read_queries(&frame, pool, queries as usize)?);
-        let mut by_column = [None; 4];
+        let mut by_column = vec![None; KERNELS];
         for (&column, time) in columns.iter().zip(times) {
             by_column[column] = Some(time.as_secs_f64() * 1e9 / self.load.evaluations());
         }
@@ -300,9 +333,9 @@ fn rows(bench: &mut Bench<'_>, options: &Options) -> Result<Vec<Row>, Error> {
                         module,
                         name,
                         peer,
-                        kernels: [0, 1, 2, 3].map(|_| Err(format!("not run: {reason}"))),
+                        kernels: (0..KERNELS).map(|_| Err(format!("not run: {reason}"))).collect(),
                         set: vk::DescriptorSet::null(),
-                        times: Default::default(),
+                        times: vec![Vec::new(); KERNELS],
                     });
                     continue;
                 }
@@ -314,8 +347,11 @@ fn rows(bench: &mut Bench<'_>, options: &Options) -> Result<Vec<Row>, Error> {
                 extra: "",
                 iterations,
             };
-            let [wgsl, glsl, slang] = [Language::Wgsl, Language::Glsl, Language::Slang]
-                .map(|language| bench.kernel(module, language, own));
+            let mut kernels: Vec<Result<Kernel, String>> = LANGUAGES
+                .iter()
+                .flat_map(|&language| [(language, Body::Call), (language, Body::Empty)])
+                .map(|(language, body)| bench.kernel(module, language, own, body))
+                .collect();
             let peer_kernel = match peer {
                 None => Err(String::from("no peer")),
                 Some(peer) => peer_source(options.peers.as_ref(), peer).and_then(|extra| {
@@ -325,41 +361,78 @@ fn rows(bench: &mut Bench<'_>, options: &Options) -> Result<Vec<Row>, Error> {
                         extra: &extra,
                         ..own
                     };
-                    bench.kernel(module, Language::Slang, callee)
+                    bench.kernel(module, Language::Slang, callee, Body::Call)
                 }),
             };
+            kernels.push(peer_kernel);
             let set = bench.buffers(&signature)?;
             rows.push(Row {
                 module,
                 name,
                 peer,
-                kernels: [wgsl, glsl, slang, peer_kernel],
+                kernels,
                 set,
-                times: Default::default(),
+                times: vec![Vec::new(); KERNELS],
             });
         }
     }
     Ok(rows)
 }
 
+/// A spread of ns per evaluation: the median and the smallest to the largest.
+fn spread_cell(spread: Spread) -> String {
+    format!("{:.6} ({:.6}-{:.6})", spread.median, spread.min, spread.max)
+}
+
 /// A cell of ns per evaluation: the median and the spread, or why there is none.
 fn time_cell(kernel: &Result<Kernel, String>, times: &[f64]) -> String {
     match kernel {
-        Ok(_) => {
-            let spread = Spread::of(times);
-            format!("{:.6} ({:.6}-{:.6})", spread.median, spread.min, spread.max)
-        }
+        Ok(_) => spread_cell(Spread::of(times)),
         Err(reason) => reason.clone(),
     }
 }
 
-/// The verdict on the goal against the peer (Slang against Slang).
+/// Round by round, kernel `function`'s time less kernel `empty`'s (the rounds time both), or
+/// `None` where either has no kernel.
+fn differences(row: &Row, function: usize, empty: usize) -> Option<Vec<f64>> {
+    let (Ok(_), Ok(_)) = (&row.kernels[function], &row.kernels[empty]) else {
+        return None;
+    };
+    Some(
+        row.times[function]
+            .iter()
+            .zip(&row.times[empty])
+            .map(|(with_call, without)| with_call - without)
+            .collect(),
+    )
+}
+
+/// The instruction counts of kernel `function` and kernel `empty`, and the difference.
+fn instructions_cell(row: &Row, function: usize, empty: usize) -> String {
+    match (&row.kernels[function], &row.kernels[empty]) {
+        (Ok(with_call), Ok(without)) => {
+            let (with_call, without) = (with_call.statistics.instructions, without.statistics.instructions);
+            format!("{with_call} - {without} = {}", with_call as i64 - without as i64)
+        }
+        (Ok(with_call), Err(_)) => format!("{} - ?", with_call.statistics.instructions),
+        _ => String::from("-"),
+    }
+}
+
+/// The verdict on the goal against the peer (Slang against Slang), on each round's time less
+/// Slang's empty kernel's; beside it the ratio of the raw medians.
 fn peer_verdict(row: &Row, verdicts: bool) -> String {
-    let (Ok(_), Ok(_)) = (&row.kernels[2], &row.kernels[3]) else {
+    let slang = kernel_index(SLANG, Body::Call);
+    let empty = kernel_index(SLANG, Body::Empty);
+    let (Ok(_), Ok(_)) = (&row.kernels[slang], &row.kernels[PEER]) else {
         return String::new();
     };
-    let (ours, peer) = (Spread::of(&row.times[2]), Spread::of(&row.times[3]));
-    let ratio = format!("{:.2}x", ours.median / peer.median);
+    let raw = Spread::of(&row.times[slang]).median / Spread::of(&row.times[PEER]).median;
+    let (Some(ours), Some(peer)) = (differences(row, slang, empty), differences(row, PEER, empty)) else {
+        return format!("raw {raw:.2}x, no empty kernel: no verdict");
+    };
+    let (ours, peer) = (Spread::of(&ours), Spread::of(&peer));
+    let ratio = format!("raw {raw:.2}x, less the loop {:.2}x", ours.median / peer.median);
     if !verdicts {
         return format!("{ratio}, no verdict (lavapipe)");
     }
@@ -372,40 +445,43 @@ fn peer_verdict(row: &Row, verdicts: bool) -> String {
     }
 }
 
+/// A line of the table: kernel `function` against kernel `empty`, under `label`, with `verdict`.
+fn print_line(row: &Row, label: &str, (function, empty): (usize, usize), verdict: &str) {
+    let own = match (&row.kernels[function], differences(row, function, empty)) {
+        (_, Some(differences)) => spread_cell(Spread::of(&differences)),
+        (Err(reason), None) => reason.clone(),
+        (Ok(_), None) => String::from("no empty kernel"),
+    };
+    println!(
+        "| {} | `{}` | {label} | {} | {} | {own} | {} | {verdict} |",
+        row.module.stem(),
+        row.name,
+        time_cell(&row.kernels[function], &row.times[function]),
+        time_cell(&row.kernels[empty], &row.times[empty]),
+        instructions_cell(row, function, empty),
+    );
+}
+
 fn print_rows(rows: &[Row], verdicts: bool) {
     println!(
-        "| module | function | WGSL ns | GLSL ns | Slang ns | peer | peer ns (Slang) | Slang vs peer (goal <= {PEER_GOAL}x) | \
-         instructions WGSL / GLSL / Slang / peer |"
+        "| module | function | language | ns | empty kernel ns | function ns (less the empty kernel) | \
+         instructions (kernel - empty = function) | Slang vs peer (goal <= {PEER_GOAL}x) |"
     );
-    println!("| --- | --- | ---: | ---: | ---: | --- | ---: | --- | ---: |");
+    println!("| --- | --- | --- | ---: | ---: | ---: | ---: | --- |");
     for row in rows {
-        let cells: Vec<String> = row
-            .kernels
-            .iter()
-            .zip(&row.times)
-            .map(|(kernel, times)| time_cell(kernel, times))
-            .collect();
-        let instructions: Vec<String> = row
-            .kernels
-            .iter()
-            .map(|kernel| {
-                kernel
-                    .as_ref()
-                    .map_or(String::from("-"), |k| k.statistics.instructions.to_string())
-            })
-            .collect();
-        let peer = row.peer.map_or("", |peer| peer.source.name());
-        let peer_time = if row.peer.is_some() { cells[3].as_str() } else { "" };
-        println!(
-            "| {} | `{}` | {} | {} | {} | {peer} | {peer_time} | {} | {} |",
-            row.module.stem(),
-            row.name,
-            cells[0],
-            cells[1],
-            cells[2],
-            peer_verdict(row, verdicts),
-            instructions.join(" / ")
-        );
+        for (index, language) in LANGUAGES.iter().enumerate() {
+            let kernels = (kernel_index(index, Body::Call), kernel_index(index, Body::Empty));
+            let verdict = if index == SLANG {
+                peer_verdict(row, verdicts)
+            } else {
+                String::new()
+            };
+            print_line(row, language.name(), kernels, &verdict);
+            if let (SLANG, Some(peer)) = (index, row.peer) {
+                let label = format!("peer: {} (Slang)", peer.source.name());
+                print_line(row, &label, (PEER, kernel_index(SLANG, Body::Empty)), "");
+            }
+        }
     }
 }
 
@@ -449,8 +525,8 @@ fn run(options: &Options) -> Result<usize, Error> {
         bench.round(row, 0, timestamps)?;
         for round in 0..options.rounds {
             let times = bench.round(row, round, timestamps)?;
-            for (column, time) in times.iter().enumerate() {
-                row.times[column].extend(*time);
+            for (kernel, time) in times.iter().enumerate() {
+                row.times[kernel].extend(*time);
             }
         }
     }

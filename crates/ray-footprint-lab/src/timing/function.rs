@@ -4,7 +4,7 @@
 //!
 //! A function's signature comes from its module's GLSL source ([`signatures`]): the parameter and
 //! result types as shader-proptest's [`ShaderType`]s, structs with their fields. [`timing_source`]
-//! writes, in any of the three languages, a function `time_<callee>` with the callee's parameters
+//! writes, in any of the languages (WGSL, GLSL, Slang, HLSL), a function `time_<callee>` with the callee's parameters
 //! and result and one more float, `zero`, that calls the callee a given number of times: after
 //! each call it sums every component of the result, multiplies the sum by `zero`, and adds that
 //! product `d` to every component of every argument (integers get `d` converted, booleans flip
@@ -15,6 +15,13 @@
 //! dependence and runs the function once.) The loop's own work per call is a multiply, an add per
 //! result component and an add per argument component, the same for any two callees of one
 //! signature (a function and a peer's original behind an adapter with the function's signature).
+//!
+//! The *empty kernel* of a signature ([`Body::Empty`]) is the same loop with the call replaced by
+//! a stand-in that sets every result component from argument components by a few adds and
+//! conversions, every argument component read, so that the loop, its sum and its perturbations stay and nothing else: its time
+//! is the loop's (with the stand-in's few operations), and a function kernel's time less it is
+//! the function's.
+//!
 //! shader-proptest's [`kernel_source`] wraps `time_<callee>` in a compute kernel that reads each
 //! invocation's arguments from a buffer and writes the last result back ([`inputs`] fills the
 //! buffer).
@@ -39,6 +46,7 @@ pub struct Signature {
 pub fn signatures(module: Module) -> Vec<(String, Result<Signature, String>)> {
     let glsl = module.glsl();
     let structs = glsl_structs();
+    let mut made = Vec::new();
     module
         .functions()
         .into_iter()
@@ -46,10 +54,10 @@ pub fn signatures(module: Module) -> Vec<(String, Result<Signature, String>)> {
             let name = format!("rf_{function}");
             let signature = glsl_signature(glsl, &name).and_then(|(result, parameters)| {
                 Ok(Signature {
-                    result: shader_type(&result, &structs)?,
+                    result: shader_type(&result, &structs, &mut made)?,
                     parameters: parameters
                         .iter()
-                        .map(|ty| shader_type(ty, &structs))
+                        .map(|ty| shader_type(ty, &structs, &mut made))
                         .collect::<Result<_, _>>()?,
                     name: name.clone(),
                 })
@@ -126,9 +134,14 @@ fn glsl_structs() -> Vec<(String, Vec<(String, String)>)> {
     structs
 }
 
-/// The kernels' type of the GLSL type `name`; structs from `structs` (made `'static` once per
-/// signature: a bench's few hundred).
-fn shader_type(name: &str, structs: &[(String, Vec<(String, String)>)]) -> Result<ShaderType, String> {
+/// The kernels' type of the GLSL type `name`; structs from `structs`, each made `'static` once
+/// and kept in `made` (once per [`signatures`] call: a bench's few dozen), so that a struct
+/// appearing twice in a signature is one type (HLSL kernels declare one maker per struct type).
+fn shader_type(
+    name: &str,
+    structs: &[(String, Vec<(String, String)>)],
+    made: &mut Vec<&'static StructType>,
+) -> Result<ShaderType, String> {
     Ok(match name {
         "float" => ShaderType::F32,
         "uint" => ShaderType::U32,
@@ -141,20 +154,25 @@ fn shader_type(name: &str, structs: &[(String, Vec<(String, String)>)]) -> Resul
         "mat3" => ShaderType::Mat3,
         "mat4" => ShaderType::Mat4,
         _ => {
+            if let Some(&made_before) = made.iter().find(|ty| ty.name == name) {
+                return Ok(ShaderType::Struct(made_before));
+            }
             let (struct_name, fields) = structs
                 .iter()
                 .find(|(struct_name, _)| struct_name == name)
                 .ok_or_else(|| format!("the type {name}, which the kernels carry no words of"))?;
             let fields: Vec<(&'static str, ShaderType)> = fields
                 .iter()
-                .map(|(ty, field)| Ok((leak(field), shader_type(ty, structs)?)))
+                .map(|(ty, field)| Ok((leak(field), shader_type(ty, structs, made)?)))
                 .collect::<Result<_, String>>()?;
-            ShaderType::Struct(Box::leak(Box::new(StructType {
+            let ty: &'static StructType = Box::leak(Box::new(StructType {
                 name: leak(struct_name),
                 rust_name: leak(struct_name),
                 fields: Box::leak(fields.into_boxed_slice()),
                 rust_layout: None,
-            })))
+            }));
+            made.push(ty);
+            ShaderType::Struct(ty)
         }
     })
 }
@@ -204,10 +222,91 @@ fn perturbation(language: Language, path: &str, ty: ShaderType) -> String {
     }
 }
 
-/// The source of `time_<callee>`: `signature`'s parameters and `zero`, `signature`'s result,
-/// calling `callee` (which takes `signature`'s parameters and returns its result) `iterations`
-/// times, each call's arguments depending on the last result (see the module documentation).
-pub fn timing_source(language: Language, signature: &Signature, callee: &str, iterations: u32) -> String {
+/// What each turn of the timing loop computes its result with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Body {
+    /// A call of the callee: the kernel that times the function.
+    Call,
+    /// No call: the *empty kernel*, the same loop with the call replaced by the least work that
+    /// keeps a result depending on every argument component (see the module documentation). Its
+    /// time is the loop's, to subtract from the function kernel's.
+    Empty,
+}
+
+/// The statements that set every component of `r` (`result`, the result's components) from the
+/// argument components (`arguments`) without a call, in place of `r = callee(...)` in the empty
+/// kernel.
+///
+/// The argument components are dealt out over the result's in turn (the i-th to the
+/// `i % result.len()`-th; a result with more components than the arguments reuses them), and each
+/// result component is the sum of those dealt to it: the ones of its own type as they are, the
+/// others as the float the loop's sum takes of them ([`summand`]: a vector's components added, an
+/// integer or a boolean converted), converted to its type (a vector splat, an integer converted,
+/// a boolean `> 0.5`). So every result component depends on an argument and every argument
+/// component reaches the result: no compiler can fold the sum (`d` stays unknown), nor drop an
+/// argument's perturbation (each is read), nor the loop (each turn needs the last one's `r`).
+/// What the empty kernel does per turn is then the loop's own work (the counter, the sum over
+/// the result, the multiply by `zero`, the adds to the arguments) and this stand-in's: about one
+/// add per argument component beyond the result's count, plus conversions where the types
+/// differ. The stand-in's part is counted as the loop's, so the subtraction takes slightly more
+/// than the loop from the function, more for many argument components folded into few result
+/// components.
+fn stand_in(
+    language: Language,
+    result: &[(String, ShaderType)],
+    arguments: &[(String, ShaderType)],
+) -> Vec<String> {
+    result
+        .iter()
+        .enumerate()
+        .map(|(j, (path, ty))| {
+            let dealt: Vec<&(String, ShaderType)> = if arguments.len() > result.len() {
+                arguments.iter().skip(j).step_by(result.len()).collect()
+            } else {
+                arguments.get(j % arguments.len().max(1)).into_iter().collect()
+            };
+            format!("{path} = {};", component_from(language, *ty, &dealt))
+        })
+        .collect()
+}
+
+/// An expression of type `ty` that adds up the argument components `dealt`: those of type `ty`
+/// (a float, a vector or an integer) as they are, the others summed as floats and converted.
+fn component_from(language: Language, ty: ShaderType, dealt: &[&(String, ShaderType)]) -> String {
+    let same_type = ty != ShaderType::Bool;
+    let (own, others): (Vec<&(String, ShaderType)>, Vec<_>) =
+        dealt.iter().copied().partition(|(_, t)| same_type && *t == ty);
+    let mut terms: Vec<String> = own.iter().map(|(path, _)| path.clone()).collect();
+    let floats: Vec<String> = others
+        .iter()
+        .map(|(path, t)| summand(language, path, *t))
+        .collect();
+    if !floats.is_empty() || terms.is_empty() {
+        let float_sum = if floats.is_empty() {
+            String::from("0.0")
+        } else {
+            floats.join(" + ")
+        };
+        terms.push(match ty {
+            ShaderType::F32 => float_sum,
+            ShaderType::Bool => format!("({float_sum}) > 0.5"),
+            _ => format!("{}({float_sum})", language.type_name(ty)),
+        });
+    }
+    terms.join(" + ")
+}
+
+/// The source of `time_<callee>`: `signature`'s parameters and `zero`, `signature`'s result, a
+/// loop of `iterations` turns whose each turn's arguments depend on the last result (see the
+/// module documentation) and which calls `callee` (which takes `signature`'s parameters and
+/// returns its result) or, for [`Body::Empty`], sets the result without a call.
+pub fn timing_source(
+    language: Language,
+    signature: &Signature,
+    callee: &str,
+    iterations: u32,
+    body: Body,
+) -> String {
     let arguments: Vec<String> = (0..signature.parameters.len()).map(|i| format!("v{i}")).collect();
     let call = format!("{callee}({})", arguments.join(", "));
     let mut result_leaves = Vec::new();
@@ -226,61 +325,79 @@ pub fn timing_source(language: Language, signature: &Signature, callee: &str, it
         .collect();
     let result = language.type_name(signature.result);
     let sum = sum.join(" + ");
-    match language {
-        Language::Wgsl => {
-            let parameters: Vec<String> = signature
-                .parameters
-                .iter()
-                .enumerate()
-                .map(|(i, &ty)| format!("a{i}: {}", language.type_name(ty)))
-                .collect();
-            let copies: String = (0..signature.parameters.len())
-                .map(|i| format!("    var v{i} = a{i};\n"))
-                .collect();
-            format!(
-                "fn time_{callee}({}, zero: f32) -> {result} {{
-{copies}    var r = {call};
-    for (var k = 1u; k < {iterations}u; k++) {{
+    let wgsl = language == Language::Wgsl;
+    // The result before the loop and in each turn.
+    let (first, turn) = match body {
+        Body::Call if wgsl => (format!("    var r = {call};\n"), format!("        r = {call};\n")),
+        Body::Call => (
+            format!("    {result} r = {call};\n"),
+            format!("        r = {call};\n"),
+        ),
+        Body::Empty => {
+            let statements = stand_in(language, &result_leaves, &argument_leaves);
+            let indented = |indent: &str| -> String {
+                statements
+                    .iter()
+                    .map(|statement| format!("{indent}{statement}\n"))
+                    .collect()
+            };
+            let declaration = if wgsl {
+                format!("    var r: {result};\n")
+            } else {
+                format!("    {result} r;\n")
+            };
+            (declaration + &indented("    "), indented("        "))
+        }
+    };
+    if wgsl {
+        let parameters: Vec<String> = signature
+            .parameters
+            .iter()
+            .enumerate()
+            .map(|(i, &ty)| format!("a{i}: {}", language.type_name(ty)))
+            .collect();
+        let copies: String = (0..signature.parameters.len())
+            .map(|i| format!("    var v{i} = a{i};\n"))
+            .collect();
+        format!(
+            "fn time_{callee}({}, zero: f32) -> {result} {{
+{copies}{first}    for (var k = 1u; k < {iterations}u; k++) {{
         let d = ({sum}) * zero;
-{perturb}        r = {call};
-    }}
+{perturb}{turn}    }}
     return r;
 }}
 ",
-                parameters.join(", ")
-            )
-        }
-        _ => {
-            let parameters: Vec<String> = signature
-                .parameters
-                .iter()
-                .enumerate()
-                .map(|(i, &ty)| format!("{} a{i}", language.type_name(ty)))
-                .collect();
-            let copies: String = signature
-                .parameters
-                .iter()
-                .enumerate()
-                .map(|(i, &ty)| format!("    {} v{i} = a{i};\n", language.type_name(ty)))
-                .collect();
-            format!(
-                "{result} time_{callee}({}, float zero) {{
-{copies}    {result} r = {call};
-    for (uint k = 1u; k < {iterations}u; k++) {{
+            parameters.join(", ")
+        )
+    } else {
+        let parameters: Vec<String> = signature
+            .parameters
+            .iter()
+            .enumerate()
+            .map(|(i, &ty)| format!("{} a{i}", language.type_name(ty)))
+            .collect();
+        let copies: String = signature
+            .parameters
+            .iter()
+            .enumerate()
+            .map(|(i, &ty)| format!("    {} v{i} = a{i};\n", language.type_name(ty)))
+            .collect();
+        format!(
+            "{result} time_{callee}({}, float zero) {{
+{copies}{first}    for (uint k = 1u; k < {iterations}u; k++) {{
         float d = ({sum}) * zero;
-{perturb}        r = {call};
-    }}
+{perturb}{turn}    }}
     return r;
 }}
 ",
-                parameters.join(", ")
-            )
-        }
+            parameters.join(", ")
+        )
     }
 }
 
 /// What a timing kernel calls: `callee`, which has `signature`, defined by the module's shader or
-/// by `extra` (an adapter and what it calls) appended to it, `iterations` times per invocation.
+/// by `extra` (an adapter and what it calls) appended to it, `iterations` times per invocation
+/// (its empty kernel calls nothing, in as many turns).
 #[derive(Clone, Copy, Debug)]
 pub struct Callee<'a> {
     /// The function's signature.
@@ -293,10 +410,10 @@ pub struct Callee<'a> {
     pub iterations: u32,
 }
 
-/// The timing kernel of `callee` in `language`: `module`'s shader (its source, include
-/// directory, features and capabilities) with the callee's extra source and `time_<callee>`
-/// appended, and the kernel's source.
-pub fn timing_kernel(module: Module, language: Language, callee: Callee<'_>) -> (Shader, String) {
+/// The timing kernel of `callee` in `language`, or its empty kernel (`body`): `module`'s shader
+/// (its source, include directory, features and capabilities) with the callee's extra source and
+/// `time_<callee>` appended, and the kernel's source.
+pub fn timing_kernel(module: Module, language: Language, callee: Callee<'_>, body: Body) -> (Shader, String) {
     let Callee {
         signature,
         name: callee,
@@ -307,7 +424,7 @@ pub fn timing_kernel(module: Module, language: Language, callee: Callee<'_>) -> 
     let source = format!(
         "{}\n{extra}\n{}",
         base.source(),
-        timing_source(language, signature, callee, iterations)
+        timing_source(language, signature, callee, iterations, body)
     );
     let mut timed = match language {
         Language::Wgsl => Shader::wgsl(source).capabilities(module.naga_capabilities()),
@@ -424,7 +541,7 @@ mod tests {
 
     #[test]
     fn a_type_without_words_is_named() {
-        let error = shader_type("dvec3", &glsl_structs()).unwrap_err();
+        let error = shader_type("dvec3", &glsl_structs(), &mut Vec::new()).unwrap_err();
         assert!(error.contains("dvec3"), "{error}");
         let f64_module = signatures(Module::RayDiffF64);
         assert!(
@@ -440,7 +557,7 @@ mod tests {
             .find(|(name, _)| name == "rf_propagate")
             .and_then(|(_, signature)| signature.ok())
             .expect("rf_propagate");
-        let glsl = timing_source(Language::Glsl, &signature, "rf_propagate", 8);
+        let glsl = timing_source(Language::Glsl, &signature, "rf_propagate", 8, Body::Call);
         for line in [
             "RfRayCone time_rf_propagate(RfRayCone a0, float a1, float a2, float zero) {",
             "float d = (r.width + r.spread_angle) * zero;",
@@ -456,5 +573,80 @@ mod tests {
         let words = inputs(&signature, 3);
         assert_eq!(words.len(), 3 * 5);
         assert_eq!(words[4], 0.0f32.to_bits());
+    }
+
+    /// Whether `source` calls `callee` (its name not inside a longer name, then a parenthesis).
+    fn calls(source: &str, callee: &str) -> bool {
+        source.match_indices(&format!("{callee}(")).any(|(at, _)| {
+            !source[..at]
+                .chars()
+                .next_back()
+                .is_some_and(|c| c.is_alphanumeric() || c == '_')
+        })
+    }
+
+    /// Signatures that between them have every result type and every parameter type of the
+    /// modules (each the first to add one).
+    fn signatures_of_every_type() -> Vec<(Module, Signature)> {
+        let mut seen: Vec<String> = Vec::new();
+        let mut chosen = Vec::new();
+        for &module in Module::ALL {
+            for (_, signature) in signatures(module) {
+                let Ok(signature) = signature else { continue };
+                let types: Vec<String> = [format!("result {:?}", signature.result)]
+                    .into_iter()
+                    .chain(signature.parameters.iter().map(|ty| format!("{ty:?}")))
+                    .collect();
+                if types.iter().any(|ty| !seen.contains(ty)) {
+                    seen.extend(types);
+                    chosen.push((module, signature));
+                }
+            }
+        }
+        chosen
+    }
+
+    #[test]
+    fn the_empty_kernel_calls_nothing_and_compiles_in_every_language() {
+        let chosen = signatures_of_every_type();
+        assert!(chosen.len() >= 5, "{} signatures", chosen.len());
+        for (module, signature) in &chosen {
+            let name = signature.name.as_str();
+            for language in Language::ALL {
+                let call = timing_source(language, signature, name, 8, Body::Call);
+                assert!(calls(&call, name), "{language} {name}:\n{call}");
+                let empty = timing_source(language, signature, name, 8, Body::Empty);
+                assert!(!calls(&empty, name), "{language} {name}:\n{empty}");
+                let callee = Callee {
+                    signature,
+                    name,
+                    extra: "",
+                    iterations: 8,
+                };
+                let (shader, kernel) = timing_kernel(*module, language, callee, Body::Empty);
+                if let Err(error) = shader.compile_kernel(&kernel) {
+                    panic!("{language} {name}: {error}\n{empty}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_argument_component_reaches_the_empty_result() {
+        let signature = signatures(Module::RayCone)
+            .into_iter()
+            .find(|(name, _)| name == "rf_width_at")
+            .and_then(|(_, signature)| signature.ok())
+            .expect("rf_width_at");
+        let glsl = timing_source(Language::Glsl, &signature, "rf_width_at", 8, Body::Empty);
+        for line in [
+            "    float r;",
+            "    r = v0.width + v0.spread_angle + v1;",
+            "        float d = (r) * zero;",
+            "        v1 += d;",
+            "        r = v0.width + v0.spread_angle + v1;",
+        ] {
+            assert!(glsl.contains(line), "{line} in\n{glsl}");
+        }
     }
 }
