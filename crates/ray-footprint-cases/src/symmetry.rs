@@ -17,8 +17,8 @@
 //!   were first put on the grid of `2^-14` (moved by 1024 and back), so that every sum is exact;
 //! - a case whose change is not exact is left out: every value a scale, a rotation or an exchange
 //!   changes must stay finite, normal and within the documented range (0 or 1e-12 to 1e12 in
-//!   magnitude), and every value a translation changes must differ from the case's by exactly one
-//!   of the offset's components.
+//!   magnitude), and every value a translation changes must differ from the case's by exactly the
+//!   offset's component of its own axis.
 //!
 //! A symmetry may hold only on part of the domain, where an absolute clamp does not act (a zero
 //! width clamped to `MIN_MAGNITUDE` is not scaled with the case): [`Symmetry::within`] states
@@ -313,39 +313,53 @@ impl<A: Args, R: Value> Symmetry<A, R> {
     }
 
     /// Whether `change` is exact on `args` (see the module's documentation): every float it
-    /// changes stays finite, normal and within [`RANGE`], a translation's by exactly one of the
-    /// offset's components; and neither case holds a subnormal float (which a device may flush to
-    /// zero).
+    /// changes stays finite, normal and within [`RANGE`], a translation's position moved by exactly
+    /// the offset's component of its own axis; and neither case holds a subnormal float (which a
+    /// device may flush to zero).
     pub fn exact(&self, args: &A, change: &Change) -> bool {
         let transformed = self.transform(args, change);
         let offsets = change.offset.to_array().map(f64::from);
-        // A translation's positions are the floats a far offset moves; each must move by exactly
-        // one of the offset's components (a position too large for the grid would not move).
-        let far = Change {
-            offset: Vec3::splat(1.0e30),
-            ..Change::IDENTITY
-        };
-        let positions: Vec<bool> = match self.kind {
-            Kind::Translation => floats(args)
-                .iter()
-                .zip(floats(&self.transform(args, &far)))
-                .map(|(&before, moved)| before.to_bits() != moved.to_bits())
-                .collect(),
-            _ => vec![false; floats(args).len()],
-        };
         let in_range = |x: f32| x == 0.0 || (RANGE.0..=RANGE.1).contains(&x.abs());
-        let changed_exactly = floats(args).iter().zip(floats(&transformed)).zip(positions).all(
-            |((&before, after), position)| {
+        let changed_exactly = floats(args)
+            .iter()
+            .zip(floats(&transformed))
+            .zip(self.position_axes(args))
+            .all(|((&before, after), axis)| {
                 let moved = f64::from(after) - f64::from(before);
                 let valid = after.is_finite() && in_range(after);
-                if position {
-                    valid && offsets.contains(&moved)
-                } else {
-                    before.to_bits() == after.to_bits() || valid
+                match axis {
+                    Some(axis) => valid && moved == offsets[axis],
+                    None => before.to_bits() == after.to_bits() || valid,
                 }
-            },
-        );
+            });
         changed_exactly && !has_subnormal(args) && !has_subnormal(&transformed)
+    }
+
+    /// For each float of `args`, the axis whose offset a translation adds to it (`None` for a
+    /// float it leaves, and for every float of another kind of symmetry): a far probe offset,
+    /// `(1, 2, 4) * 1e30`, moves a position of axis `i` by about `2^i * 1e30` (a position too large
+    /// for the grid would not move).
+    fn position_axes(&self, args: &A) -> Vec<Option<usize>> {
+        let before = floats(args);
+        if self.kind != Kind::Translation {
+            return vec![None; before.len()];
+        }
+        let probe = Change {
+            offset: Vec3::new(1.0e30, 2.0e30, 4.0e30),
+            ..Change::IDENTITY
+        };
+        before
+            .iter()
+            .zip(floats(&self.transform(args, &probe)))
+            .map(
+                |(&before, moved)| match ((f64::from(moved) - f64::from(before)) / 1.0e30).round() as i64 {
+                    1 => Some(0),
+                    2 => Some(1),
+                    4 => Some(2),
+                    _ => None,
+                },
+            )
+            .collect()
     }
 
     /// Whether the symmetry applies to `args` under `change`: the change is exact and the case and
