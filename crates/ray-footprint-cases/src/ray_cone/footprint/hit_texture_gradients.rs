@@ -4,7 +4,8 @@
 
 use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
 use crate::ray_cone::footprint::hit_texture_lod::{
-    areas, face_normal, hit_cases, hit_conditioned, unclamped_hit, Hit, HitGradientArgs, ILL_CONDITIONED,
+    areas, face_normal, fuzz_hit, hit_cases, hit_conditioned, unclamped_hit, Hit, HitGradientArgs,
+    ILL_CONDITIONED,
 };
 use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
 use crate::record::Record;
@@ -76,19 +77,7 @@ pub fn record() -> Record<HitGradientArgs, Vec4> {
         |&(cone, d, t, p0, p1, p2, uv0, uv1, uv2): &HitGradientArgs| (cone, -d, t, p0, p1, p2, uv0, uv1, uv2),
         |gradients: Vec4| gradients,
     ))
-    .fuzz(|d| {
-        (
-            d.cone(),
-            d.unit(),
-            d.distance(),
-            d.vec3(),
-            d.vec3(),
-            d.vec3(),
-            d.vec2(),
-            d.vec2(),
-            d.vec2(),
-        )
-    })
+    .fuzz(fuzz_hit)
     .degenerate(vec![
         value(
             "head on, unit triangle, uv = xy",

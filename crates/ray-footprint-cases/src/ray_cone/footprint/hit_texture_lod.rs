@@ -6,6 +6,7 @@
 use crate::conditioning::well_conditioned;
 use crate::degenerate::{cone, grazing, mirror, same, value, IN_PLANE, NAN};
 use crate::exact::{log_uniform, tangent, towards, unit};
+use crate::fuzzing::draw::Draw;
 use crate::ray_cone::bound::width_rounding;
 use crate::ray_cone::curvature::shared::clamped_unit;
 use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
@@ -112,18 +113,8 @@ pub fn record() -> Record<HitLodArgs, f32> {
         |lod: f32| lod,
     ))
     .fuzz(|d| {
-        (
-            d.cone(),
-            d.unit(),
-            d.distance(),
-            d.vec3(),
-            d.vec3(),
-            d.vec3(),
-            d.vec2(),
-            d.vec2(),
-            d.vec2(),
-            d.vec2(),
-        )
+        let (cone, direction, t, p0, p1, p2, uv0, uv1, uv2) = fuzz_hit(d);
+        (cone, direction, t, p0, p1, p2, uv0, uv1, uv2, d.vec2())
     })
     .degenerate(vec![
         value(
@@ -218,6 +209,21 @@ pub(crate) fn hit_cases() -> BoxedStrategy<HitGradientArgs> {
             (cone, direction, t, p[0], p[1], p[2], uv[0], uv[1], uv[2])
         })
         .boxed()
+}
+
+/// The fuzz draw of the arguments both hit functions share, in their order.
+pub(crate) fn fuzz_hit(d: &mut Draw) -> HitGradientArgs {
+    (
+        d.cone(),
+        d.unit(),
+        d.distance(),
+        d.vec3(),
+        d.vec3(),
+        d.vec3(),
+        d.vec2(),
+        d.vec2(),
+        d.vec2(),
+    )
 }
 
 /// Why a hit is left to the special-value suite's clamps: what the hit functions divide by or
