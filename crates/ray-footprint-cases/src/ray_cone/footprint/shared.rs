@@ -9,6 +9,7 @@ use crate::exact::{heron_area2, log_uniform, plane_hit, signed_log, towards, uni
 use crate::ray_cone::bound::unit_excess;
 use crate::reference::gamma;
 use crate::strategy::{triangle, uv_triangle};
+use crate::symmetry::Symmetry;
 use glam::{DMat2, DVec2, DVec3, Vec2, Vec3, Vec3Swizzles};
 use proptest::prelude::*;
 use ray_footprint::ray_cone as rc;
@@ -53,7 +54,7 @@ pub fn area_corners(p: [Vec3; 3], uv: [Vec2; 3], f: impl Fn(f64, f64) -> f64) ->
 /// [`uv_area2_error`]); an area computed exactly, a repeated vertex's 0 among them, is. A quotient
 /// of the areas is ill-conditioned elsewhere: a device that fuses the cross product's multiply and
 /// subtraction leaves a residual area of a repeated vertex that depends on the vertex order.
-pub(crate) fn areas_known(&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs) -> bool {
+fn areas_known(&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs) -> bool {
     let known = |area: f32, error: f32| f64::from(error) <= WELL_CONDITIONED * f64::from(area);
     known(
         rc::triangle_world_area2(p0, p1, p2),
@@ -62,6 +63,37 @@ pub(crate) fn areas_known(&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs) -> boo
         rc::triangle_uv_area2(uv0, uv1, uv2),
         uv_area2_error([uv0, uv1, uv2]),
     )
+}
+
+/// `texel_density`'s and `triangle_base_lod`'s rotation: the corners turned, the same result,
+/// where both areas are known ([`areas_known`]).
+pub(crate) fn corners_turned() -> Symmetry<TriangleWithUvs, f32> {
+    Symmetry::rotation(
+        "the corners turned, where both areas are known to 2^-10: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs, r| (r * p0, r * p1, r * p2, uv0, uv1, uv2),
+        |value: f32, _| value,
+    )
+    .within(areas_known)
+}
+
+/// `texel_density`'s and `triangle_base_lod`'s translation: the corners moved, the same result.
+pub(crate) fn corners_moved() -> Symmetry<TriangleWithUvs, f32> {
+    Symmetry::translation(
+        "the corners moved: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs, t| (p0 + t, p1 + t, p2 + t, uv0, uv1, uv2),
+        |value: f32, _| value,
+    )
+}
+
+/// `texel_density`'s and `triangle_base_lod`'s exchange: the vertex order turned, the same result,
+/// where both areas are known ([`areas_known`]).
+pub(crate) fn vertex_order_turned() -> Symmetry<TriangleWithUvs, f32> {
+    Symmetry::exchange(
+        "the vertex order turned, where both areas are known to 2^-10: the same",
+        |&(p0, p1, p2, uv0, uv1, uv2): &TriangleWithUvs| (p1, p2, p0, uv1, uv2, uv0),
+        |value: f32| value,
+    )
+    .within(areas_known)
 }
 
 /// A triangle's vertices ([`triangle`]), then its UVs ([`uv_triangle`]), as six arguments.

@@ -3,8 +3,8 @@
 
 use crate::degenerate::value;
 use crate::ray_cone::footprint::shared::{
-    area_corners, areas_known, triangle_with_uvs, Mapped, COLLINEAR_UVS, ZERO_AREA,
-    ZERO_AREA_AND_COLLINEAR_UVS,
+    area_corners, corners_moved, corners_turned, triangle_with_uvs, vertex_order_turned, Mapped,
+    COLLINEAR_UVS, ZERO_AREA, ZERO_AREA_AND_COLLINEAR_UVS,
 };
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference};
@@ -44,31 +44,9 @@ pub fn record() -> Record<impl Args + Perturb, impl Value> {
         |lod: f32, s| lod + s.log2(),
     )
     .within(|&(p0, p1, p2, ..)| rc::triangle_world_area2(p0, p1, p2) > MIN_SQUARED_MAGNITUDE))
-    .symmetry(
-        Symmetry::rotation(
-            "the corners turned, where both areas are known to 2^-10: the same",
-            |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), r| {
-                (r * p0, r * p1, r * p2, uv0, uv1, uv2)
-            },
-            |value: f32, _| value,
-        )
-        .within(areas_known),
-    )
-    .symmetry(Symmetry::translation(
-        "the corners moved: the same",
-        |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2), t| {
-            (p0 + t, p1 + t, p2 + t, uv0, uv1, uv2)
-        },
-        |value: f32, _| value,
-    ))
-    .symmetry(
-        Symmetry::exchange(
-            "the vertex order turned, where both areas are known to 2^-10: the same",
-            |&(p0, p1, p2, uv0, uv1, uv2): &(Vec3, Vec3, Vec3, Vec2, Vec2, Vec2)| (p1, p2, p0, uv1, uv2, uv0),
-            |value: f32| value,
-        )
-        .within(areas_known),
-    )
+    .symmetry(corners_turned())
+    .symmetry(corners_moved())
+    .symmetry(vertex_order_turned())
     .fuzz(|d| (d.vec3(), d.vec3(), d.vec3(), d.vec2(), d.vec2(), d.vec2()))
     .degenerate(vec![
         value(
