@@ -155,6 +155,33 @@ pub fn triangle() -> BoxedStrategy<[Vec3; 3]> {
     one_of![5 => ordinary, 1 => scaled, 1 => sliver, 1 => degenerate].boxed()
 }
 
+/// A triangle and a unit direction: random, or meeting the triangle's plane at a cosine from
+/// head-on to grazing.
+pub fn triangle_and_direction() -> BoxedStrategy<([Vec3; 3], Vec3)> {
+    let cosine = one_of![
+        3 => uniform(0.0, 1.0),
+        1 => uniform(-6.0, -2.0).prop_map(|e| 10f32.powf(e)),
+        1 => Just(0.0f32),
+        1 => Just(1.0f32),
+    ];
+    (triangle(), unit_vec3(), cosine, any::<bool>())
+        .prop_map(|(p, random, cosine, relative)| {
+            let normal = (p[1] - p[0]).cross(p[2] - p[0]).try_normalize();
+            let direction = match normal {
+                Some(n) if relative => {
+                    let tangent = n
+                        .cross(random)
+                        .try_normalize()
+                        .unwrap_or_else(|| n.any_orthonormal_vector());
+                    (tangent * (1.0 - cosine * cosine).max(0.0).sqrt() - n * cosine).normalize()
+                }
+                _ => random,
+            };
+            (p, direction)
+        })
+        .boxed()
+}
+
 /// UV coordinates of a triangle: ordinary, tiny, collinear or all equal.
 pub fn uv_triangle() -> BoxedStrategy<[Vec2; 3]> {
     let uv = || (uniform(-2.0, 2.0), uniform(-2.0, 2.0)).prop_map(|(u, v)| Vec2::new(u, v));

@@ -13,15 +13,13 @@ use crate::ray_cone::footprint::shared::{COLLINEAR_UVS, ZERO_AREA};
 use crate::ray_cone::strategy::ray_cone;
 use crate::record::Record;
 use crate::reference::{gamma, Deviation, Kind, Reference, U};
-use crate::strategy::{distance, image_size, triangle, unit_vec3, uv_triangle};
+use crate::strategy::{distance, image_size, triangle_and_direction, uv_triangle};
 use crate::symmetry::Symmetry;
 use glam::{DMat2, DVec2, DVec3, Vec2, Vec2Swizzles, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone, MIN_COS, MIN_MAGNITUDE, MIN_SQUARED_MAGNITUDE};
 use ray_footprint::shaders::Module;
-use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval2, interval3, sum_of_products, Interval, Interval3};
-use shader_proptest::one_of;
 use std::f64::consts::LN_2;
 
 /// Arguments of `rf_hit_texture_lod`: the cone, the direction, the hit distance, the triangle's
@@ -178,36 +176,10 @@ pub fn record() -> Record<HitLodArgs, f32> {
 }
 
 /// The arguments both hit functions share: a cone, a direction, a hit distance, a triangle and
-/// its UVs. The direction is random, or meets the triangle's plane at a cosine from head-on to
-/// grazing; the triangle ordinary, scaled, a sliver or of zero area ([`triangle`]).
+/// its UVs ([`triangle_and_direction`]).
 pub(crate) fn hit_cases() -> BoxedStrategy<HitGradientArgs> {
-    let cosine = one_of![
-        3 => uniform(0.0, 1.0),
-        1 => uniform(-6.0, -2.0).prop_map(|e| 10f32.powf(e)),
-        1 => Just(0.0f32),
-        1 => Just(1.0f32),
-    ];
-    (
-        ray_cone(),
-        distance(),
-        triangle(),
-        uv_triangle(),
-        (unit_vec3(), cosine, any::<bool>()),
-    )
-        .prop_map(|(cone, t, p, uv, (random, cosine, relative))| {
-            let normal = (p[1] - p[0]).cross(p[2] - p[0]).try_normalize();
-            let direction = match normal {
-                Some(n) if relative => {
-                    let along = n
-                        .cross(random)
-                        .try_normalize()
-                        .unwrap_or_else(|| n.any_orthonormal_vector());
-                    (along * (1.0 - cosine * cosine).max(0.0).sqrt() - n * cosine).normalize()
-                }
-                _ => random,
-            };
-            (cone, direction, t, p[0], p[1], p[2], uv[0], uv[1], uv[2])
-        })
+    (ray_cone(), distance(), triangle_and_direction(), uv_triangle())
+        .prop_map(|(cone, t, (p, direction), uv)| (cone, direction, t, p[0], p[1], p[2], uv[0], uv[1], uv[2]))
         .boxed()
 }
 

@@ -13,45 +13,16 @@ use crate::ray_diff::intervals::{self, barycentric_quotient};
 use crate::ray_diff::reference::widths;
 use crate::record::Record;
 use crate::reference::{Deviation, Kind, Reference};
-use crate::strategy::{scalar, triangle, unit_vec3, uv_triangle};
+use crate::strategy::{scalar, triangle_and_direction, uv_triangle};
 use glam::{DMat2, DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 use ray_footprint::ray_cone::{self as rc, RayCone};
 use ray_footprint::ray_diff::{self as rd, Derivatives2, DIFF_MIN_COS, DIFF_MIN_MAGNITUDE};
 use ray_footprint::shaders::Module;
-use shader_proptest::draw::uniform;
 use shader_proptest::interval::{interval2, interval3, Interval, Interval3};
-use shader_proptest::one_of;
 
 /// The arguments of `anisotropic_cone_gradients`: width, direction, the triangle, its UVs.
 pub type ConeGradientArgs = (f32, Vec3, Vec3, Vec3, Vec3, Vec2, Vec2, Vec2);
-
-/// A triangle and a unit direction: random, or meeting the triangle's plane at a cosine from
-/// head-on to grazing.
-fn triangle_and_direction() -> BoxedStrategy<([Vec3; 3], Vec3)> {
-    let cosine = one_of![
-        3 => uniform(0.0, 1.0),
-        1 => uniform(-6.0, -2.0).prop_map(|e| 10f32.powf(e)),
-        1 => Just(0.0f32),
-        1 => Just(1.0f32),
-    ];
-    (triangle(), unit_vec3(), cosine, any::<bool>())
-        .prop_map(|(p, random, cosine, relative)| {
-            let normal = (p[1] - p[0]).cross(p[2] - p[0]).try_normalize();
-            let direction = match normal {
-                Some(n) if relative => {
-                    let tangent = n
-                        .cross(random)
-                        .try_normalize()
-                        .unwrap_or_else(|| n.any_orthonormal_vector());
-                    (tangent * (1.0 - cosine * cosine).max(0.0).sqrt() - n * cosine).normalize()
-                }
-                _ => random,
-            };
-            (p, direction)
-        })
-        .boxed()
-}
 
 /// The record of `rf_anisotropic_cone_gradients`: the enclosure of the UV gradients.
 pub fn record() -> Record<ConeGradientArgs, Derivatives2> {
