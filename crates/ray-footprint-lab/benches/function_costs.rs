@@ -55,10 +55,13 @@ use ray_footprint_lab::timing::{
 };
 use shader_proptest::spirv::{self, Statistics};
 use shader_proptest::{
-    barrier_shader_writes, DeviceRequest, Error, Feature, Gpu, Language, Location, Owner, WORKGROUP_SIZE,
+    barrier_shader_writes, DeviceRequest, Error, Feature, Gpu, Language, Location, Owner, Shader,
+    WORKGROUP_SIZE,
 };
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, PoisonError};
 
 /// The environment variable that names the peers' directory when `--peers` does not.
 const PEERS_ENV: &str = "RAY_FOOTPRINT_PEERS";
@@ -155,6 +158,45 @@ fn kernel_index(language: usize, body: Body) -> usize {
     }
 }
 
+/// A kernel's shader and source, or why it cannot run here.
+type Source = Result<(Shader, String), String>;
+/// A kernel's SPIR-V and the statistics of its `spirv-opt -O` output, or why it cannot run.
+type Compiled = Result<(Vec<u32>, Statistics), String>;
+
+/// `source` compiled and counted.
+fn compile(source: &Source) -> Compiled {
+    let (shader, kernel) = source.as_ref().map_err(Clone::clone)?;
+    let words = shader.compile_kernel(kernel).map_err(|e| format!("error: {e}"))?;
+    let optimized = spirv::optimize(&words).map_err(|e| format!("error: {e}"))?;
+    let statistics = Statistics::of(&optimized).map_err(|e| format!("error: {e}"))?;
+    Ok((words, statistics))
+}
+
+/// Every source compiled, on every processor (the compilers are processes of their own; one at a
+/// time, the 850 kernels of a full run took minutes), in the sources' order.
+fn compile_all(sources: &[&Source]) -> Vec<Compiled> {
+    let next = AtomicUsize::new(0);
+    let compiled: Vec<Mutex<Option<Compiled>>> = sources.iter().map(|_| Mutex::new(None)).collect();
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let index = next.fetch_add(1, Ordering::Relaxed);
+                let Some(source) = sources.get(index) else { break };
+                *compiled[index].lock().unwrap_or_else(PoisonError::into_inner) = Some(compile(source));
+            });
+        }
+    });
+    compiled
+        .into_iter()
+        .map(|slot| {
+            slot.into_inner()
+                .unwrap_or_else(PoisonError::into_inner)
+                .unwrap_or_else(|| Err(String::from("error: not compiled")))
+        })
+        .collect()
+}
+
 /// A compiled kernel, ready to dispatch.
 struct Kernel {
     pipeline: vk::Pipeline,
@@ -195,24 +237,19 @@ impl<'g> Bench<'g> {
         })
     }
 
-    /// The kernel of `callee` in `language` for `module`, or its empty kernel (`body`), compiled
-    /// and made a pipeline; the reason where it cannot run here.
-    fn kernel(
-        &mut self,
-        module: Module,
-        language: Language,
-        callee: Callee<'_>,
-        body: Body,
-    ) -> Result<Kernel, String> {
+    /// The kernel of `callee` in `language` for `module`, or its empty kernel (`body`): its shader
+    /// and kernel source, or why it cannot run here.
+    fn source(&self, module: Module, language: Language, callee: Callee<'_>, body: Body) -> Source {
         let (shader, kernel) = timing_kernel(module, language, callee, body);
-        if let Some(feature) = shader.features().iter().find(|&&f| !self.gpu.has(f)) {
-            return Err(format!("not run: the device lacks {}", feature.name()));
+        match shader.features().iter().find(|&&f| !self.gpu.has(f)) {
+            Some(feature) => Err(format!("not run: the device lacks {}", feature.name())),
+            None => Ok((shader, kernel)),
         }
-        let words = shader
-            .compile_kernel(&kernel)
-            .map_err(|e| format!("error: {e}"))?;
-        let optimized = spirv::optimize(&words).map_err(|e| format!("error: {e}"))?;
-        let statistics = Statistics::of(&optimized).map_err(|e| format!("error: {e}"))?;
+    }
+
+    /// `compiled` made a pipeline.
+    fn kernel(&mut self, compiled: Compiled) -> Result<Kernel, String> {
+        let (words, statistics) = compiled?;
         let pipeline = self
             .owner
             .compute_pipeline(&words, self.layout)
@@ -317,64 +354,90 @@ fn peer_source(peers: Option<&PathBuf>, peer: &Peer) -> Result<String, String> {
     Ok(format!("{items}\n{}\n", peer.adapter))
 }
 
-/// Every selected function's row, its kernels compiled and its buffers made.
-fn rows(bench: &mut Bench<'_>, options: &Options) -> Result<Vec<Row>, Error> {
-    let mut rows = Vec::new();
+/// A selected function before its kernels are compiled: its sources, by [`kernel_index`] then
+/// [`PEER`], or why it has none.
+struct Planned {
+    module: Module,
+    name: String,
+    peer: Option<&'static Peer>,
+    signature: Result<Signature, String>,
+    sources: Vec<Source>,
+}
+
+/// Every selected function with its kernels' sources.
+fn plan(bench: &Bench<'_>, options: &Options) -> Vec<Planned> {
+    let mut planned = Vec::new();
     for &module in Module::ALL {
         for (name, signature) in signatures(module) {
             if !options.accepts(module, &name) {
                 continue;
             }
             let peer = PEERS.iter().find(|peer| peer.function == name);
-            let signature = match signature {
-                Ok(signature) => signature,
-                Err(reason) => {
-                    rows.push(Row {
-                        module,
-                        name,
-                        peer,
-                        kernels: (0..KERNELS).map(|_| Err(format!("not run: {reason}"))).collect(),
-                        set: vk::DescriptorSet::null(),
-                        times: vec![Vec::new(); KERNELS],
+            let sources = match &signature {
+                Err(reason) => (0..KERNELS).map(|_| Err(format!("not run: {reason}"))).collect(),
+                Ok(signature) => {
+                    let own = Callee {
+                        signature,
+                        name: &name,
+                        extra: "",
+                        iterations: bench.load.iterations,
+                    };
+                    let mut sources: Vec<Source> = LANGUAGES
+                        .iter()
+                        .flat_map(|&language| [(language, Body::Call), (language, Body::Empty)])
+                        .map(|(language, body)| bench.source(module, language, own, body))
+                        .collect();
+                    sources.push(match peer {
+                        None => Err(String::from("no peer")),
+                        Some(peer) => peer_source(options.peers.as_ref(), peer).and_then(|extra| {
+                            let adapter = format!("peer_{name}");
+                            let callee = Callee {
+                                name: &adapter,
+                                extra: &extra,
+                                ..own
+                            };
+                            bench.source(module, Language::Slang, callee, Body::Call)
+                        }),
                     });
-                    continue;
+                    sources
                 }
             };
-            let iterations = bench.load.iterations;
-            let own = Callee {
-                signature: &signature,
-                name: &name,
-                extra: "",
-                iterations,
-            };
-            let mut kernels: Vec<Result<Kernel, String>> = LANGUAGES
-                .iter()
-                .flat_map(|&language| [(language, Body::Call), (language, Body::Empty)])
-                .map(|(language, body)| bench.kernel(module, language, own, body))
-                .collect();
-            let peer_kernel = match peer {
-                None => Err(String::from("no peer")),
-                Some(peer) => peer_source(options.peers.as_ref(), peer).and_then(|extra| {
-                    let adapter = format!("peer_{name}");
-                    let callee = Callee {
-                        name: &adapter,
-                        extra: &extra,
-                        ..own
-                    };
-                    bench.kernel(module, Language::Slang, callee, Body::Call)
-                }),
-            };
-            kernels.push(peer_kernel);
-            let set = bench.buffers(&signature)?;
-            rows.push(Row {
+            planned.push(Planned {
                 module,
                 name,
                 peer,
-                kernels,
-                set,
-                times: vec![Vec::new(); KERNELS],
+                signature,
+                sources,
             });
         }
+    }
+    planned
+}
+
+/// Every selected function's row, its kernels compiled and its buffers made.
+fn rows(bench: &mut Bench<'_>, options: &Options) -> Result<Vec<Row>, Error> {
+    let planned = plan(bench, options);
+    let sources: Vec<&Source> = planned.iter().flat_map(|p| &p.sources).collect();
+    let mut compiled = compile_all(&sources).into_iter();
+    let mut rows = Vec::new();
+    for function in planned {
+        let kernels = compiled
+            .by_ref()
+            .take(KERNELS)
+            .map(|compiled| bench.kernel(compiled))
+            .collect();
+        let set = match &function.signature {
+            Ok(signature) => bench.buffers(signature)?,
+            Err(_) => vk::DescriptorSet::null(),
+        };
+        rows.push(Row {
+            module: function.module,
+            name: function.name,
+            peer: function.peer,
+            kernels,
+            set,
+            times: vec![Vec::new(); KERNELS],
+        });
     }
     Ok(rows)
 }
