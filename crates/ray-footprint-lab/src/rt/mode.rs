@@ -183,13 +183,14 @@ impl Mode {
 }
 
 /// What a mode's colour-only payload carries beyond the colour and the bounce depth (16 bytes):
-/// mip 0's payload is 16 bytes, a cone mode's 24, `cone_sections`' 44, a ray-differential
+/// mip 0's payload is 16 bytes, a cone mode's 24, `cone_sections`' 36, a ray-differential
 /// mode's 64.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Payload {
     /// The ray cone (8 bytes).
     pub cone: bool,
-    /// The sagittal section and its axis (20 bytes).
+    /// The sagittal section and its axis (12 bytes: the section's cone, and the axis in two
+    /// 16-bit snorms of its octahedral projection).
     pub sagittal: bool,
     /// The ray differential: origin and direction changes per pixel step, without the pads of
     /// `RfRayDiff` (48 bytes).

@@ -24,7 +24,7 @@ RfRayCone rt_payload_cone() {
 // The sagittal section the ray carries, or a zero one where the mode needs none.
 RtSagittal rt_payload_sagittal() {
 #ifdef RT_PAYLOAD_SAGITTAL
-    return RtSagittal(payload.sagittal_cone, payload.sagittal_axis);
+    return RtSagittal(payload.sagittal_cone, rt_unpack_axis(payload.sagittal_axis));
 #else
     return RtSagittal(RfRayCone(0.0, 0.0), vec3(0.0));
 #endif
@@ -50,7 +50,7 @@ void main() {
 #endif
 #ifdef RT_PAYLOAD_SAGITTAL
         next.sagittal_cone = bounce.sagittal.cone;
-        next.sagittal_axis = bounce.sagittal.axis;
+        next.sagittal_axis = rt_pack_axis(bounce.sagittal.axis);
 #endif
 #ifdef RT_PAYLOAD_DIFF
         next.diff = rt_colour_diff(bounce.diff);
