@@ -2,7 +2,9 @@
 //! own cost taken out, and beside it what the peers' originals cost.
 //!
 //! For every public function of every module (its Rust mirror's, in module order) and every
-//! language (WGSL, GLSL, Slang, and HLSL through glslang and through slangc), a compute kernel calls
+//! language (WGSL, GLSL, Slang, and HLSL through glslang and through slangc; and WGSL once more with
+//! naga's loop bounding off, the counter naga puts in every loop unless told not to, as wgpu's
+//! `create_shader_module_trusted` can), a compute kernel calls
 //! the function in a loop whose every call depends on the last result
 //! ([`ray_footprint_lab::timing::function`]): on a GPU 2^18 invocations of 2048 calls,
 //! 536,870,912 evaluations per kernel. Beside it runs the language's *empty kernel* for the
@@ -33,7 +35,9 @@
 //! goal that no function is slower than its peer's original by more than 10% (Slang against
 //! Slang) is taken on the subtracted times, each round's own difference: met where every round of
 //! ours is within 1.1 times every round of the peer's, MISSED where every round is beyond it,
-//! otherwise not separable at this load; the ratio of the raw medians is printed beside it.
+//! otherwise not separable at this load, and none where the peer's own time is not above zero in
+//! some round (a function as cheap as the stand-in: a ratio of two such times means nothing); the
+//! ratio of the raw medians is printed beside it.
 //! Without a directory the peer's line says "not run". No peer code is in this repository.
 //!
 //! On lavapipe (a CPU implementation) the run is a smoke run: 2^10 invocations of 16 calls, no
@@ -53,6 +57,7 @@ use ray_footprint_lab::timing::peers::{extract, Peer, PEERS};
 use ray_footprint_lab::timing::{
     self, gpu_clocks, query_pool, read_queries, round_order, warm_up, write_timestamp, Spread, Timestamps,
 };
+use shader_proptest::compile::validate_wgsl;
 use shader_proptest::spirv::{self, Statistics};
 use shader_proptest::{
     barrier_shader_writes, DeviceRequest, Error, Feature, Gpu, Language, Location, Owner, Shader,
@@ -141,9 +146,46 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     Ok(options)
 }
 
-/// The languages timed, each with its function kernel and its empty kernel.
-const LANGUAGES: [Language; 5] = Language::ALL;
-/// A row's kernels: each language's function kernel then its empty kernel, then the peer's.
+/// How a line of kernels is compiled: its language, and for WGSL whether naga bounds its loops.
+#[derive(Clone, Copy)]
+struct Line {
+    language: Language,
+    /// naga's `force_loop_bounding` (WGSL only): a counter in every loop, which wgpu adds unless a
+    /// module is made by `create_shader_module_trusted` with the loop check off.
+    bounded_loops: bool,
+}
+
+impl Line {
+    const fn of(language: Language) -> Line {
+        Line {
+            language,
+            bounded_loops: true,
+        }
+    }
+
+    fn label(self) -> &'static str {
+        if self.bounded_loops {
+            self.language.name()
+        } else {
+            "WGSL, loops unbounded"
+        }
+    }
+}
+
+/// The lines timed, each with its function kernel and its empty kernel: every language as its
+/// compiler compiles it by default, then WGSL with naga's loop bounding off.
+const LANGUAGES: [Line; 6] = [
+    Line::of(Language::Wgsl),
+    Line::of(Language::Glsl),
+    Line::of(Language::Slang),
+    Line::of(Language::HlslGlslang),
+    Line::of(Language::HlslSlangc),
+    Line {
+        language: Language::Wgsl,
+        bounded_loops: false,
+    },
+];
+/// A row's kernels: each line's function kernel then its empty kernel, then the peer's.
 const KERNELS: usize = 2 * LANGUAGES.len() + 1;
 /// The peer's kernel's index.
 const PEER: usize = KERNELS - 1;
@@ -158,18 +200,47 @@ fn kernel_index(language: usize, body: Body) -> usize {
     }
 }
 
-/// A kernel's shader and source, or why it cannot run here.
-type Source = Result<(Shader, String), String>;
+/// A kernel to compile: its shader, its source, its module and its line.
+struct Job {
+    shader: Shader,
+    kernel: String,
+    module: Module,
+    line: Line,
+}
+
+/// A kernel's job, or why it cannot run here.
+type Source = Result<Job, String>;
 /// A kernel's SPIR-V and the statistics of its `spirv-opt -O` output, or why it cannot run.
 type Compiled = Result<(Vec<u32>, Statistics), String>;
 
 /// `source` compiled and counted.
 fn compile(source: &Source) -> Compiled {
-    let (shader, kernel) = source.as_ref().map_err(Clone::clone)?;
-    let words = shader.compile_kernel(kernel).map_err(|e| format!("error: {e}"))?;
+    let job = source.as_ref().map_err(Clone::clone)?;
+    let words = if job.line.bounded_loops {
+        job.shader
+            .compile_kernel(&job.kernel)
+            .map_err(|e| format!("error: {e}"))?
+    } else {
+        unbounded_wgsl(&job.kernel, job.module)?
+    };
     let optimized = spirv::optimize(&words).map_err(|e| format!("error: {e}"))?;
     let statistics = Statistics::of(&optimized).map_err(|e| format!("error: {e}"))?;
     Ok((words, statistics))
+}
+
+/// A WGSL kernel compiled as the harness compiles it (SPIR-V 1.3, the module's capabilities and
+/// immediates), but with naga's `force_loop_bounding` off.
+fn unbounded_wgsl(kernel: &str, module: Module) -> Result<Vec<u32>, String> {
+    let capabilities = module.naga_capabilities() | naga::valid::Capabilities::IMMEDIATES;
+    let (parsed, info) =
+        validate_wgsl(kernel, "kernel.wgsl", capabilities).map_err(|e| format!("error: {e}"))?;
+    let options = naga::back::spv::Options {
+        lang_version: (1, 3),
+        force_loop_bounding: false,
+        ..Default::default()
+    };
+    naga::back::spv::write_vec(&parsed, &info, &options, None)
+        .map_err(|e| format!("error: naga SPIR-V output: {e}"))
 }
 
 /// Every source compiled, on every processor (the compilers are processes of their own; one at a
@@ -239,11 +310,16 @@ impl<'g> Bench<'g> {
 
     /// The kernel of `callee` in `language` for `module`, or its empty kernel (`body`): its shader
     /// and kernel source, or why it cannot run here.
-    fn source(&self, module: Module, language: Language, callee: Callee<'_>, body: Body) -> Source {
-        let (shader, kernel) = timing_kernel(module, language, callee, body);
+    fn source(&self, module: Module, line: Line, callee: Callee<'_>, body: Body) -> Source {
+        let (shader, kernel) = timing_kernel(module, line.language, callee, body);
         match shader.features().iter().find(|&&f| !self.gpu.has(f)) {
             Some(feature) => Err(format!("not run: the device lacks {}", feature.name())),
-            None => Ok((shader, kernel)),
+            None => Ok(Job {
+                shader,
+                kernel,
+                module,
+                line,
+            }),
         }
     }
 
@@ -384,8 +460,8 @@ fn plan(bench: &Bench<'_>, options: &Options) -> Vec<Planned> {
                     };
                     let mut sources: Vec<Source> = LANGUAGES
                         .iter()
-                        .flat_map(|&language| [(language, Body::Call), (language, Body::Empty)])
-                        .map(|(language, body)| bench.source(module, language, own, body))
+                        .flat_map(|&line| [(line, Body::Call), (line, Body::Empty)])
+                        .map(|(line, body)| bench.source(module, line, own, body))
                         .collect();
                     sources.push(match peer {
                         None => Err(String::from("no peer")),
@@ -396,7 +472,7 @@ fn plan(bench: &Bench<'_>, options: &Options) -> Vec<Planned> {
                                 extra: &extra,
                                 ..own
                             };
-                            bench.source(module, Language::Slang, callee, Body::Call)
+                            bench.source(module, Line::of(Language::Slang), callee, Body::Call)
                         }),
                     });
                     sources
@@ -495,6 +571,11 @@ fn peer_verdict(row: &Row, verdicts: bool) -> String {
         return format!("raw {raw:.2}x, no empty kernel: no verdict");
     };
     let (ours, peer) = (Spread::of(&ours), Spread::of(&peer));
+    if peer.min <= 0.0 {
+        return format!(
+            "raw {raw:.2}x; the peer costs no more than the loop in some round: no ratio, no verdict"
+        );
+    }
     let ratio = format!("raw {raw:.2}x, less the loop {:.2}x", ours.median / peer.median);
     if !verdicts {
         return format!("{ratio}, no verdict (lavapipe)");
@@ -532,14 +613,14 @@ fn print_rows(rows: &[Row], verdicts: bool) {
     );
     println!("| --- | --- | --- | ---: | ---: | ---: | ---: | --- |");
     for row in rows {
-        for (index, language) in LANGUAGES.iter().enumerate() {
+        for (index, line) in LANGUAGES.iter().enumerate() {
             let kernels = (kernel_index(index, Body::Call), kernel_index(index, Body::Empty));
             let verdict = if index == SLANG {
                 peer_verdict(row, verdicts)
             } else {
                 String::new()
             };
-            print_line(row, language.name(), kernels, &verdict);
+            print_line(row, line.label(), kernels, &verdict);
             if let (SLANG, Some(peer)) = (index, row.peer) {
                 let label = format!("peer: {} (Slang)", peer.source.name());
                 print_line(row, &label, (PEER, kernel_index(SLANG, Body::Empty)), "");
