@@ -6,8 +6,9 @@ use ray_footprint::shaders::Module;
 use shader_proptest::{run_checks, Check, Error, Gpu, Language, Report, RunConfig};
 
 /// Runs every agreement check in every language ([`Language::ALL`]), in module order, and hands
-/// each result to `each` with the check's module and language. Half the processors (at least one)
-/// prepare the next checks while one runs ([`shader_proptest::run_checks`]).
+/// each result to `each` with the check's module and language. Every processor prepares the next
+/// checks while one runs ([`shader_proptest::run_checks`]): with an empty SPIR-V cache, compiling
+/// the kernels is most of the work, and the compilers are processes that keep a core each busy.
 pub fn run_all_checks(
     gpu: &Gpu,
     config: &RunConfig,
@@ -25,7 +26,7 @@ pub fn run_all_checks(
         .iter()
         .map(|&(module, check, language)| (check, module.shader(language)))
         .collect();
-    let preparers = (std::thread::available_parallelism().map_or(1, usize::from) / 2).max(1);
+    let preparers = std::thread::available_parallelism().map_or(1, usize::from);
     run_checks(gpu, &shaders, config, preparers, |index, result| {
         let (module, check, language) = runs[index];
         each(module, check, language, result);
