@@ -3,10 +3,11 @@
 //! log-uniformly over the documented range, within the bound derived from the record's; one
 //! symmetry per processor at a time, the reports printed in module order.
 //! `RAY_FOOTPRINT_SYMMETRIES=<text>` runs only the functions whose `module::function` name holds
-//! the text.
+//! the text; `SHADER_PROPTEST_SEED` draws other cases (the seed is printed).
 
 use ray_footprint_cases::symmetry::{SymmetryReport, CASES};
 use ray_footprint_cases::{records, Function};
+use shader_proptest::SEED_ENV;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -19,6 +20,8 @@ fn every_symmetry_holds_on_the_mirror() {
         .filter(|record| format!("{}::{}", record.module().stem(), record.name()).contains(&only))
         .flat_map(|record| (0..record.symmetry_list().len()).map(move |index| (record.as_ref(), index)))
         .collect();
+    let base_seed = base_seed();
+    println!("{SEED_ENV}={base_seed:#x} replays this run");
     let next = AtomicUsize::new(0);
     let reports: Mutex<Vec<Option<SymmetryReport>>> = Mutex::new(vec![None; runs.len()]);
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
@@ -29,7 +32,7 @@ fn every_symmetry_holds_on_the_mirror() {
                 let Some(&(record, index)) = runs.get(run) else {
                     break;
                 };
-                let report = record.symmetry_cpu(index, CASES, 0x5eed + index as u64);
+                let report = record.symmetry_cpu(index, CASES, base_seed + index as u64);
                 reports.lock().expect("no panic while holding the lock")[run] = Some(report);
             });
         }
@@ -49,4 +52,17 @@ fn every_symmetry_holds_on_the_mirror() {
         failures.len(),
         failures.join("\n")
     );
+}
+
+/// The seed of the first symmetry's cases (the next ones count up from it): [`SEED_ENV`], decimal
+/// or hexadecimal after `0x`, where it is set, else `0x5eed`.
+fn base_seed() -> u64 {
+    let Ok(text) = std::env::var(SEED_ENV) else {
+        return 0x5eed;
+    };
+    let parsed = match text.strip_prefix("0x") {
+        Some(hex) => u64::from_str_radix(hex, 16),
+        None => text.parse(),
+    };
+    parsed.unwrap_or_else(|_| panic!("{SEED_ENV}={text:?} holds no seed (decimal, or hexadecimal after 0x)"))
 }

@@ -49,11 +49,12 @@ fn plane_intersections_f64() -> BoxedStrategy<(Vec3, Vec3, Vec3, Vec3, Vec3)> {
         .boxed()
 }
 
-/// Whether neither of the function's clamps acts: the determinant `dot(cross(e1, e2), d)` is
+/// Whether neither of the function's clamps acts: the determinant `dot(cross(e1, e2), d)`, its edges
+/// taken in f64 as the function takes them (in f32 a sliver's determinant can be far off), is
 /// above `F64_MIN_MAGNITUDE` (with a margin) and no barycentric reaches `F64_MAX_VALUE`.
 fn unclamped_f64(&(o, d, p0, p1, p2): &(Vec3, Vec3, Vec3, Vec3, Vec3)) -> bool {
-    let [e1, e2] = [p1 - p0, p2 - p0].map(Vec3::as_dvec3);
-    let determinant = e1.cross(e2).dot(d.as_dvec3());
+    let [q0, q1, q2] = [p0, p1, p2].map(Vec3::as_dvec3);
+    let determinant = (q1 - q0).cross(q2 - q0).dot(d.as_dvec3());
     let barycentrics = rd64::intersect_triangle_plane_f64(o, d, p0, p1, p2);
     determinant.abs() > 2.0 * F64_MIN_MAGNITUDE && unclamped(barycentrics.as_dvec3(), F64_MAX_VALUE)
 }
