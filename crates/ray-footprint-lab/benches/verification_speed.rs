@@ -2,7 +2,7 @@
 //! through the public API as `verify` runs them, at a fixed number of cases per check and
 //! language, with 1, 2, 4, ... up to all processors generating cases (`RunConfig::threads`).
 //! Prints, per thread count, the checks run and not run, the cases, the wall time (compiling
-//! each kernel and making its pipeline included: half the processors do it for the next checks
+//! each kernel and making its pipeline included: every processor does it for the next checks
 //! while one runs) and the verified evaluations per second. Then, per thread count, where the
 //! time went ([`shader_proptest::Phase`]): each phase's seconds summed over the threads that
 //! worked in it and over every check, its share of the summed work, its share of the wall time
