@@ -1,10 +1,9 @@
 // ray-footprint ray-tracing renderer: the payload of the colour-only shaders (colour_*.r*), which
 // carries only what the render mode needs: the colour and the bounce depth always, the ray cone
 // where RT_PAYLOAD_CONE is defined, the sagittal section's cone and axis (rt_shading.glsl's
-// RtSagittal), the axis packed into one word, where RT_PAYLOAD_SAGITTAL is, the ray differential where
-// RT_PAYLOAD_DIFF is. The renderer
-// defines them per mode (Mode::payload in src/rt/mode.rs). Declarations and conversions only, so a
-// layout probe can include it.
+// RtSagittal), the axis packed into one word, where RT_PAYLOAD_SAGITTAL is, the ray differential
+// where RT_PAYLOAD_DIFF is. The renderer defines them per mode (Mode::payload in src/rt/mode.rs).
+// Declarations and conversions only, so a layout probe can include it.
 
 #ifndef RT_COLOUR_PAYLOAD_GLSL
 #define RT_COLOUR_PAYLOAD_GLSL
@@ -57,8 +56,8 @@ vec2 rt_signs(vec2 value) {
 
 // `axis` (unit, or zero for none) in one word: its octahedral projection (Cigolle et al., "A Survey
 // of Efficient Representations for Independent Unit Vectors", JCGT 3(2) 2014, section 3.2: the
-// vector over its L1 norm, the lower half folded over the diagonals) as two 16-bit snorms, good
-// to about 5e-5 radians; selects, no branches. rt_pack_axis(vec3(0.0, 0.0, 1.0)) is 0u.
+// vector over its L1 norm, the lower half folded over the diagonals) as two 16-bit snorms, steps
+// of 1/32767 in each; selects, no branches. rt_pack_axis(vec3(0.0, 0.0, 1.0)) is 0u.
 uint rt_pack_axis(vec3 axis) {
     float l1_norm = abs(axis.x) + abs(axis.y) + abs(axis.z);
     vec2 projected = axis.xy / max(l1_norm, RF_MIN_MAGNITUDE);
