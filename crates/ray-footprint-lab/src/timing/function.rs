@@ -517,25 +517,26 @@ fn write_value(ty: ShaderType, invocation: usize, words: &mut Words, out: &mut V
 mod tests {
     use super::*;
 
+    /// The signature of `name`, a function of the ray_cone module.
+    fn ray_cone_signature(name: &str) -> Signature {
+        signatures(Module::RayCone)
+            .into_iter()
+            .find(|(function, _)| function == name)
+            .and_then(|(_, signature)| signature.ok())
+            .unwrap_or_else(|| panic!("no signature for {name}"))
+    }
+
     #[test]
     fn every_function_of_a_module_has_its_signature() {
-        let signatures = signatures(Module::RayCone);
-        let width_at = signatures
-            .iter()
-            .find(|(name, _)| name == "rf_width_at")
-            .and_then(|(_, signature)| signature.as_ref().ok())
-            .expect("rf_width_at");
+        let width_at = ray_cone_signature("rf_width_at");
         assert_eq!(width_at.result, ShaderType::F32);
         assert_eq!(width_at.parameters.len(), 2);
         let ShaderType::Struct(cone) = width_at.parameters[0] else {
             panic!("the cone is a struct");
         };
         assert_eq!((cone.name, cone.fields.len()), ("RfRayCone", 2));
-        let refract = signatures
-            .iter()
-            .find(|(name, _)| name == "rf_refract_ray_cone")
-            .and_then(|(_, signature)| signature.as_ref().ok())
-            .expect("a signature over two lines");
+        // A signature over two lines.
+        let refract = ray_cone_signature("rf_refract_ray_cone");
         assert_eq!(refract.parameters.len(), 5);
     }
 
@@ -552,11 +553,7 @@ mod tests {
 
     #[test]
     fn the_loop_perturbs_every_argument_component_by_the_result() {
-        let signature = signatures(Module::RayCone)
-            .into_iter()
-            .find(|(name, _)| name == "rf_propagate")
-            .and_then(|(_, signature)| signature.ok())
-            .expect("rf_propagate");
+        let signature = ray_cone_signature("rf_propagate");
         let glsl = timing_source(Language::Glsl, &signature, "rf_propagate", 8, Body::Call);
         for line in [
             "RfRayCone time_rf_propagate(RfRayCone a0, float a1, float a2, float zero) {",
@@ -633,11 +630,7 @@ mod tests {
 
     #[test]
     fn every_argument_component_reaches_the_empty_result() {
-        let signature = signatures(Module::RayCone)
-            .into_iter()
-            .find(|(name, _)| name == "rf_width_at")
-            .and_then(|(_, signature)| signature.ok())
-            .expect("rf_width_at");
+        let signature = ray_cone_signature("rf_width_at");
         let glsl = timing_source(Language::Glsl, &signature, "rf_width_at", 8, Body::Empty);
         for line in [
             "    float r;",
