@@ -108,7 +108,7 @@ impl IllConditioned {
 }
 
 /// A proptest runner whose random numbers follow from `seed` alone.
-fn seeded_runner(seed: u64) -> TestRunner {
+pub(crate) fn seeded_runner(seed: u64) -> TestRunner {
     let mut bytes = [0u8; 16];
     bytes[..8].copy_from_slice(&seed.to_le_bytes());
     bytes[8..].copy_from_slice(&(!seed).to_le_bytes());

@@ -296,10 +296,16 @@ fn splitmix(x: u64) -> u64 {
 /// The seed of a run: [`SEED_ENV`]'s value if set (an error names it where it holds no seed), else
 /// [`DEFAULT_SEED`].
 pub fn run_seed() -> Result<u64, String> {
-    match std::env::var(SEED_ENV) {
-        Err(_) => Ok(DEFAULT_SEED),
+    env_seed(SEED_ENV, DEFAULT_SEED)
+}
+
+/// The seed the environment variable `variable` holds, decimal or hexadecimal after `0x`, or
+/// `default` where it is not set; an error names the variable where it holds no seed.
+pub fn env_seed(variable: &str, default: u64) -> Result<u64, String> {
+    match std::env::var(variable) {
+        Err(_) => Ok(default),
         Ok(text) => parse_seed(&text).ok_or_else(|| {
-            format!("{SEED_ENV} = {text:?}: expected a decimal seed, or a hexadecimal one after 0x")
+            format!("{variable} = {text:?}: expected a decimal seed, or a hexadecimal one after 0x")
         }),
     }
 }

@@ -31,11 +31,10 @@
 //! [`CASES`] cases per symmetry) and [`crate::Function::symmetry_check`] (a
 //! [`shader_proptest::MetamorphicCheck`] on the device, the shader function against itself).
 
-use crate::record::{Function, Record};
+use crate::record::{seeded_runner, Function, Record};
 use crate::special::Perturb;
 use glam::{Mat3, Vec3};
 use proptest::strategy::{Strategy, ValueTree};
-use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use shader_proptest::tolerance::count_vacuous;
 use shader_proptest::{case_seed, Args, MetamorphicCheck, Tolerance, Value};
 use std::fmt;
@@ -493,17 +492,6 @@ fn symmetric_bounds<A: Args + Perturb, R: Value>(
     );
     let carried = symmetry.restored_bounds(&transformed_result, &at_transformed, &change);
     at_case.iter().zip(carried).map(|(a, b)| a + b).collect()
-}
-
-/// A proptest runner whose random numbers follow from `seed` alone.
-fn seeded_runner(seed: u64) -> TestRunner {
-    let mut bytes = [0u8; 16];
-    bytes[..8].copy_from_slice(&seed.to_le_bytes());
-    bytes[8..].copy_from_slice(&(!seed).to_le_bytes());
-    TestRunner::new_with_rng(
-        Config::default(),
-        TestRng::from_seed(RngAlgorithm::XorShift, &bytes),
-    )
 }
 
 /// Runs symmetry `index` of `record` on the mirror over `cases` cases of the record's strategy

@@ -5,6 +5,7 @@
 //! `RAY_FOOTPRINT_SYMMETRIES=<text>` runs only the functions whose `module::function` name holds
 //! the text; `SHADER_PROPTEST_SEED` draws other cases (the seed is printed).
 
+use ray_footprint_cases::reference::env_seed;
 use ray_footprint_cases::symmetry::{SymmetryReport, CASES};
 use ray_footprint_cases::{records, Function};
 use shader_proptest::SEED_ENV;
@@ -20,7 +21,8 @@ fn every_symmetry_holds_on_the_mirror() {
         .filter(|record| format!("{}::{}", record.module().stem(), record.name()).contains(&only))
         .flat_map(|record| (0..record.symmetry_list().len()).map(move |index| (record.as_ref(), index)))
         .collect();
-    let base_seed = base_seed();
+    // The first symmetry's seed; the next ones count up from it.
+    let base_seed = env_seed(SEED_ENV, 0x5eed).unwrap_or_else(|error| panic!("{error}"));
     println!("{SEED_ENV}={base_seed:#x} replays this run");
     let next = AtomicUsize::new(0);
     let reports: Mutex<Vec<Option<SymmetryReport>>> = Mutex::new(vec![None; runs.len()]);
@@ -52,17 +54,4 @@ fn every_symmetry_holds_on_the_mirror() {
         failures.len(),
         failures.join("\n")
     );
-}
-
-/// The seed of the first symmetry's cases (the next ones count up from it): [`SEED_ENV`], decimal
-/// or hexadecimal after `0x`, where it is set, else `0x5eed`.
-fn base_seed() -> u64 {
-    let Ok(text) = std::env::var(SEED_ENV) else {
-        return 0x5eed;
-    };
-    let parsed = match text.strip_prefix("0x") {
-        Some(hex) => u64::from_str_radix(hex, 16),
-        None => text.parse(),
-    };
-    parsed.unwrap_or_else(|_| panic!("{SEED_ENV}={text:?} holds no seed (decimal, or hexadecimal after 0x)"))
 }
