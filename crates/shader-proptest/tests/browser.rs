@@ -1,7 +1,7 @@
 //! The same checks in headless Chromium's WebGPU (feature `browser`): a right WGSL function
 //! passes, a wrong one fails and shrinks as on the Vulkan path, a kernel Tint rejects, a shader
-//! that needs 64-bit floats, a GLSL shader, a missing Chromium and a page that never answers
-//! each end with what happened.
+//! that needs 64-bit floats, a GLSL shader, a missing Chromium, one that never starts listening
+//! and a page that never answers each end with what happened.
 
 use shader_proptest::{
     BrowserDevice, Chromium, ChromiumOptions, Error, FunctionCheck, LoopbackServer, Outcome, Response,
@@ -130,6 +130,39 @@ fn a_missing_chromium_is_named_with_what_to_install() {
         Ok(_) => panic!("a Chromium started from /nonexistent/chromium"),
     }
     assert!(started.elapsed() < Duration::from_secs(1));
+}
+
+/// An executable that runs but never prints a DevTools address fails after the start timeout,
+/// however long the timeout for pages is.
+#[test]
+fn a_chromium_that_never_listens_times_out() {
+    let silent = std::env::temp_dir().join(format!("shader-proptest-silent-{}", std::process::id()));
+    std::fs::write(&silent, "#!/bin/sh\nexec sleep 30\n").expect("a script");
+    std::fs::set_permissions(&silent, std::os::unix::fs::PermissionsExt::from_mode(0o755)).expect("mode");
+    let start_timeout = Duration::from_secs(1);
+    let options = ChromiumOptions {
+        executable: Some(silent.clone()),
+        start_timeout,
+        timeout: Duration::from_secs(60),
+    };
+    let started = Instant::now();
+    let launched = Chromium::launch(&options);
+    let waited = started.elapsed();
+    std::fs::remove_file(&silent).expect("the script removed");
+    match launched {
+        Err(Error::Browser(message)) => {
+            assert!(
+                message.contains("did not print its DevTools address within 1.0 s"),
+                "{message}"
+            )
+        }
+        Err(other) => panic!("expected a browser error, got {other}"),
+        Ok(_) => panic!("a script that only sleeps started as Chromium"),
+    }
+    assert!(
+        waited >= start_timeout && waited < 10 * start_timeout,
+        "waited {waited:?}"
+    );
 }
 
 /// A page whose script never answers fails after the timeout, naming the script.

@@ -1,6 +1,6 @@
 //! Headless Chromium with WebGPU, started as a child process and driven over the DevTools protocol
 //! through the `headless_chrome` crate: pages opened in it, scripts evaluated (promises awaited),
-//! screenshots taken, each call bounded by one timeout.
+//! screenshots taken, the start bounded by one timeout and each call after it by another.
 
 use crate::gpu::error::Error;
 use headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption;
@@ -48,16 +48,20 @@ pub struct ChromiumOptions {
     /// The executable; `None`: [`CHROMIUM_ENV`], else the first of `chromium`,
     /// `chromium-browser`, `google-chrome` on the `PATH`.
     pub executable: Option<PathBuf>,
-    /// The longest wait for anything Chromium is asked: its start, a page's load, a script's
+    /// The longest wait for Chromium to start and print its DevTools address: a cold start on a busy
+    /// machine takes seconds. Past it [`Chromium::launch`] fails with [`Error::Browser`].
+    pub start_timeout: Duration,
+    /// The longest wait for anything a started Chromium is asked: a page's load, a script's
     /// answer (its promise), a screenshot. Past it the call fails with [`Error::Browser`].
     pub timeout: Duration,
 }
 
 impl Default for ChromiumOptions {
-    /// The executable from the environment or the `PATH`, and 30 s for any answer.
+    /// The executable from the environment or the `PATH`, 30 s to start and 30 s for any answer.
     fn default() -> Self {
         ChromiumOptions {
             executable: None,
+            start_timeout: Duration::from_secs(30),
             timeout: Duration::from_secs(30),
         }
     }
@@ -87,7 +91,7 @@ pub struct Chromium {
 impl Chromium {
     /// Starts Chromium headless with WebGPU and connects to it. [`Error::Setup`] names what to
     /// install when there is no executable; [`Error::Browser`] says why a Chromium that was found
-    /// did not start or answer within the options' timeout.
+    /// did not start within the options' `start_timeout`.
     pub fn launch(options: &ChromiumOptions) -> Result<Chromium, Error> {
         let executable = match &options.executable {
             Some(path) => existing(path)?,
@@ -113,7 +117,7 @@ impl Chromium {
                 ))
             })?;
         let stderr = process.stderr.take().expect("stderr is piped");
-        let connected = devtools_address(stderr, options.timeout)
+        let connected = devtools_address(stderr, options.start_timeout)
             .map_err(|problem| Error::Browser(format!("{}: {problem}", executable.display())))
             .and_then(|address| connect(address, options.timeout));
         let (browser, version) = match connected {

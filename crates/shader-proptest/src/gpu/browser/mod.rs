@@ -19,8 +19,9 @@
 //! Tint's warnings and errors (`getCompilationInfo`) and a pipeline WebGPU refuses fail the
 //! check's preparation ([`Error::Compile`]); a WebGPU error during a batch (error scopes around
 //! every call), an uncaptured error or the device's loss fail the run ([`Error::WebGpu`]), as the
-//! validation layer's messages do on Vulkan. Every job and every DevTools call waits at most
-//! [`ChromiumOptions::timeout`] (30 s unless set): a page that does not answer is
+//! validation layer's messages do on Vulkan. Chromium's start waits at most
+//! [`ChromiumOptions::start_timeout`], and every job and DevTools call after it at most
+//! [`ChromiumOptions::timeout`] (30 s each unless set): a page that does not answer is
 //! [`Error::Browser`], never a hang.
 
 mod chromium;
@@ -83,7 +84,8 @@ impl BrowserDevice {
 
     /// Chromium started with `options`, its adapter and a device on it. [`Error::Setup`] when
     /// there is no Chromium (naming what to install) or no WebGPU adapter; [`Error::Browser`]
-    /// when Chromium or the page does not answer within `options.timeout`.
+    /// when Chromium does not start within `options.start_timeout` or the page does not answer
+    /// within `options.timeout`.
     pub fn with_options(options: &ChromiumOptions) -> Result<BrowserDevice, Error> {
         let exchange = Arc::new(Exchange::default());
         let server = {
