@@ -1106,8 +1106,9 @@ pub fn environment_lod(spread_angle: f32, map_height: f32) -> f32 {
 /// `pi / 2 - 1e-4`, so that every boundary ray meets the surface with `|cos| >= MIN_COS` (see
 /// [`refract_ray_cone`]).
 pub const MAX_INCIDENCE_ANGLE: f32 = 1.570_696_3;
-/// Largest `|normal_spread_angle|`, in radians, that [`refract_ray_cone`] applies; larger values are
-/// clamped, so that the tilted normals stay within a half turn of each other.
+/// Largest `|normal_spread_angle|`, in radians, that [`refract_ray_cone`] applies, and largest turn
+/// of the normal across a footprint that [`scatter_ray_cone`] applies; larger values are clamped, so
+/// that the normals across a footprint stay within a half turn of each other.
 pub const MAX_NORMAL_SPREAD: f32 = 3.1;
 /// Smallest `1 - alpha^2` in [`roughness_spread_angle`] (Falcor's clamp): roughness 1 gives
 /// `2 * sqrt(0.5 / MIN_ROUGHNESS_DENOMINATOR)`, about 141 radians.
@@ -1419,6 +1420,109 @@ pub fn roughness_spread_angle(roughness: f32) -> f32 {
     let alpha2 = alpha * alpha;
     let variance = 0.5 * alpha2 / (1.0 - alpha2).max(MIN_ROUGHNESS_DENOMINATOR);
     2.0 * variance.sqrt()
+}
+
+// ---- Scattering at path vertices (Suykens and Willems 2001) ----
+
+/// The lobe a path sampled at a vertex, for [`scatter_ray_cone`]: a direction drawn in the shading
+/// frame alone (Lambert's cosine-weighted lobe, any diffuse lobe).
+pub const LOBE_DIFFUSE: u32 = 0;
+/// The lobe a path sampled at a vertex, for [`scatter_ray_cone`]: the incoming direction reflected
+/// about a normal drawn in the shading frame (a mirror; a GGX or Beckmann lobe whose microfacet
+/// normal is drawn from the distribution of normals).
+pub const LOBE_REFLECTION: u32 = 1;
+
+/// How much longer than the incoming cross-section the footprint looks from `leaving`, with
+/// `facing` the clamped `-dot(normal, direction)`: see [`scatter_ray_cone`].
+fn footprint_stretch(normal: Vec3, direction: Vec3, leaving: Vec3, facing: f32) -> f32 {
+    let mirrored = direction + 2.0 * facing * normal;
+    let sum = (leaving - direction).length() * (leaving + mirrored).length();
+    let difference = (leaving + direction).length() * (leaving - mirrored).length();
+    (sum + difference) / (4.0 * facing.abs())
+}
+
+/// The cone that leaves a path vertex in the direction `leaving` drawn from the lobe the path
+/// sampled there, with the vertex's random numbers held fixed: the footprint of a path as a
+/// function of the image position, which is how path differentials differentiate a sampled path
+/// (Suykens and Willems 2001, Sec. 3).
+///
+/// Width: the cone's cross-section at the hit, `width_at(cone, t)`, laid on the surface along the
+/// ray (Igehy 1999, Eq. 12) and seen across `leaving`, is an ellipse; the leaving width is its
+/// longest axis, `width_at(cone, t) * stretch` with
+/// `stretch = (|o - d| |o + r| + |o + d| |o - r|) / (4 |dn|)`, where `d` is `direction`, `o` is
+/// `leaving`, `r = d + 2 dn normal` the mirror direction and `dn = -dot(normal, direction)`
+/// clamped as in [`curvature_spread_angle`]. (The two products over `2 |dn|` are the sum and the
+/// difference of the map's singular values, derived here.) A mirror gives `stretch = 1`, a
+/// direction leaving along the normal `1 / |dn|`, the footprint's own slant.
+///
+/// Spread: across the footprint the shading normal, and the whole shading frame with it, turns by
+/// `normal_turn = curvature * width_at(cone, t) / dn` (half of [`curvature_spread_angle`]'s `beta`,
+/// RTG Eq. 32 with JCGT 2021's curvature), kept within `[-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD]`
+/// (a footprint that wraps a surface further turns no further, and the result stays finite). A
+/// direction drawn from the random numbers in that frame turns with it:
+/// - [`LOBE_REFLECTION`]: the incoming direction reflected about a normal that turns with the
+///   frame (the shading normal itself, or a GGX microfacet normal drawn from the distribution of
+///   normals, Walter et al. 2007 Eq. 35-36). A reflection turns its output by twice its normal's
+///   turn and keeps the incoming spread: `spread' = spread_angle + 2 * normal_turn`. For a mirror
+///   this is `propagate(cone, t, curvature_spread_angle(curvature, width, normal, direction))`.
+/// - [`LOBE_DIFFUSE`]: the direction turns with the frame alone and does not depend on the
+///   incoming one, whose spread is forgotten: `spread' = normal_turn`, the largest turn of a
+///   direction that rides a frame turned by `normal_turn`. On a flat diffuse surface the cone
+///   leaves as a beam (`spread' = 0`) as wide as the footprint seen from `leaving`.
+///
+/// Any `lobe` other than [`LOBE_DIFFUSE`] counts as [`LOBE_REFLECTION`]. `curvature`, `normal` and
+/// `width` carry signs as in [`curvature_spread_angle`]: flipping the normal and the curvature
+/// together changes nothing, and the width keeps its sign. With visible-normal sampling (Heitz
+/// 2018) the microfacet normal also follows the incoming direction, by an amount that grows with
+/// the roughness, which this rule leaves out. Transmission is [`refract_ray_cone`]'s.
+///
+/// # Examples
+///
+/// ```
+/// use glam::Vec3;
+/// use ray_footprint::ray_cone::{scatter_ray_cone, RayCone, LOBE_DIFFUSE, LOBE_REFLECTION};
+///
+/// // A pinhole cone of 1 mrad meets a flat floor 3 m away, head on, and a diffuse direction leaves
+/// // along the normal. Neighbouring image positions hit points 3 mm apart and leave in the same
+/// // direction of the (unturned) frame: a beam 3 mm wide.
+/// let cone = RayCone { width: 0.0, spread_angle: 0.001 };
+/// let up = Vec3::Z;
+/// let diffuse = scatter_ray_cone(cone, 3.0, 0.0, up, Vec3::NEG_Z, up, LOBE_DIFFUSE);
+/// assert!((diffuse.width - 0.003).abs() < 1e-9 && diffuse.spread_angle == 0.0);
+/// // Met at 60 degrees from the normal, the footprint is 3 mm / cos 60° = 6 mm long on the floor,
+/// // and seen from straight above that is the beam's width.
+/// let slanted = Vec3::new(0.75f32.sqrt(), 0.0, -0.5);
+/// let diffuse = scatter_ray_cone(cone, 3.0, 0.0, up, slanted, up, LOBE_DIFFUSE);
+/// assert!((diffuse.width - 0.006).abs() < 1e-8);
+/// // On a ball of radius 1, head on: across 3 mm the normal turns by 3 mrad (1 / R per unit
+/// // length); a diffuse direction turns with it, a reflected one by twice that plus the pixel's.
+/// let diffuse = scatter_ray_cone(cone, 3.0, 1.0, up, Vec3::NEG_Z, up, LOBE_DIFFUSE);
+/// assert!((diffuse.spread_angle - 0.003).abs() < 1e-9);
+/// let glossy = scatter_ray_cone(cone, 3.0, 1.0, up, Vec3::NEG_Z, up, LOBE_REFLECTION);
+/// assert!((glossy.spread_angle - (0.001 + 2.0 * 0.003)).abs() < 1e-9);
+/// ```
+pub fn scatter_ray_cone(
+    cone: RayCone,
+    t: f32,
+    curvature: f32,
+    normal: Vec3,
+    direction: Vec3,
+    leaving: Vec3,
+    lobe: u32,
+) -> RayCone {
+    let width = width_at(cone, t);
+    let facing = facing_cos(normal, direction);
+    let turn = curvature * width / facing;
+    let normal_turn = turn.clamp(-MAX_NORMAL_SPREAD, MAX_NORMAL_SPREAD);
+    let spread_angle = if lobe == LOBE_DIFFUSE {
+        normal_turn
+    } else {
+        cone.spread_angle + 2.0 * normal_turn
+    };
+    RayCone {
+        width: width * footprint_stretch(normal, direction, leaving, facing),
+        spread_angle,
+    }
 }
 
 /// IEEE 754 binary16 conversions for the packed cone (the shaders use `packHalf2x16` and

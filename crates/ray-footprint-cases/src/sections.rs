@@ -40,6 +40,7 @@ pub fn folders(module: Module) -> &'static [&'static str] {
             "curvature",
             "footprint",
             "refraction",
+            "scattering",
         ],
         Module::RayDiff => &[
             "camera",

@@ -92,6 +92,15 @@ impl Perturb for i32 {
     }
 }
 
+impl Perturb for u32 {
+    fn perturb(&mut self, rng: &mut TestRng) {
+        const SPECIAL: [u32; 6] = [0, 1, 2, u32::MAX, u32::MAX - 1, 0x8000_0000];
+        if rng.random() {
+            *self = SPECIAL[rng.random_range(0..SPECIAL.len())];
+        }
+    }
+}
+
 impl Perturb for bool {
     fn perturb(&mut self, rng: &mut TestRng) {
         *self = rng.random();

@@ -56,6 +56,7 @@ const SHADER_BLOCKS: &[(&str, &[&[&str]])] = &[
                 "MIN_ROUGHNESS_DENOMINATOR",
                 "RefractedRayCone",
             ],
+            &["LOBE_DIFFUSE", "LOBE_REFLECTION"],
         ],
     ),
     (

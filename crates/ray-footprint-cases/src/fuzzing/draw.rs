@@ -115,6 +115,11 @@ impl<'a> Draw<'a> {
         self.words.u32() as i32
     }
 
+    /// A `u32` from the word's bits (every value is in the domain).
+    pub fn uint(&mut self) -> u32 {
+        self.words.u32()
+    }
+
     /// A vector of [`Draw::scalar`]s.
     pub fn vec2(&mut self) -> Vec2 {
         Vec2::new(self.scalar(), self.scalar())

@@ -127,7 +127,7 @@ pub fn curvature_spread_angle_error(normal: Vec3, direction: Vec3, expected: f32
 /// [`curvature_spread_angle_error`] allows either sign, and the check could not catch a wrong one;
 /// tilted, the ray meets the normal's side, still inside the `MIN_COS` clamp. The degenerate table
 /// covers rays exactly in the plane.
-fn off_the_plane(normal: Vec3, direction: Vec3) -> Vec3 {
+pub(crate) fn off_the_plane(normal: Vec3, direction: Vec3) -> Vec3 {
     if normal.dot(direction).abs() <= dot_error(normal, direction) {
         (direction - 1.0e-5 * normal).normalize()
     } else {
