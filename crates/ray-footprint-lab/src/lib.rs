@@ -3,8 +3,9 @@
 //! lab that measures each level-of-detail method against a supersampled ground truth
 //! ([`quality`]), with captioned figures ([`figure`]), and reflection chains that follow a ray
 //! cone and a ray differential along the same paths, on the CPU and in both shader languages
-//! ([`chains`]), and the GPU timing that the benches share ([`timing`]); with the feature
-//! `browser`, the WebGPU demo page and its rendering through wgpu (`demo`).
+//! ([`chains`]), the true footprints of path-traced vertices against the cone rules for
+//! scattering ([`paths`]), and the GPU timing that the benches share ([`timing`]); with the
+//! feature `browser`, the WebGPU demo page and its rendering through wgpu (`demo`).
 #![deny(missing_docs)]
 
 pub mod chains;
@@ -12,6 +13,7 @@ pub mod cli;
 #[cfg(feature = "browser")]
 pub mod demo;
 pub mod figure;
+pub mod paths;
 pub mod quality;
 /// The README's Rust examples, if any, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -24,6 +24,10 @@ use shader_proptest::tolerance::{dot_error, ulps};
 use shader_proptest::{Args, Value};
 use std::f64::consts::FRAC_PI_2;
 
+/// A reference's cone and surface in f64: the width, the spread, the hit distance, the curvature
+/// and the incidence cosine.
+type ReferenceCone = (f64, f64, f64, f64, f64);
+
 /// The arguments: the cone, the hit distance, the curvature, the normal, the direction, the
 /// leaving direction, the lobe.
 type Arguments = (RayCone, f32, f32, Vec3, Vec3, Vec3, u32);
@@ -259,7 +263,7 @@ fn scattered_first_order(
 /// central direction and the normal there, 2-D), as the function's f32 arguments (normal `+z`,
 /// the plane of incidence x-z, the ray towards `-z`), with the central direction in 2-D.
 fn reference_arguments(
-    (w, s, t, k, cosine): (f64, f64, f64, f64, f64),
+    (w, s, t, k, cosine): ReferenceCone,
     lobe: u32,
     leaving: impl Fn(DVec2, DVec2) -> DVec2,
 ) -> (Arguments, DVec2) {
@@ -331,7 +335,7 @@ fn spread_bound(arguments: (RayCone, f32, f32, Vec3, Vec3), turn: f64, factor: f
 }
 
 /// The strategy of a reference's `(w, s, t, k, cosine)` and one angle in `angles`.
-fn reference_cases(angles: std::ops::Range<f64>) -> BoxedStrategy<((f64, f64, f64, f64, f64), f64)> {
+fn reference_cases(angles: std::ops::Range<f64>) -> BoxedStrategy<(ReferenceCone, f64)> {
     let curvature = prop_oneof![1 => Just(0.0f64), 3 => signed_log(-2.0, 1.0)];
     let spread = prop_oneof![1 => Just(0.0f64), 3 => signed_log(-5.0, -2.0)];
     let cone = (
