@@ -17,20 +17,29 @@
 //!   cosine lobe; GGX by its distribution of normals, Walter et al. 2007), with the pdf and BSDF
 //!   value of a sampled direction that the pdf- and BSDF-driven rules read.
 //! - [`tracer`]: the f64 path tracer, up to [`MAX_VERTICES`] vertices.
+//! - [`texture`] and [`image`]: the image error each rule gives when its width picks the level of
+//!   a mip-mapped texture, against a reference rendered at level 0.
 
+pub mod image;
 pub mod methods;
 pub mod report;
 pub mod sampling;
 pub mod scene;
+pub mod texture;
 pub mod tracer;
 pub mod truth;
 
 #[cfg(test)]
 mod tests;
 
+pub use image::{
+    image_methods, image_scene_table, image_summary_table, measure_image, ImageMethod, ImageSettings,
+    SceneErrors,
+};
 pub use methods::{method_widths, Method, METHODS};
 pub use report::{measure, scene_table, summary_table, Measurement, Settings, VertexRecord};
 pub use sampling::Lobe;
 pub use scene::{scenes, Camera, Material, Scene, Shape, Surface};
+pub use texture::Texture;
 pub use tracer::{trace, Path, Scatter, Vertex, MAX_VERTICES};
 pub use truth::{true_widths, Footprint, TrueWidths, DEFAULT_STEP};

@@ -284,6 +284,43 @@ impl Surface {
     }
 }
 
+/// Metres one repeat of the texture spans on every surface (texture coordinates in repeats).
+pub const TEXTURE_REPEAT_METRES: f64 = 2.0;
+
+impl Surface {
+    /// The texture coordinates `(u, v)` of the point `p` of the surface, in texture repeats
+    /// (wrapped by the sampler), about [`TEXTURE_REPEAT_METRES`] metres per repeat: on a plane the
+    /// planar projection `((p - point) . t, (p - point) . b) / repeat` onto its frame
+    /// (`t` from `frame_axis` by Gram-Schmidt, `b = n x t`); on a sphere the spherical angles about
+    /// `frame_axis` as pole, `u = n_u phi / (2 pi)`, `v = n_v theta / pi` with
+    /// `n_u = round(2 pi R / repeat)` and `n_v = round(pi R / repeat)` (at least 1) whole repeats,
+    /// so that the density is `1 / repeat` per metre along a meridian and on the equator.
+    pub fn texture_coordinates(&self, p: DVec3) -> (f64, f64) {
+        match self.shape {
+            Shape::Plane { point, normal } => {
+                let tangent = (self.frame_axis - normal * normal.dot(self.frame_axis)).normalize();
+                let offset = p - point;
+                let repeats = |axis: DVec3| offset.dot(axis) / TEXTURE_REPEAT_METRES;
+                (repeats(tangent), repeats(normal.cross(tangent)))
+            }
+            Shape::Sphere { centre, radius, .. } => {
+                let pole = self.frame_axis;
+                let first =
+                    (least_aligned_axis(pole) - pole * pole.dot(least_aligned_axis(pole))).normalize();
+                let local = (p - centre) / radius;
+                let phi = local.dot(pole.cross(first)).atan2(local.dot(first));
+                let theta = local.dot(pole).clamp(-1.0, 1.0).acos();
+                let whole = |arc: f64| (arc * radius / TEXTURE_REPEAT_METRES).round().max(1.0);
+                let tau = std::f64::consts::TAU;
+                (
+                    whole(tau) * phi / tau,
+                    whole(std::f64::consts::PI) * theta / std::f64::consts::PI,
+                )
+            }
+        }
+    }
+}
+
 /// The world axis (x, y or z) with the smallest `|component|` of `normal`.
 fn least_aligned_axis(normal: DVec3) -> DVec3 {
     let size = normal.abs();
