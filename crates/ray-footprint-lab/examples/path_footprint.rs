@@ -8,8 +8,10 @@
 //!     [--seed N] [--size WxH] [--paths N] [--step PIXELS] [--scene NAME] [--threads N]
 //! ```
 
-use ray_footprint_lab::cli::{options_or_exit, positive_count};
-use ray_footprint_lab::paths::{measure, scene_table, scenes, summary_table, Scene, Settings, DEFAULT_STEP};
+use ray_footprint_lab::cli::{example_command, image_size, options_or_exit, positive_count, seed};
+use ray_footprint_lab::paths::{
+    measure, scene_table, scenes, scenes_named, summary_table, Scene, Settings, DEFAULT_STEP,
+};
 use std::time::Instant;
 
 /// The default seed.
@@ -60,32 +62,16 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
         }
         let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
         match flag.as_str() {
-            "--seed" => {
-                options.settings.seed = value
-                    .parse()
-                    .map_err(|_| format!("--seed must be an integer, got '{value}'"))?;
-            }
-            "--size" => options.settings.size = parse_size(&value)?,
+            "--seed" => options.settings.seed = seed(&flag, &value)?,
+            "--size" => options.settings.size = image_size(&flag, &value)?,
             "--paths" => options.settings.paths = positive_count(&flag, &value)?,
             "--step" => options.settings.step = parse_step(&value)?,
             "--threads" => options.settings.threads = positive_count(&flag, &value)?,
-            "--scene" if value == "all" => options.scenes = scenes(),
-            "--scene" => {
-                let scene = scenes().into_iter().find(|s| s.name == value);
-                options.scenes = vec![scene.ok_or_else(|| format!("unknown scene '{value}'"))?];
-            }
+            "--scene" => options.scenes = scenes_named(&value)?,
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
     Ok(options)
-}
-
-/// `WxH`, both positive.
-fn parse_size(value: &str) -> Result<(u32, u32), String> {
-    let error = || format!("--size must be WIDTHxHEIGHT, got '{value}'");
-    let (width, height) = value.split_once('x').ok_or_else(error)?;
-    let side = |text: &str| text.parse::<u32>().ok().filter(|&n| n > 0).ok_or_else(error);
-    Ok((side(width)?, side(height)?))
 }
 
 /// A step in pixels, positive and below 0.1.
@@ -101,14 +87,8 @@ fn parse_step(value: &str) -> Result<f64, String> {
 fn main() {
     let options = options_or_exit(parse_args(std::env::args().skip(1)), &usage());
     let settings = options.settings;
-    let arguments: Vec<String> = std::env::args().skip(1).collect();
-    let tail = if arguments.is_empty() {
-        String::new()
-    } else {
-        format!(" -- {}", arguments.join(" "))
-    };
     println!("# Path footprints: cone rules against the true footprint\n");
-    println!("command: `cargo run --release -p ray-footprint-lab --example path_footprint{tail}`\n");
+    println!("command: `{}`\n", example_command("path_footprint"));
     println!(
         "seed {}, image {}x{} (vertical field of view 60 degrees), {} paths per scene at random image \
          positions, central differences of step h = {:e} px, {} threads\n",

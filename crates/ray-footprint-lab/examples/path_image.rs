@@ -8,9 +8,10 @@
 //!     [--seed N] [--size WxH] [--reference-spp N] [--scene NAME] [--threads N]
 //! ```
 
-use ray_footprint_lab::cli::{options_or_exit, positive_count};
+use ray_footprint_lab::cli::{example_command, image_size, options_or_exit, positive_count, seed};
 use ray_footprint_lab::paths::{
-    image_scene_table, image_summary_table, measure_image, scenes, ImageSettings, Scene, Texture,
+    image_scene_table, image_summary_table, measure_image, scenes, scenes_named, ImageSettings, Scene,
+    Texture,
 };
 use std::time::Instant;
 
@@ -56,42 +57,20 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
         }
         let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
         match flag.as_str() {
-            "--seed" => {
-                options.settings.seed = value
-                    .parse()
-                    .map_err(|_| format!("--seed must be an integer, got '{value}'"))?;
-            }
-            "--size" => options.settings.size = parse_size(&value)?,
+            "--seed" => options.settings.seed = seed(&flag, &value)?,
+            "--size" => options.settings.size = image_size(&flag, &value)?,
             "--reference-spp" => options.settings.reference_samples = positive_count(&flag, &value)?,
             "--threads" => options.settings.threads = positive_count(&flag, &value)?,
-            "--scene" if value == "all" => options.scenes = scenes(),
-            "--scene" => {
-                let scene = scenes().into_iter().find(|s| s.name == value);
-                options.scenes = vec![scene.ok_or_else(|| format!("unknown scene '{value}'"))?];
-            }
+            "--scene" => options.scenes = scenes_named(&value)?,
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
     Ok(options)
 }
 
-/// `WxH`, both positive.
-fn parse_size(value: &str) -> Result<(u32, u32), String> {
-    let error = || format!("--size must be WIDTHxHEIGHT, got '{value}'");
-    let (width, height) = value.split_once('x').ok_or_else(error)?;
-    let side = |text: &str| text.parse::<u32>().ok().filter(|&n| n > 0).ok_or_else(error);
-    Ok((side(width)?, side(height)?))
-}
-
 fn main() {
     let options = options_or_exit(parse_args(std::env::args().skip(1)), &usage());
     let settings = options.settings;
-    let arguments: Vec<String> = std::env::args().skip(1).collect();
-    let tail = if arguments.is_empty() {
-        String::new()
-    } else {
-        format!(" -- {}", arguments.join(" "))
-    };
     let started = Instant::now();
     let texture = Texture::procedural();
     let results: Vec<_> = options
@@ -100,7 +79,7 @@ fn main() {
         .map(|scene| measure_image(scene, &texture, &settings))
         .collect();
     println!("# Path tracer image error of texture LOD from each cone rule\n");
-    println!("command: `cargo run --release -p ray-footprint-lab --example path_image{tail}`\n");
+    println!("command: `{}`\n", example_command("path_image"));
     println!(
         "seed {}, image {}x{} (vertical field of view 60 degrees), samples per pixel {:?} (renders A and \
          B, seeds 4 seed and 4 seed + 1), reference: two renders of {} spp at level 0 (bilinear), seeds \

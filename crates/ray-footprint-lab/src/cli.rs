@@ -1,6 +1,7 @@
-//! What the lab's command-line programs (the `verify`, `gallery` and `quality` examples and the
-//! benches) share: answering `--help`, reporting a bad option, reading a benchmark's flags and a
-//! positive count.
+//! What the lab's command-line programs (the `verify`, `gallery`, `quality`, `path_footprint` and
+//! `path_image` examples and the benches) share: answering `--help`, reporting a bad option,
+//! reading a benchmark's flags, a positive count, a seed and an image size, and the command that
+//! reruns an example.
 
 use std::process::exit;
 
@@ -49,5 +50,54 @@ pub fn count_at_least(flag: &str, value: &str, min: usize) -> Result<usize, Stri
     match positive_count(flag, value)? {
         count if count >= min => Ok(count),
         count => Err(format!("{flag} must be at least {min}, got {count}")),
+    }
+}
+
+/// `value` of the option `flag` as a seed (any `u64`), or the message that names both.
+pub fn seed(flag: &str, value: &str) -> Result<u64, String> {
+    value
+        .parse()
+        .map_err(|_| format!("{flag} must be an integer, got '{value}'"))
+}
+
+/// `value` of the option `flag` as an image size `WIDTHxHEIGHT`, both positive, or the message
+/// that names both.
+pub fn image_size(flag: &str, value: &str) -> Result<(u32, u32), String> {
+    let error = || format!("{flag} must be WIDTHxHEIGHT, got '{value}'");
+    let (width, height) = value.split_once('x').ok_or_else(error)?;
+    let side = |text: &str| text.parse::<u32>().ok().filter(|&n| n > 0).ok_or_else(error);
+    Ok((side(width)?, side(height)?))
+}
+
+/// The command that reruns the example `name` of this crate with the arguments it was given:
+/// `cargo run --release -p ray-footprint-lab --example NAME[ -- ARGS]`.
+pub fn example_command(name: &str) -> String {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let tail = if arguments.is_empty() {
+        String::new()
+    } else {
+        format!(" -- {}", arguments.join(" "))
+    };
+    format!("cargo run --release -p ray-footprint-lab --example {name}{tail}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn image_sizes_and_seeds_are_read_or_named() {
+        assert_eq!(image_size("--size", "640x360"), Ok((640, 360)));
+        for bad in ["640", "0x360", "640x", "x360", "-1x2"] {
+            assert_eq!(
+                image_size("--size", bad),
+                Err(format!("--size must be WIDTHxHEIGHT, got '{bad}'"))
+            );
+        }
+        assert_eq!(seed("--seed", "7"), Ok(7));
+        assert_eq!(
+            seed("--seed", "-7"),
+            Err("--seed must be an integer, got '-7'".to_string())
+        );
     }
 }

@@ -39,7 +39,7 @@ pub use image::{
 pub use methods::{method_widths, Method, METHODS};
 pub use report::{measure, scene_table, summary_table, Measurement, Settings, VertexRecord};
 pub use sampling::Lobe;
-pub use scene::{scenes, Camera, Material, Scene, Shape, Surface};
+pub use scene::{scenes, scenes_named, Camera, Material, Scene, Shape, Surface};
 pub use texture::Texture;
 pub use tracer::{trace, Path, Scatter, Vertex, MAX_VERTICES};
 pub use truth::{true_widths, Footprint, TrueWidths, DEFAULT_STEP};

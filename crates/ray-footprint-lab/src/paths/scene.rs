@@ -397,6 +397,16 @@ pub fn scenes() -> Vec<Scene> {
     ]
 }
 
+/// The scenes a command line's `--scene` names: every scene for `all`, else the one named, or the
+/// message that names the unknown scene.
+pub fn scenes_named(name: &str) -> Result<Vec<Scene>, String> {
+    if name == "all" {
+        return Ok(scenes());
+    }
+    let scene = scenes().into_iter().find(|scene| scene.name == name);
+    Ok(vec![scene.ok_or_else(|| format!("unknown scene '{name}'"))?])
+}
+
 /// Shorthand for a point or direction.
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
