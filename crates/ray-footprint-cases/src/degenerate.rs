@@ -3,9 +3,12 @@
 //! shader function in every language; [`crate::pages::degenerate_table`] renders them
 //! into the root crate's `src/degenerate.md`.
 //!
-//! Three kinds of rows:
+//! Four kinds of rows:
 //! - a documented value ([`value`]): the mirror returns exactly that value, each shader within the
 //!   function's tolerance (the record's);
+//! - a documented value to a relative accuracy ([`near`]), where the rounding of the inputs leaves
+//!   no exact output: the mirror within that accuracy of the value, each shader within the
+//!   function's tolerance of the mirror;
 //! - "as `<other input>`" ([`same`]): a clamp; each implementation returns bit for bit what it
 //!   returns on the clamped input, and the shaders agree with the mirror within the tolerance;
 //! - NaN or infinity in ([`mirror`]): the mirror's output is documented and asserted; Vulkan
@@ -27,6 +30,8 @@ pub const INF: f32 = f32::INFINITY;
 pub enum Expect<A> {
     /// These output components (NaN matches NaN).
     Values(Vec<f32>),
+    /// These output components to within `relative` times the largest of their magnitudes.
+    Near(Vec<f32>, f32),
     /// The same output as for these (clamped) arguments.
     SameAs(A),
     /// Non-finite input: these components from the mirror; the shaders are unspecified.
@@ -52,6 +57,23 @@ pub fn value<A>(input: &'static str, output: &'static str, args: A, values: Vec<
         output,
         args,
         expect: Expect::Values(values),
+    }
+}
+
+/// A row whose output components are `values` to within `relative` times the largest of their
+/// magnitudes.
+pub fn near<A>(
+    input: &'static str,
+    output: &'static str,
+    args: A,
+    values: Vec<f32>,
+    relative: f32,
+) -> Row<A> {
+    Row {
+        input,
+        output,
+        args,
+        expect: Expect::Near(values, relative),
     }
 }
 
@@ -117,6 +139,16 @@ fn all_same(a: &[f32], b: &[f32]) -> bool {
     a.len() == b.len() && a.iter().zip(b).all(|(&x, &y)| same_float(x, y))
 }
 
+/// Within `relative` times the largest magnitude of `expected`, component by component.
+fn all_near(got: &[f32], expected: &[f32], relative: f32) -> bool {
+    let scale = expected.iter().fold(0.0f32, |largest, x| largest.max(x.abs()));
+    got.len() == expected.len()
+        && got
+            .iter()
+            .zip(expected)
+            .all(|(&g, &e)| (g - e).abs() <= relative * scale)
+}
+
 fn bits(values: &[f32]) -> Vec<u32> {
     values.iter().map(|x| x.to_bits()).collect()
 }
@@ -175,6 +207,7 @@ impl<A: Args, R: Value> RowsOf<'_, A, R> {
             let got = parts((self.mirror)(row.args.clone()));
             let (ok, expected) = match &row.expect {
                 Expect::Values(values) | Expect::Mirror(values) => (all_same(&got, values), values.clone()),
+                Expect::Near(values, relative) => (all_near(&got, values, *relative), values.clone()),
                 Expect::SameAs(other) => {
                     let expected = parts((self.mirror)(other.clone()));
                     (bits(&got) == bits(&expected), expected)
@@ -211,6 +244,7 @@ impl<A: Args, R: Value> RowsOf<'_, A, R> {
             let mirror = parts((self.mirror)(row.args.clone()));
             let (ok, note) = match &row.expect {
                 Expect::Values(values) => (self.within(&row.args, got, values), ""),
+                Expect::Near(..) => (self.within(&row.args, got, &mirror), ""),
                 Expect::SameAs(_) => {
                     let reference = references.next().expect("one output per reference");
                     (

@@ -2,7 +2,7 @@
 //! record, its enclosure and its references, spheres and cylinders (where the fit is exact) and
 //! quadric patches (where it converges).
 
-use crate::degenerate::value;
+use crate::degenerate::{near, value, Row};
 use crate::ray_cone::curvature::shared::{
     conditioned_corners, enclosing, exact_frame, exact_shape_operator, shape_determinant,
     shape_normal_equations, shape_well_conditioned, unit_corners, Curved,
@@ -105,7 +105,37 @@ pub fn record() -> Record<ShapeOperatorArgs, Vec3> {
             (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, z, Vec3::X, Vec3::Y),
             vec![0.0; 3],
         ),
+        small_sphere(
+            "the unit sphere's triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) times 1e-6, its normals kept",
+            "(1e6, 0, 1e6) to 2^-20: a sphere of radius 1e-6",
+            1.0e-6,
+        ),
+        small_sphere(
+            "the same triangle times 1e-11",
+            "(1e11, 0, 1e11) to 2^-20",
+            1.0e-11,
+        ),
+        small_sphere(
+            "the same triangle times 1e-16 (below the documented range)",
+            "(1e16, 0, 1e16) to 2^-20",
+            1.0e-16,
+        ),
     ])
+}
+
+/// The row of the triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with its corners
+/// times `scale` and its normals kept: a sphere of radius `scale`, whose shape operator is
+/// `(1, 0, 1) / scale` to the f32 rounding of the inputs (2^-20 of its largest component).
+fn small_sphere(input: &'static str, output: &'static str, scale: f32) -> Row<ShapeOperatorArgs> {
+    let corners = [Vec3::X, Vec3::Y, Vec3::new(0.6, 0.0, 0.8)];
+    let [p0, p1, p2] = corners.map(|corner| corner * scale);
+    near(
+        input,
+        output,
+        (p0, p1, p2, corners[0], corners[1], corners[2]),
+        vec![1.0 / scale, 0.0, 1.0 / scale],
+        2f32.powi(-20),
+    )
 }
 
 /// `rf_triangle_shape_operator` of corners `p` and normals `n` given as intervals (an f32
@@ -246,39 +276,4 @@ fn shape_operator_quadric() -> Reference<ShapeOperatorArgs, Vec3> {
             Some(Deviation::new(fine.0, allowed))
         },
     )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with its corners scaled by
-    /// `scale` and its normals (the unscaled corners) kept: a sphere of radius `scale`.
-    fn small_sphere(scale: f32) -> ShapeOperatorArgs {
-        let corners = [Vec3::X, Vec3::Y, Vec3::new(0.6, 0.0, 0.8)];
-        let [p0, p1, p2] = corners.map(|corner| corner * scale);
-        (p0, p1, p2, corners[0], corners[1], corners[2])
-    }
-
-    /// The sphere: the triangle (1, 0, 0), (0, 1, 0), (0.6, 0, 0.8) of the unit sphere with
-    /// its corners scaled by `scale` (1e-16 lies below the documented range) and its normals kept
-    /// is a sphere of radius `scale`: the shape operator is `(1, 0, 1) / scale` and both principal
-    /// curvatures `1 / scale`, to the f32 rounding of the inputs (2^-20 relative).
-    #[test]
-    fn a_small_sphere_has_the_curvature_of_its_radius() {
-        for scale in [1.0, 1.0e-6, 1.0e-11, 1.0e-16] {
-            let (p0, p1, p2, n0, n1, n2) = small_sphere(scale);
-            let shape_operator = rc::triangle_shape_operator(p0, p1, p2, n0, n1, n2) * scale;
-            let curvatures = rc::principal_curvatures(shape_operator);
-            let tolerance = 2f32.powi(-20);
-            assert!(
-                (shape_operator - Vec3::new(1.0, 0.0, 1.0)).abs().max_element() <= tolerance,
-                "scale {scale}: shape operator times the scale {shape_operator}"
-            );
-            assert!(
-                (curvatures - glam::Vec2::ONE).abs().max_element() <= tolerance,
-                "scale {scale}: principal curvatures times the scale {curvatures}"
-            );
-        }
-    }
 }
