@@ -5,7 +5,9 @@
 //! Slang and HLSL (glslang, slangc).
 //!
 //! Each symmetry runs [`DEFAULT_CASES`] cases in each language, or as many as
-//! `RAY_FOOTPRINT_SYMMETRY_CASES` says (the lab's full run takes 100,000).
+//! `RAY_FOOTPRINT_SYMMETRY_CASES` says (the lab's full run takes 100,000);
+//! `RAY_FOOTPRINT_SYMMETRIES=<text>` runs only the functions whose `module::function` name holds
+//! the text, as on the mirror.
 
 use super::{assert_all_pass, gpu};
 use ray_footprint::shaders::Module;
@@ -31,7 +33,9 @@ fn config() -> RunConfig {
 
 fn symmetries_hold(module: Module, language: Language) {
     let gpu = gpu();
+    let only = std::env::var("RAY_FOOTPRINT_SYMMETRIES").unwrap_or_default();
     let checks: Vec<_> = module_records(module)
+        .filter(|record| format!("{}::{}", module.stem(), record.name()).contains(&only))
         .flat_map(|record| (0..record.symmetry_list().len()).map(|index| record.symmetry_check(index)))
         .collect();
     let shader = module.shader(language);
