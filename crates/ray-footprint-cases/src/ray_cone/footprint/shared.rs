@@ -17,17 +17,32 @@ use shader_proptest::tolerance::ulps;
 
 /// Error of a triangle's doubled world area: each cross-product component `a*b - c*d` is off by at
 /// most 2 ULP of `|a*b| + |c*d|` (the edges are computed identically); the scaling division
-/// (2.5 ULP), `length` (8 ULP) and the rescaling product (0.5 ULP) add 11 ULP of the result.
+/// (2.5 ULP), `length` (8 ULP) and the rescaling product (0.5 ULP) add 11 ULP of the result; and
+/// a device may flush a denormal edge component or product to zero ([`flushed_edges`]).
 pub(crate) fn world_area2_error(p: [Vec3; 3]) -> f32 {
     let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
     let terms = (e1.yzx() * e2.zxy()).abs() + (e1.zxy() * e2.yzx()).abs();
-    ulps(2.0, terms.element_sum()) + ulps(11.0, rc::triangle_world_area2(p[0], p[1], p[2]))
+    ulps(2.0, terms.element_sum())
+        + ulps(11.0, rc::triangle_world_area2(p[0], p[1], p[2]))
+        + 3.0 * flushed_edges(e1.abs().element_sum() + e2.abs().element_sum())
 }
 
-/// Error of a triangle's doubled UV area: 2 ULP of `|e1.x*e2.y| + |e1.y*e2.x|`.
+/// Error of a triangle's doubled UV area: 2 ULP of `|e1.x*e2.y| + |e1.y*e2.x|`, and the flushed
+/// denormals ([`flushed_edges`]).
 pub(crate) fn uv_area2_error(uv: [Vec2; 3]) -> f32 {
     let (e1, e2) = (uv[1] - uv[0], uv[2] - uv[0]);
     ulps(2.0, (e1.x * e2.y).abs() + (e1.y * e2.x).abs())
+        + flushed_edges(e1.abs().element_sum() + e2.abs().element_sum())
+}
+
+/// What flushing denormals to zero, which Vulkan allows, can take from one cross-product component
+/// `a*b - c*d` of two edges whose components sum to `edge_sum` in magnitude: an edge component
+/// that is a denormal difference of two corners (smaller than `f32::MIN_POSITIVE`) may become 0,
+/// moving a product by at most `f32::MIN_POSITIVE` times the other edge's component, and each of
+/// the two products may itself be a flushed denormal. Two corners a denormal apart make the area
+/// of a sliver of length 1e12 about 1e-33 on the mirror and 0 on an NVIDIA H200.
+fn flushed_edges(edge_sum: f32) -> f32 {
+    f32::MIN_POSITIVE * (2.0 * edge_sum + 2.0)
 }
 
 /// Widest change of `f(uv_area2, world_area2)` when each area moves within its error bound; `f` is
@@ -260,5 +275,36 @@ impl Mapped {
                 (f((uv + a * uv_error).max(0.0), (world + b * world_error).max(0.0)) - centre).abs()
             })
             .fold(0.0, f64::max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Corners a denormal apart, as an NVIDIA H200 sees them: the edge between them flushed to zero
+    /// (the same corner twice) gives an area within the bound of the mirror's, which keeps the
+    /// denormal.
+    #[test]
+    fn a_flushed_denormal_edge_is_within_the_area_bound() {
+        let p0 = Vec3::new(-1.1754945e-38, -1.0e-4, 1.0e12);
+        let p1 = Vec3::splat(-10.0);
+        let p2 = Vec3::new(-1.1754944e-38, -1.0e-4, 1.0e12);
+        let kept = rc::triangle_world_area2(p0, p1, p2);
+        let flushed = rc::triangle_world_area2(p0, p1, p0);
+        assert!(
+            kept > 0.0 && flushed == 0.0,
+            "the mirror keeps {kept}, flushing gives {flushed}"
+        );
+        assert!((kept - flushed).abs() <= world_area2_error([p0, p1, p2]));
+        let (uv0, uv1) = (Vec2::new(1.0, -1.1754945e-38), Vec2::new(1.0e6, 3.0));
+        let uv2 = Vec2::new(1.0, -1.1754944e-38);
+        let kept = rc::triangle_uv_area2(uv0, uv1, uv2);
+        let flushed = rc::triangle_uv_area2(uv0, uv1, uv0);
+        assert!(
+            kept > 0.0 && flushed == 0.0,
+            "the mirror keeps {kept}, flushing gives {flushed}"
+        );
+        assert!((kept - flushed).abs() <= uv_area2_error([uv0, uv1, uv2]));
     }
 }
