@@ -1,7 +1,8 @@
 //! How wide each cone rule makes a path tracer's footprints against the true ones: per scene,
 //! bounce (1 to 4) and rule, the mean and 95th percentile of `|log2(cone width / true width)|` in
 //! mip levels over the paths' vertices, and a summary by the lobe sampled before the vertex
-//! (`ray_footprint_lab::paths` says how each is measured). Everything runs on the CPU.
+//! (`ray_footprint_lab::paths` says how each is measured), with the sweep of one global bias added
+//! to the cone without a scattering term past the first hit. Everything runs on the CPU.
 //!
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example path_footprint -- \
@@ -10,7 +11,8 @@
 
 use ray_footprint_lab::cli::{example_command, image_size, options_or_exit, positive_count, seed};
 use ray_footprint_lab::paths::{
-    measure, scene_table, scenes, scenes_named, summary_table, Scene, Settings, DEFAULT_STEP,
+    bias_sweep_table, measure, scene_table, scenes, scenes_named, summary_table, Scene, Settings,
+    DEFAULT_STEP,
 };
 use std::time::Instant;
 
@@ -108,6 +110,7 @@ fn main() {
     for measurement in &measurements {
         println!("{}", scene_table(measurement));
     }
+    println!("{}", bias_sweep_table(&measurements));
     println!("{}", summary_table(&measurements));
     println!(
         "signed: mean of log2(cone width / true width); positive is too wide (blur), negative too narrow.\n"

@@ -37,7 +37,9 @@ pub use image::{
     SceneErrors,
 };
 pub use methods::{method_widths, Method, METHODS};
-pub use report::{measure, scene_table, summary_table, Measurement, Settings, VertexRecord};
+pub use report::{
+    bias_sweep_table, measure, scene_table, summary_table, Measurement, Settings, VertexRecord,
+};
 pub use sampling::Lobe;
 pub use scene::{scenes, scenes_named, Camera, Material, Scene, Shape, Surface};
 pub use texture::Texture;

@@ -1,8 +1,10 @@
 //! The measurement and its tables: per scene, bounce and method, the mean and 95th percentile of
 //! `|log2(|method width| / true width)|` in mip levels over the vertices that have a true
-//! footprint, and a summary over all scenes by what the path sampled at the vertex before.
+//! footprint, and a summary over all scenes by what the path sampled at the vertex before; and the
+//! sweep of one global level-of-detail bias added to the cone without a scattering term past the
+//! first hit, whose best value the summary carries as a rule of its own.
 
-use super::methods::{method_widths, METHODS};
+use super::methods::{method_widths, Method, METHODS};
 use super::sampling::{pixel_position, vertex_numbers, Lobe, NUMBERS_PER_VERTEX};
 use super::scene::Scene;
 use super::tracer::MAX_VERTICES;
@@ -151,22 +153,96 @@ pub fn mean_and_p95(values: &mut [f64]) -> Option<(f64, f64)> {
     Some((mean, values[rank.max(1) - 1]))
 }
 
-/// `mean / p95` of `|log2|` of method `method` over `records`, or a dash for none.
-fn error_cell<'a>(records: impl Iterator<Item = &'a VertexRecord>, method: usize) -> String {
-    let mut errors: Vec<f64> = records.map(|r| r.log2_ratio(method).abs()).collect();
+/// `mean / p95` of `|ratio|` over `records`, or a dash for none.
+fn error_cell<'a>(
+    records: impl Iterator<Item = &'a VertexRecord>,
+    ratio: impl Fn(&VertexRecord) -> f64,
+) -> String {
+    let mut errors: Vec<f64> = records.map(|r| ratio(r).abs()).collect();
     match mean_and_p95(&mut errors) {
         Some((mean, p95)) => format!("{mean:.3} / {p95:.3}"),
         None => String::from("-"),
     }
 }
 
-/// The mean of the signed `log2` of method `method` over `records` (positive: too wide), or a dash.
-fn signed_cell<'a>(records: impl Iterator<Item = &'a VertexRecord>, method: usize) -> String {
-    let signed: Vec<f64> = records.map(|r| r.log2_ratio(method)).collect();
+/// The mean of the signed `ratio` over `records` (positive: too wide), or a dash.
+fn signed_cell<'a>(
+    records: impl Iterator<Item = &'a VertexRecord>,
+    ratio: impl Fn(&VertexRecord) -> f64,
+) -> String {
+    let signed: Vec<f64> = records.map(ratio).collect();
     if signed.is_empty() {
         return String::from("-");
     }
     format!("{:+.3}", signed.iter().sum::<f64>() / signed.len() as f64)
+}
+
+/// The index of [`Method::NoScatteringTerm`] in [`METHODS`], the rule the global bias is added to.
+fn unbiased_index() -> usize {
+    METHODS
+        .iter()
+        .position(|&m| m == Method::NoScatteringTerm)
+        .expect("METHODS holds the cone without a scattering term")
+}
+
+/// `log2(|width| / true width)` of the cone without a scattering term with `bias` mip levels added
+/// past the first hit (a width `2^bias` times as wide at bounces 2 and later).
+pub fn biased_log2_ratio(record: &VertexRecord, bias: f64) -> f64 {
+    let added = if record.bounce >= 2 { bias } else { 0.0 };
+    record.log2_ratio(unbiased_index()) + added
+}
+
+/// The global biases the sweep tries, in mip levels: -1 to 6 in steps of 1/4.
+pub fn bias_sweep() -> impl Iterator<Item = f64> + Clone {
+    (-4..=24).map(|quarter| f64::from(quarter) / 4.0)
+}
+
+/// The mean `|log2|` over every vertex at bounces 2 to 4 of the cone without a scattering term
+/// with `bias` added.
+fn mean_biased_error(measurements: &[Measurement], bias: f64) -> f64 {
+    let errors: Vec<f64> = measurements
+        .iter()
+        .flat_map(|m| m.records.iter())
+        .filter(|r| r.bounce >= 2)
+        .map(|r| biased_log2_ratio(r, bias).abs())
+        .collect();
+    errors.iter().sum::<f64>() / errors.len().max(1) as f64
+}
+
+/// The bias of [`bias_sweep`] with the lowest mean error over every vertex at bounces 2 to 4 of
+/// `measurements` (the first of equals).
+pub fn best_bias(measurements: &[Measurement]) -> f64 {
+    bias_sweep()
+        .map(|bias| (bias, mean_biased_error(measurements, bias)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map_or(0.0, |(bias, _)| bias)
+}
+
+/// The sweep: per bias, the mean `|log2|` at bounces 2 to 4 by the lobe sampled before, and over
+/// all of them, the best marked.
+pub fn bias_sweep_table(measurements: &[Measurement]) -> String {
+    let best = best_bias(measurements);
+    let all = || measurements.iter().flat_map(|m| m.records.iter());
+    let mut table = String::from(
+        "### sweep: one global bias added to the cone without a scattering term past the first hit\n\n\
+         | bias (mip levels) | after glossy GGX (r <= 0.3) | after rough GGX | after diffuse | all, bounces 2-4 |\n\
+         |---:|---:|---:|---:|---:|",
+    );
+    for bias in bias_sweep() {
+        let mark = if bias == best { " (best)" } else { "" };
+        write!(table, "\n| {bias:+.2}{mark} |").unwrap();
+        for group in GROUPS {
+            let mut errors: Vec<f64> = all()
+                .filter(|r| after(r) == Some(group))
+                .map(|r| biased_log2_ratio(r, bias).abs())
+                .collect();
+            let mean = mean_and_p95(&mut errors).map_or(f64::NAN, |(mean, _)| mean);
+            write!(table, " {mean:.3} |").unwrap();
+        }
+        write!(table, " {:.3} |", mean_biased_error(measurements, bias)).unwrap();
+    }
+    table.push('\n');
+    table
 }
 
 /// The scene's table: a row per method, a column per bounce, each cell
@@ -195,7 +271,7 @@ pub fn scene_table(measurement: &Measurement) -> String {
     for (m, method) in METHODS.iter().enumerate() {
         write!(table, "\n| {} |", method.name()).unwrap();
         for bounce in bounces.clone() {
-            write!(table, " {} |", error_cell(at(bounce), m)).unwrap();
+            write!(table, " {} |", error_cell(at(bounce), |r| r.log2_ratio(m))).unwrap();
         }
     }
     table.push('\n');
@@ -213,6 +289,9 @@ enum After {
     Diffuse,
 }
 
+/// The groups in the order the tables print them.
+const GROUPS: [After; 3] = [After::Glossy, After::Rough, After::Diffuse];
+
 /// The group of a vertex at bounce 2 or later.
 fn after(record: &VertexRecord) -> Option<After> {
     match record.previous_lobe? {
@@ -222,11 +301,36 @@ fn after(record: &VertexRecord) -> Option<After> {
     }
 }
 
+/// One row of [`summary_table`]: `name`, then per group the error and the signed mean of `ratio`.
+fn summary_row(
+    table: &mut String,
+    name: &str,
+    measurements: &[Measurement],
+    ratio: impl Fn(&VertexRecord) -> f64,
+) {
+    write!(table, "\n| {name} |").unwrap();
+    for group in GROUPS {
+        let of = || {
+            measurements
+                .iter()
+                .flat_map(|m| m.records.iter())
+                .filter(move |r| after(r) == Some(group))
+        };
+        write!(
+            table,
+            " {} | {} |",
+            error_cell(of(), &ratio),
+            signed_cell(of(), &ratio)
+        )
+        .unwrap();
+    }
+}
+
 /// The summary over all scenes: per method, over the vertices at bounces 2 to 4 after a glossy
 /// GGX lobe (r <= 0.3), after a rough one (r > 0.3) and after a Lambert lobe, `mean / p95` of
-/// `|log2|` and the mean signed `log2` (positive: too wide).
+/// `|log2|` and the mean signed `log2` (positive: too wide); last, the cone without a scattering
+/// term with the sweep's best global bias ([`best_bias`]), which is fitted to these vertices.
 pub fn summary_table(measurements: &[Measurement]) -> String {
-    let groups = [After::Glossy, After::Rough, After::Diffuse];
     let all = || measurements.iter().flat_map(|m| m.records.iter());
     let of = move |group: After| all().filter(move |r| after(r) == Some(group));
     let mut table = String::from(
@@ -235,21 +339,15 @@ pub fn summary_table(measurements: &[Measurement]) -> String {
          | after diffuse | signed |\n\
          |---|---:|---:|---:|---:|---:|---:|\n| vertices |",
     );
-    for group in groups {
+    for group in GROUPS {
         write!(table, " {} | |", of(group).count()).unwrap();
     }
     for (m, method) in METHODS.iter().enumerate() {
-        write!(table, "\n| {} |", method.name()).unwrap();
-        for group in groups {
-            write!(
-                table,
-                " {} | {} |",
-                error_cell(of(group), m),
-                signed_cell(of(group), m)
-            )
-            .unwrap();
-        }
+        summary_row(&mut table, method.name(), measurements, |r| r.log2_ratio(m));
     }
+    let bias = best_bias(measurements);
+    let name = format!("cone, no scattering term, global bias {bias:+.2} (the sweep's best, fitted here)");
+    summary_row(&mut table, &name, measurements, |r| biased_log2_ratio(r, bias));
     table.push('\n');
     table
 }

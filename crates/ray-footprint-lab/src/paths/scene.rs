@@ -394,6 +394,9 @@ pub fn scenes() -> Vec<Scene> {
         rough_room(),
         mixed(),
         roughness_sweep(),
+        facing_mirrors(),
+        glossy_dome(),
+        small_mirror_ball(),
     ]
 }
 
@@ -595,5 +598,73 @@ fn roughness_sweep() -> Scene {
         target: v(0.0, 0.7, -3.5),
         up_hint: DVec3::Y,
         surfaces,
+    }
+}
+
+/// Two GGX walls (r = 0.1) 3 m apart facing each other over a diffuse floor, a diffuse wall at the
+/// end of the corridor; the camera looks into the left wall at a slant, so that paths cross the
+/// corridor several times before they meet the texture of the floor or the end wall.
+fn facing_mirrors() -> Scene {
+    let glossy = Material::Conductor { roughness: 0.1 };
+    Scene {
+        name: "facing_mirrors",
+        description: "two facing GGX walls (r = 0.1) 3 m apart over a diffuse floor, diffuse wall at \
+                      the corridor's end: several glossy bounces before the texture",
+        eye: v(0.8, 1.6, 2.0),
+        target: v(-1.5, 1.2, -2.5),
+        up_hint: DVec3::Y,
+        surfaces: vec![
+            Surface::plane(v(-1.5, 0.0, 0.0), DVec3::X, glossy),
+            Surface::plane(v(1.5, 0.0, 0.0), -DVec3::X, glossy),
+            Surface::plane(DVec3::ZERO, DVec3::Y, Material::Lambert),
+            Surface::plane(v(0.0, 0.0, -12.0), DVec3::Z, Material::Lambert),
+        ],
+    }
+}
+
+/// A GGX dome (r = 0.2, R = 4, inward normals: curvature -1/4) over a diffuse floor, seen from
+/// inside: an 80-degree cap around +Y whose frame poles (on the X axis) lie outside it.
+fn glossy_dome() -> Scene {
+    let dome = Surface::sphere(
+        DVec3::ZERO,
+        4.0,
+        true,
+        Material::Conductor { roughness: 0.2 },
+        DVec3::X,
+    )
+    .with_cap(DVec3::Y, 80.0);
+    Scene {
+        name: "glossy_dome",
+        description: "inside a concave GGX dome (r = 0.2, R = 4, inward normals) over a diffuse floor",
+        eye: v(0.0, 1.5, 2.0),
+        target: v(0.0, 2.8, -2.0),
+        up_hint: DVec3::Y,
+        surfaces: vec![dome, Surface::plane(DVec3::ZERO, DVec3::Y, Material::Lambert)],
+    }
+}
+
+/// A small convex near-mirror (GGX r = 0.05, R = 0.5) on a diffuse floor between two diffuse
+/// walls, one behind the camera: the strongest positive curvature, which spreads the cone most.
+fn small_mirror_ball() -> Scene {
+    let (eye, centre) = (v(0.0, 1.0, 0.0), v(0.0, 0.5, -2.0));
+    Scene {
+        name: "small_mirror_ball",
+        description: "small convex near-mirror ball (GGX r = 0.05, R = 0.5) on a diffuse floor, diffuse \
+                      walls ahead and behind the camera",
+        eye,
+        target: centre,
+        up_hint: DVec3::Y,
+        surfaces: vec![
+            Surface::sphere(
+                centre,
+                0.5,
+                false,
+                Material::Conductor { roughness: 0.05 },
+                silhouette_axis(eye, centre),
+            ),
+            Surface::plane(DVec3::ZERO, DVec3::Y, Material::Lambert),
+            Surface::plane(v(0.0, 0.0, -5.0), DVec3::Z, Material::Lambert),
+            Surface::plane(v(0.0, 0.0, 3.0), -DVec3::Z, Material::Lambert),
+        ],
     }
 }

@@ -2,9 +2,12 @@
 //! floor, a planar mirror and a mirror ball, the samplers' pdfs against their maps' Jacobians, and
 //! the library's cone rule where first-order optics says what it must give.
 
-use super::methods::{optix_toolkit_scatter, primary_cone, rtxpt_expansion, square_root_expansion};
+use super::methods::{
+    optix_toolkit_scatter, primary_cone, rtxpt_expansion, square_root_expansion, Method, METHODS,
+};
+use super::report::{best_bias, bias_sweep, biased_log2_ratio, Measurement, VertexRecord};
 use super::sampling::{
-    pdf_and_bsdf, pixel_position, sample_material, shading_frame, vertex_numbers, NUMBERS_PER_VERTEX,
+    pdf_and_bsdf, pixel_position, sample_material, shading_frame, vertex_numbers, Lobe, NUMBERS_PER_VERTEX,
 };
 use super::scene::{scenes, Camera, Material, Scene, Surface};
 use super::tracer::MAX_VERTICES;
@@ -409,4 +412,44 @@ fn true_widths_of_the_scenes_do_not_depend_on_the_step() {
             }
         }
     }
+}
+
+/// A vertex at `bounce` whose cone without a scattering term is `2^log2_ratio` times as wide as
+/// the truth (the other rules' widths are 1).
+fn record_off_by(bounce: usize, log2_ratio: f64) -> VertexRecord {
+    let mut widths = [1.0; METHODS.len()];
+    let unbiased = METHODS
+        .iter()
+        .position(|&m| m == Method::NoScatteringTerm)
+        .unwrap();
+    widths[unbiased] = 2f32.powf(log2_ratio as f32);
+    VertexRecord {
+        bounce,
+        previous_lobe: (bounce >= 2).then_some(Lobe::Diffuse),
+        true_width: 1.0,
+        widths,
+    }
+}
+
+/// Vertices past the first hit 2 levels too narrow (and first hits 3 levels too wide, which the
+/// bias leaves alone and the sweep ignores): the best bias is +2, and it leaves them exact.
+#[test]
+fn the_best_global_bias_cancels_a_known_offset_past_the_first_hit() {
+    let measurement = Measurement {
+        scene: "offsets",
+        description: "",
+        records: vec![
+            record_off_by(1, 3.0),
+            record_off_by(2, -2.0),
+            record_off_by(3, -2.0),
+        ],
+        dropped: [0; MAX_VERTICES],
+    };
+    let best = best_bias(std::slice::from_ref(&measurement));
+    assert_eq!(best, 2.0);
+    assert!(bias_sweep().any(|bias| bias == best));
+    for record in &measurement.records[1..] {
+        assert!(biased_log2_ratio(record, best).abs() < 1e-6);
+    }
+    assert!((biased_log2_ratio(&measurement.records[0], best) - 3.0).abs() < 1e-6);
 }
