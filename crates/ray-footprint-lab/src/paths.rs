@@ -9,7 +9,8 @@
 //! width, the longer of the two pixel steps across the incoming ray; [`methods`] follows the same
 //! path with each cone rule (the library's and the peer renderers'), in f32
 //! through `ray_footprint::ray_cone`; [`report`] compares them per scene, bounce and method in mip
-//! levels, `|log2(cone width / true width)|`.
+//! levels, `|log2(cone width / true width)|`, and sweeps one global level-of-detail bias added to
+//! the cone without a scattering term past the first hit.
 //!
 //! - [`scene`]: analytic scenes (planes and spheres, a sphere seen from inside being concave),
 //!   their materials (Lambert, GGX conductor, a GGX coat over Lambert) and the pinhole camera.

@@ -603,24 +603,34 @@ fn roughness_sweep() -> Scene {
 
 /// Two GGX walls (r = 0.1) 3 m apart facing each other over a diffuse floor, a diffuse wall at the
 /// end of the corridor; the camera looks into the left wall at a slant, so that paths cross the
-/// corridor several times before they meet the texture of the floor or the end wall.
+/// corridor several times before they meet the texture of the floor or the end wall. Each wall is
+/// a disc of radius 6 m centred on the floor, a cap of a sphere of radius 1000 m (curvature 1e-3,
+/// nearly flat), so that light comes in from above: two infinite planes would close the corridor.
 fn facing_mirrors() -> Scene {
     let glossy = Material::Conductor { roughness: 0.1 };
+    let wall = |side: f64| {
+        let centre = v(side * (1.5 + WALL_RADIUS), 0.0, -4.0);
+        Surface::sphere(centre, WALL_RADIUS, false, glossy, DVec3::Y)
+            .with_cap(v(-side, 0.0, 0.0), (6.0 / WALL_RADIUS).asin().to_degrees())
+    };
     Scene {
         name: "facing_mirrors",
-        description: "two facing GGX walls (r = 0.1) 3 m apart over a diffuse floor, diffuse wall at \
-                      the corridor's end: several glossy bounces before the texture",
+        description: "two facing GGX walls (r = 0.1, discs of radius 6 m) 3 m apart over a diffuse \
+                      floor, diffuse wall at the corridor's end: several glossy bounces before the texture",
         eye: v(0.8, 1.6, 2.0),
         target: v(-1.5, 1.2, -2.5),
         up_hint: DVec3::Y,
         surfaces: vec![
-            Surface::plane(v(-1.5, 0.0, 0.0), DVec3::X, glossy),
-            Surface::plane(v(1.5, 0.0, 0.0), -DVec3::X, glossy),
+            wall(-1.0),
+            wall(1.0),
             Surface::plane(DVec3::ZERO, DVec3::Y, Material::Lambert),
             Surface::plane(v(0.0, 0.0, -12.0), DVec3::Z, Material::Lambert),
         ],
     }
 }
+
+/// The radius of the spheres whose caps make [`facing_mirrors`]' nearly flat walls.
+const WALL_RADIUS: f64 = 1000.0;
 
 /// A GGX dome (r = 0.2, R = 4, inward normals: curvature -1/4) over a diffuse floor, seen from
 /// inside: an 80-degree cap around +Y whose frame poles (on the X axis) lie outside it.
@@ -643,14 +653,14 @@ fn glossy_dome() -> Scene {
     }
 }
 
-/// A small convex near-mirror (GGX r = 0.05, R = 0.5) on a diffuse floor between two diffuse
-/// walls, one behind the camera: the strongest positive curvature, which spreads the cone most.
+/// A small convex near-mirror (GGX r = 0.05, R = 0.5) on a diffuse floor before a diffuse wall:
+/// the strongest positive curvature, which spreads the cone most.
 fn small_mirror_ball() -> Scene {
     let (eye, centre) = (v(0.0, 1.0, 0.0), v(0.0, 0.5, -2.0));
     Scene {
         name: "small_mirror_ball",
         description: "small convex near-mirror ball (GGX r = 0.05, R = 0.5) on a diffuse floor, diffuse \
-                      walls ahead and behind the camera",
+                      wall behind",
         eye,
         target: centre,
         up_hint: DVec3::Y,
@@ -664,7 +674,6 @@ fn small_mirror_ball() -> Scene {
             ),
             Surface::plane(DVec3::ZERO, DVec3::Y, Material::Lambert),
             Surface::plane(v(0.0, 0.0, -5.0), DVec3::Z, Material::Lambert),
-            Surface::plane(v(0.0, 0.0, 3.0), -DVec3::Z, Material::Lambert),
         ],
     }
 }
