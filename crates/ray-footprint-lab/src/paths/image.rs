@@ -628,6 +628,27 @@ mod tests {
         }
     }
 
+    /// Every measured scene lets light reach the camera: a small render of each, white albedo, has
+    /// a mean above 0.05 (a scene closed by two parallel infinite planes renders black, and its
+    /// image error would be 0 for every rule).
+    #[test]
+    fn every_scene_is_lit() {
+        for scene in crate::paths::scenes() {
+            let job = RenderJob {
+                scene: &scene,
+                albedo: Albedo::Constant(0.8),
+                size: (16, 9),
+                seed: 3,
+                methods: vec![ImageMethod::Mip0],
+                checkpoints: vec![4],
+                threads: 2,
+            };
+            let image = &render(&job)[0][0];
+            let mean = image.iter().map(|value| value.x).sum::<f64>() / image.len() as f64;
+            assert!(mean > 0.05, "{}: mean radiance {mean}", scene.name);
+        }
+    }
+
     /// The GGX weight against its closed form `G1(i) G1(o) |o . m| / (cos_i cos_m)`, for sampled
     /// directions.
     #[test]
