@@ -311,12 +311,16 @@ impl LabScene {
 }
 
 /// Why `mode` is not compared with the texture scenes' ground truth, or `None` for the modes
-/// that filter the colour texture: every mode but the mip-level visualisation and the wireframe.
-/// A mode added later gets a row unless it is listed here.
+/// that filter the colour texture: every mode but the mip-level visualisation, the wireframe and
+/// the path tracers. A mode added later gets a row unless it is listed here.
 pub fn not_a_texture_method(mode: Mode) -> Option<&'static str> {
     match mode {
         Mode::MipLevels => Some("shows the mip levels in a texture of its own"),
         Mode::Wireframe => Some("draws lines over the texture: measured on the torus"),
+        Mode::PathMip0 | Mode::PathCone => Some(
+            "path traces another image (diffuse bounces, one random path a sample): measured against \
+             per-vertex truth by the example path_footprint",
+        ),
         _ => None,
     }
 }

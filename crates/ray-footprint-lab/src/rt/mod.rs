@@ -74,7 +74,7 @@ pub use scene::{
     MESH_TABLE_WORDS, ROUGHNESS, VERTEX_FLOATS, WIRE_COLOUR,
 };
 pub use texture::{
-    checker, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,
+    checker, enlarged, mip_colours, two_scale_checker, MipChain, CHECKER_SQUARE, LEVEL_COLOURS, TEXTURE_SIZE,
 };
 
 use std::fmt;

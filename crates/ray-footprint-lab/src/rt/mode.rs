@@ -72,11 +72,21 @@ pub enum Mode {
     /// longer axis of the sections' ellipse on it (`rf_two_section_width`). RTG II's cone alone
     /// spreads both ways as in the plane of incidence, which off the normal is too wide.
     ConeSections = 13,
+    /// A path tracer at level 0: every surface scatters the ray on up to the bounce limit, a
+    /// textured surface as a Lambertian one (a direction from its cosine lobe, new random numbers
+    /// at every bounce), a mirror about a GGX normal of its roughness, glass as in the other
+    /// modes; each textured vertex is sampled at mip 0, what Unreal, Bevy Solari and pbrt-v4's GPU
+    /// path do past the first hit.
+    PathMip0 = 14,
+    /// The path tracer of `PathMip0`, each textured vertex sampled at the ray-cone LOD of the
+    /// arriving cone, the cone leaving every vertex `rf_scatter_ray_cone`'s for the lobe drawn
+    /// (the hit triangle's isotropic curvature), glass refracting it as `ConeRefraction`.
+    PathCone = 15,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 14] = [
+    pub const ALL: [Mode; 16] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
@@ -91,6 +101,8 @@ impl Mode {
         Mode::ConeSections,
         Mode::ConeRoughness,
         Mode::ConeAnisotropic,
+        Mode::PathMip0,
+        Mode::PathCone,
     ];
 
     /// The discriminant: the value of the mode's `RT_MODE_*` constant in the shaders.
@@ -115,6 +127,8 @@ impl Mode {
             Mode::ConeAnisotropic => "cone_anisotropic",
             Mode::ConeMinCurvature => "cone_min_curvature",
             Mode::ConeSections => "cone_sections",
+            Mode::PathMip0 => "path_mip0",
+            Mode::PathCone => "path_cone",
         }
     }
 
@@ -135,6 +149,8 @@ impl Mode {
             Mode::ConeAnisotropic => "textureGrad with the cone's elliptical footprint",
             Mode::ConeMinCurvature => "as cone_curvature, the OptiX Toolkit's least edge curvature",
             Mode::ConeSections => "as cone_refraction, glass refracting the beam's two sections",
+            Mode::PathMip0 => "path tracer, every textured vertex at mip 0",
+            Mode::PathCone => "path tracer, rf_scatter_ray_cone at every vertex, its LOD at each",
         }
     }
 
@@ -152,14 +168,14 @@ impl fmt::Display for Mode {
 
 impl Mode {
     /// What the payload of the mode's colour-only shaders carries beyond the colour and the bounce
-    /// depth: the ray cone in the modes that read it (every mode but mip 0 and the ray-differential
-    /// modes: the level of detail, or in the gradient modes that of what the mirror reflects), the
+    /// depth: the ray cone in the modes that read it (every mode but the two at mip 0 and the
+    /// ray-differential modes: the level of detail, or in the gradient modes that of what the mirror reflects), the
     /// sagittal section and its axis in `ConeSections`, and the ray differential in the
     /// ray-differential modes, which carry it through mirrors and glass and never read the cone.
     pub fn payload(self) -> Payload {
         let differential = matches!(self, Mode::RayDiff | Mode::RayDiffIsotropic);
         Payload {
-            cone: self != Mode::Mip0 && !differential,
+            cone: !matches!(self, Mode::Mip0 | Mode::PathMip0) && !differential,
             sagittal: self == Mode::ConeSections,
             differential,
         }

@@ -91,6 +91,21 @@ pub fn two_scale_checker(size: u32, coarse: u32, fine: u32) -> MipChain {
     mip_chain(size, (0..size * size).map(texel).collect())
 }
 
+/// `texture` enlarged to `size` texels square (a power of two, at least the texture's size): each
+/// texel of its level 0 repeated over a square block, and the chain rebuilt below it. The same
+/// image in texture coordinates, with `size^2` texels at level 0 for a level-0 sampler to fetch
+/// from: the large textures of `mode_costs --texture-size`.
+pub fn enlarged(texture: &MipChain, size: u32) -> MipChain {
+    let block = size / texture.size;
+    let level0 = (0..size * size)
+        .map(|i| {
+            let (x, y) = (i % size / block, i / size / block);
+            texture.levels[0][(y * texture.size + x) as usize]
+        })
+        .collect();
+    mip_chain(size, level0)
+}
+
 /// `level0` (`size` x `size` texels) and every level below it down to 1 x 1, each the
 /// box-filtered level above.
 fn mip_chain(size: u32, level0: Vec<[u8; 4]>) -> MipChain {
@@ -127,4 +142,20 @@ fn downsample(level: &[[u8; 4]], size: u32) -> Vec<[u8; 4]> {
             [0, 1, 2, 3].map(|c| ((block.iter().map(|t| u32::from(t[c])).sum::<u32>() + 2) / 4) as u8)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A texture enlarged four times is the same image: its level 2 and every level below are the
+    /// original's level 0 and below, texel for texel (a block of equal texels averages to itself).
+    #[test]
+    fn an_enlarged_texture_has_the_original_below_its_new_levels() {
+        let original = two_scale_checker(64, 16, 4);
+        let large = enlarged(&original, 256);
+        assert_eq!(large.validate(), Ok(()));
+        assert_eq!(large.levels.len(), original.levels.len() + 2);
+        assert_eq!(large.levels[2..], original.levels[..]);
+    }
 }

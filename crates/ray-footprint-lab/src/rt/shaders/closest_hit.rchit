@@ -18,13 +18,13 @@ void main() {
     if (hit.depth == 0u) {
         rt_records[hit.pixel.y * gl_LaunchSizeEXT.x + hit.pixel.x] = rt_measure(hit, payload.hit.cone, payload.diff);
     }
-    if (rt_passes_on(hit)) {
+    if (rt_passes_on(pc.mode, hit)) {
         RtBounce bounce = rt_bounce(pc.mode, hit, payload.hit.cone, payload.diff, payload.sagittal);
         RfHitPayload on = RfHitPayload(vec3(0.0), payload.hit.weight * bounce.weight, bounce.cone, hit.depth + 1u, 0u);
         next = RtPayload(on, bounce.diff, bounce.sagittal);
         traceRayEXT(rt_scene, gl_RayFlagsOpaqueEXT, 0xff, 0, 0, 0, bounce.origin, 0.0, bounce.direction,
             RT_MAX_DISTANCE, 1);
-        payload.hit.colour = next.hit.colour;
+        payload.hit.colour = bounce.tint * next.hit.colour;
         return;
     }
     RfRayCone arriving = rt_arriving_cone(pc.mode, hit, payload.hit.cone, payload.sagittal);

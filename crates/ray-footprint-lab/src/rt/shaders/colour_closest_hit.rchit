@@ -35,13 +35,13 @@ RfRayDiff rt_payload_diff() {
 #ifdef RT_PAYLOAD_DIFF
     return rt_ray_diff(payload.diff);
 #else
-    return RfRayDiff(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0);
+    return rt_no_diff();
 #endif
 }
 
 void main() {
     RtHit hit = rt_current_hit(payload.depth);
-    if (rt_passes_on(hit)) {
+    if (rt_passes_on(RT_COLOUR_MODE, hit)) {
         RtBounce bounce = rt_bounce(RT_COLOUR_MODE, hit, rt_payload_cone(), rt_payload_diff(), rt_payload_sagittal());
         next.colour = vec3(0.0);
         next.depth = hit.depth + 1u;
@@ -57,7 +57,7 @@ void main() {
 #endif
         traceRayEXT(rt_scene, gl_RayFlagsOpaqueEXT, 0xff, 0, 0, 0, bounce.origin, 0.0, bounce.direction,
             RT_MAX_DISTANCE, 1);
-        payload.colour = bounce.weight * next.colour;
+        payload.colour = bounce.weight * bounce.tint * next.colour;
         return;
     }
     RfRayCone arriving = rt_arriving_cone(RT_COLOUR_MODE, hit, rt_payload_cone(), rt_payload_sagittal());

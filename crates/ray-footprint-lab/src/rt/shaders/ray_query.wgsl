@@ -65,6 +65,16 @@ const RT_MODE_CONE_MIN_CURVATURE: u32 = 12u;
 // on it (rf_two_section_width). RTG II's cone alone spreads both ways as in the plane of incidence,
 // which off the normal is too wide.
 const RT_MODE_CONE_SECTIONS: u32 = 13u;
+// A path tracer at level 0: every surface scatters the ray on up to the bounce limit, a textured
+// surface as a Lambertian one (a direction from its cosine lobe, new random numbers at every
+// bounce), a mirror about a GGX normal of its roughness, glass as in the other modes; each textured
+// vertex is sampled at mip 0, what Unreal, Bevy Solari and pbrt-v4's GPU path do past the first
+// hit.
+const RT_MODE_PATH_MIP0: u32 = 14u;
+// The path tracer of PathMip0, each textured vertex sampled at the ray-cone LOD of the arriving
+// cone, the cone leaving every vertex rf_scatter_ray_cone's for the lobe drawn (the hit triangle's
+// isotropic curvature), glass refracting it as ConeRefraction.
+const RT_MODE_PATH_CONE: u32 = 15u;
 
 // The material id (Material::id) of Material::Textured.
 const RT_MATERIAL_TEXTURED: u32 = 0u;

@@ -67,6 +67,16 @@ const uint RT_MODE_CONE_MIN_CURVATURE = 12u;
 // on it (rf_two_section_width). RTG II's cone alone spreads both ways as in the plane of incidence,
 // which off the normal is too wide.
 const uint RT_MODE_CONE_SECTIONS = 13u;
+// A path tracer at level 0: every surface scatters the ray on up to the bounce limit, a textured
+// surface as a Lambertian one (a direction from its cosine lobe, new random numbers at every
+// bounce), a mirror about a GGX normal of its roughness, glass as in the other modes; each textured
+// vertex is sampled at mip 0, what Unreal, Bevy Solari and pbrt-v4's GPU path do past the first
+// hit.
+const uint RT_MODE_PATH_MIP0 = 14u;
+// The path tracer of PathMip0, each textured vertex sampled at the ray-cone LOD of the arriving
+// cone, the cone leaving every vertex rf_scatter_ray_cone's for the lobe drawn (the hit triangle's
+// isotropic curvature), glass refracting it as ConeRefraction.
+const uint RT_MODE_PATH_CONE = 15u;
 
 // The material id (Material::id) of Material::Textured.
 const uint RT_MATERIAL_TEXTURED = 0u;

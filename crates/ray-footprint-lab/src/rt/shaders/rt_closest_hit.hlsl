@@ -53,7 +53,7 @@ void main(inout RtPayload payload, in BuiltInTriangleIntersectionAttributes attr
         rt_records[hit.pixel.y * DispatchRaysDimensions().x + hit.pixel.x] = rt_measure(hit, payload.hit.cone,
             payload.diff);
     }
-    if (rt_passes_on(hit)) {
+    if (rt_passes_on(pc.mode, hit)) {
         RtBounce bounce = rt_bounce(pc.mode, hit, payload.hit.cone, payload.diff, payload.sagittal);
         RfHitPayload on = { float3(0.0, 0.0, 0.0), payload.hit.weight * bounce.weight, bounce.cone, hit.depth + 1u,
             0u };
@@ -64,7 +64,7 @@ void main(inout RtPayload payload, in BuiltInTriangleIntersectionAttributes attr
         ray.Direction = bounce.direction;
         ray.TMax = RT_MAX_DISTANCE;
         TraceRay(rt_scene, RAY_FLAG_FORCE_OPAQUE, 0xff, 0, 0, 0, ray, next);
-        payload.hit.colour = next.hit.colour;
+        payload.hit.colour = bounce.tint * next.hit.colour;
         return;
     }
     RfRayCone arriving = rt_arriving_cone(pc.mode, hit, payload.hit.cone, payload.sagittal);

@@ -40,6 +40,11 @@ RtSagittal rt_round_sagittal(RfRayCone cone) {
     return RtSagittal(cone, vec3(0.0));
 }
 
+// A ray differential of zero, for a ray that carries none.
+RfRayDiff rt_no_diff() {
+    return RfRayDiff(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0);
+}
+
 // A triangle's vertices.
 struct RtTriangle {
     vec3 p[3];
@@ -303,8 +308,8 @@ RtSections rt_glass_sections(uint mode, RtHit hit, RfRayCone cone, RtSagittal sa
     if (mode == RT_MODE_CONE_SECTIONS) {
         return rt_refract_sections(hit, cone, sagittal, eta);
     }
-    RfRayCone leaving = mode == RT_MODE_CONE_REFRACTION ? rt_refract_cone(hit, cone, eta).cone
-                                                        : rf_propagate(cone, hit.t, 0.0);
+    bool refracts = mode == RT_MODE_CONE_REFRACTION || mode == RT_MODE_PATH_CONE;
+    RfRayCone leaving = refracts ? rt_refract_cone(hit, cone, eta).cone : rf_propagate(cone, hit.t, 0.0);
     return RtSections(leaving, RtSagittal(rf_propagate(sagittal.cone, hit.t, 0.0), sagittal.axis));
 }
 
@@ -428,6 +433,7 @@ vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     bool reintersection = mode == RT_MODE_BARY_GRADIENTS;
     switch (reintersection && hit.depth != 0u ? RT_MODE_CONE : mode) {
     case RT_MODE_MIP0:
+    case RT_MODE_PATH_MIP0:
         return textureLod(rt_textures[0], uv, 0.0).rgb;
     case RT_MODE_TEX_GRAD_SCALE: {
         float gradient = rt_cone_gradient(hit, cone);
@@ -445,7 +451,8 @@ vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     case RT_MODE_CONE_ANISOTROPIC:
         return rt_sample_grad(uv, rt_cone_uv_gradients(hit, cone));
     default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME, RT_MODE_CONE_REFRACTION,
-             // RT_MODE_CONE_ROUGHNESS, RT_MODE_CONE_SECTIONS (at rt_arriving_cone's cone)
+             // RT_MODE_CONE_ROUGHNESS, RT_MODE_CONE_SECTIONS (at rt_arriving_cone's cone),
+             // RT_MODE_PATH_CONE
         return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone)).rgb;
     }
 }
@@ -463,17 +470,25 @@ vec3 rt_surface_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     return colour;
 }
 
-// Whether the ray goes on from the hit: a mirror reflects primary rays (what it reflects is shaded as
-// a textured surface), glass refracts every ray up to RT_MAX_DEPTH bounces.
-bool rt_passes_on(RtHit hit) {
-    if (hit.material.kind == RT_MATERIAL_GLASS) {
+// Whether `mode` traces paths: every surface scatters the ray on (rt_path_bounce).
+bool rt_traces_paths(uint mode) {
+    return mode == RT_MODE_PATH_MIP0 || mode == RT_MODE_PATH_CONE;
+}
+
+// Whether the ray goes on from the hit in `mode`: a mirror reflects primary rays (what it reflects is
+// shaded as a textured surface), glass refracts every ray up to RT_MAX_DEPTH bounces; in the path
+// modes every surface passes rays on up to RT_MAX_DEPTH bounces.
+bool rt_passes_on(uint mode, RtHit hit) {
+    if (hit.material.kind == RT_MATERIAL_GLASS || rt_traces_paths(mode)) {
         return hit.depth < RT_MAX_DEPTH;
     }
     return hit.material.kind == RT_MATERIAL_MIRROR && hit.depth == 0u;
 }
 
 // The ray a hit passes on: where it starts and where it goes, the share of the light it brings
-// back, its cone, its differential and its sagittal section.
+// back, its cone, its differential and its sagittal section, and the colour the hit multiplies
+// onto that light (a path mode's textured surface: its texture, at the arriving cone's level;
+// white elsewhere).
 struct RtBounce {
     vec3 origin;
     vec3 direction;
@@ -481,6 +496,7 @@ struct RtBounce {
     RfRayCone cone;
     RfRayDiff diff;
     RtSagittal sagittal;
+    vec3 tint;
 };
 
 // A hash of four words to four (Jarzynski, Olano, "Hash Functions for GPU Rendering", JCGT 9(3),
@@ -507,6 +523,26 @@ vec2 rt_random(uvec2 pixel) {
     return vec2(words.xy >> 8u) * (1.0 / 16777216.0);
 }
 
+// Two numbers in [0, 1) for the ray of the hit's pixel leaving bounce `depth` at the frame's pixel
+// offset: a path draws new ones at every bounce, the same on every run.
+vec2 rt_path_random(uvec2 pixel, uint depth) {
+    uvec4 words = rt_hash(uvec4(pixel, floatBitsToUint(pc.pixel_offset.x) ^ (depth * 0x9e3779b9u),
+        floatBitsToUint(pc.pixel_offset.y)));
+    return vec2(words.xy >> 8u) * (1.0 / 16777216.0);
+}
+
+// A direction drawn from the cosine lobe around the unit `normal` (Malley's method: a point
+// uniform on the unit disc, lifted to the hemisphere; pdf cos(theta) / pi), in the tangent frame of
+// rf_orthonormal_tangent.
+vec3 rt_cosine_direction(vec3 normal, vec2 random) {
+    float radius = sqrt(random.x);
+    float phi = 6.28318530718 * random.y;
+    vec3 tangent = rf_orthonormal_tangent(normal);
+    vec3 bitangent = cross(normal, tangent);
+    vec3 lifted = radius * (cos(phi) * tangent + sin(phi) * bitangent) + sqrt(max(1.0 - random.x, 0.0)) * normal;
+    return normalize(lifted);
+}
+
 // A microfacet normal around the unit `normal` drawn from the GGX distribution of width `alpha`
 // (Walter, Marschner, Li, Torrance 2007, Eq. 35-36: tan(theta) = alpha sqrt(u / (1 - u)),
 // phi = 2 pi v), in the tangent frame of rf_orthonormal_tangent.
@@ -520,18 +556,20 @@ vec3 rt_ggx_normal(vec3 normal, float alpha, vec2 random) {
     return normalize(sin_theta * (cos(phi) * tangent + sin(phi) * bitangent) + cos_theta * normal);
 }
 
-// The direction a mirror reflects the hit's ray: about the shading normal; under
-// RT_FLAG_GLOSSY_LOBE about a normal drawn from the GGX distribution of the mirror's roughness
-// (alpha = roughness^2), falling back to the shading normal where that reflection would leave below
-// the surface.
-vec3 rt_mirror_direction(RtHit hit) {
+// The direction a mirror reflects the hit's ray in `mode`: about the shading normal; under
+// RT_FLAG_GLOSSY_LOBE, and in the path modes, about a normal drawn from the GGX distribution of the
+// mirror's roughness (alpha = roughness^2; in the path modes with numbers new at every bounce),
+// falling back to the shading normal where that reflection would leave below the surface.
+vec3 rt_mirror_direction(uint mode, RtHit hit) {
     vec3 mirrored = reflect(hit.direction, hit.normal);
-    if ((pc.flags & RT_FLAG_GLOSSY_LOBE) == 0u) {
+    bool paths = rt_traces_paths(mode);
+    if ((pc.flags & RT_FLAG_GLOSSY_LOBE) == 0u && !paths) {
         return mirrored;
     }
     vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
     float roughness = hit.material.parameter;
-    vec3 glossy = reflect(hit.direction, rt_ggx_normal(facing, roughness * roughness, rt_random(hit.pixel)));
+    vec2 random = paths ? rt_path_random(hit.pixel, hit.depth) : rt_random(hit.pixel);
+    vec3 glossy = reflect(hit.direction, rt_ggx_normal(facing, roughness * roughness, random));
     return dot(glossy, facing) > 0.0 ? glossy : mirrored;
 }
 
@@ -550,19 +588,43 @@ vec3 rt_leaving_origin(RtHit hit, vec3 direction) {
     return hit.origin + hit.t * hit.direction + side * hit.normal;
 }
 
+// The ray a path mode scatters from a textured surface or a mirror reached by the ray carrying
+// `cone`: a textured surface is Lambertian, a direction drawn from its cosine lobe bringing back its
+// texture colour (f cos / pdf = albedo), sampled at the arriving cone's level in RT_MODE_PATH_CONE
+// and at level 0 in RT_MODE_PATH_MIP0; a mirror reflects about a GGX normal of its roughness
+// (rt_mirror_direction) and RT_MIRROR_REFLECTANCE of the light. In RT_MODE_PATH_CONE the leaving
+// cone is rf_scatter_ray_cone's for the lobe drawn, with the hit triangle's isotropic curvature.
+RtBounce rt_path_bounce(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagittal) {
+    bool mirror = hit.material.kind == RT_MATERIAL_MIRROR;
+    vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    vec3 direction = mirror ? rt_mirror_direction(mode, hit)
+                            : rt_cosine_direction(facing, rt_path_random(hit.pixel, hit.depth));
+    vec3 tint = mirror ? vec3(1.0) : rt_texture_colour(mode, hit, cone, rt_no_diff());
+    RfRayCone leaving = cone;
+    if (mode == RT_MODE_PATH_CONE) {
+        uint lobe = mirror ? RF_LOBE_REFLECTION : RF_LOBE_DIFFUSE;
+        leaving = rf_scatter_ray_cone(cone, hit.t, rt_curvature(hit), hit.normal, hit.direction, direction, lobe);
+    }
+    return RtBounce(rt_leaving_origin(hit, direction), direction, mirror ? RT_MIRROR_REFLECTANCE : 1.0, leaving,
+        rt_no_diff(), sagittal, tint);
+}
+
 // The ray a mirror or glass passes on from the ray carrying `cone`, `diff` and `sagittal` in `mode`.
 // A mirror reflects it (rt_mirror_direction) and 90% of the light; its sections leave by RTG Eq. 35,
 // widened by rt_reflection_spread (rt_mirror_sections). Glass refracts it (rt_glass_direction) and
 // passes all of the light on; its sections are rt_glass_sections. In the ray-differential modes it
 // carries the reflected or refracted differential (Igehy).
 RtBounce rt_bounce(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff, RtSagittal sagittal) {
+    if (rt_traces_paths(mode) && hit.material.kind != RT_MATERIAL_GLASS) {
+        return rt_path_bounce(mode, hit, cone, sagittal);
+    }
     bool glass = hit.material.kind == RT_MATERIAL_GLASS;
     float eta = glass ? rt_relative_index(hit) : 0.0;
-    vec3 direction = glass ? rt_glass_direction(hit, eta) : rt_mirror_direction(hit);
+    vec3 direction = glass ? rt_glass_direction(hit, eta) : rt_mirror_direction(mode, hit);
     RtSections leaving = glass ? rt_glass_sections(mode, hit, cone, sagittal, eta)
                                : rt_mirror_sections(mode, hit, cone, sagittal);
     return RtBounce(rt_leaving_origin(hit, direction), direction, glass ? 1.0 : RT_MIRROR_REFLECTANCE, leaving.cone,
-        rt_carries_diff(mode) ? rt_bounced_diff(hit, diff, eta) : diff, leaving.sagittal);
+        rt_carries_diff(mode) ? rt_bounced_diff(hit, diff, eta) : diff, leaving.sagittal, vec3(1.0));
 }
 
 // The ray-differential, re-intersection and wireframe values of a primary hit reached by the eye
