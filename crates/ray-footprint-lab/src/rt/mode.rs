@@ -5,12 +5,13 @@ use std::fmt;
 /// A render mode. `cargo xtask codegen` writes each discriminant into the shaders as a constant
 /// named `RT_MODE_` and the mode's name in capitals: RT_MODE_CONE_CURVATURE for ConeCurvature.
 ///
-/// Every mode traces the same rays and records the same per-pixel values
-/// ([`crate::rt::abi::RtPixelRecord`]); the mode only decides how the texture is sampled, whether a
+/// Every mode traces the same primary rays and records the same per-pixel values
+/// ([`crate::rt::abi::RtPixelRecord`]); the mode decides how the texture is sampled, whether a
 /// reflection off a mirror widens its cone by the surface curvature and roughness, whether glass
 /// refracts the cone (and its second section), whether a reflected or refracted ray carries a ray
-/// differential, and whether the wireframe is drawn. Every mode reflects and refracts the same
-/// rays. The ray-differential modes carry the differential through mirrors and glass (Igehy's
+/// differential, and whether the wireframe is drawn. Every mode but the two path tracers reflects
+/// and refracts the same rays; `PathMip0` and `PathCone` scatter from every surface, and trace the
+/// same paths as each other. The ray-differential modes carry the differential through mirrors and glass (Igehy's
 /// reflection and refraction); the re-intersection of `BaryGradients` needs a primary hit: what
 /// the mirror reflects is sampled at the ray-cone LOD in it. The cone modes other than `ConeRefraction` and `ConeSections` carry the
 /// cone through glass as if the glass were not there.
