@@ -1,18 +1,20 @@
 //! The image error each cone rule gives when its width picks the level of a mip-mapped texture in
 //! a path tracer: per scene, rule and samples per pixel, the RMSE against a reference rendered at
 //! level 0 with many samples, split into bias and noise (`ray_footprint_lab::paths::image` says
-//! how). Everything runs on the CPU.
+//! how), and the error against the samples per pixel drawn to `--plot FILE` (default
+//! `path_image.png`). Everything runs on the CPU.
 //!
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example path_image -- \
-//!     [--seed N] [--size WxH] [--reference-spp N] [--scene NAME] [--threads N]
+//!     [--seed N] [--size WxH] [--reference-spp N] [--scene NAME] [--threads N] [--plot FILE]
 //! ```
 
 use ray_footprint_lab::cli::{example_command, image_size, options_or_exit, positive_count, seed};
 use ray_footprint_lab::paths::{
-    image_scene_table, image_summary_table, measure_image, scenes, scenes_named, ImageSettings, Scene,
-    Texture,
+    image_error_plot, image_scene_table, image_summary_table, measure_image, scenes, scenes_named,
+    ImageSettings, Scene, Texture,
 };
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// The default seed.
@@ -28,13 +30,15 @@ const DEFAULT_REFERENCE_SAMPLES: usize = 1024;
 struct Options {
     settings: ImageSettings,
     scenes: Vec<Scene>,
+    plot: PathBuf,
 }
 
 fn usage() -> String {
     format!(
-        "usage: path_image [--seed N] [--size WxH] [--reference-spp N] [--scene NAME|all] [--threads N]\n\
+        "usage: path_image [--seed N] [--size WxH] [--reference-spp N] [--scene NAME|all] [--threads N] \
+         [--plot FILE]\n\
          defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} \
-         --scene all --threads (all cores)",
+         --scene all --threads (all cores) --plot path_image.png",
         DEFAULT_SIZE.0, DEFAULT_SIZE.1
     )
 }
@@ -50,6 +54,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
             threads,
         },
         scenes: scenes(),
+        plot: PathBuf::from("path_image.png"),
     };
     while let Some(flag) = args.next() {
         if flag == "--help" || flag == "-h" {
@@ -62,6 +67,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
             "--reference-spp" => options.settings.reference_samples = positive_count(&flag, &value)?,
             "--threads" => options.settings.threads = positive_count(&flag, &value)?,
             "--scene" => options.scenes = scenes_named(&value)?,
+            "--plot" => options.plot = PathBuf::from(value),
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
@@ -115,5 +121,12 @@ fn main() {
          shipped: that mean divided by the lowest such mean among the shipped rules (JCGT roughness, \
          RTXPT, sqrt-pdf, OptiX Toolkit).\n"
     );
+    match image_error_plot(&results, &settings.samples, &options.plot) {
+        Ok(path) => println!("wrote {}", path.display()),
+        Err(error) => {
+            eprintln!("path_image: {error}");
+            std::process::exit(1);
+        }
+    }
     println!("wall time {:.1} s", started.elapsed().as_secs_f64());
 }

@@ -26,6 +26,8 @@ use super::sampling::{pdf_and_bsdf, sample_material, shading_frame, Stream, NUMB
 use super::scene::{Camera, Material, Scene, DIFFUSE_ALBEDO, TEXTURE_REPEAT_METRES};
 use super::texture::{Texture, TEXTURE_SIZE};
 use super::tracer::{trace, Path, Vertex, MAX_VERTICES};
+use crate::quality::plots::{scatter_plot, ScatterPanel, ScatterPoint};
+use crate::quality::LabError;
 use glam::{DVec3, Vec2};
 use ray_footprint::ray_cone::texture_lod;
 use std::f64::consts::PI;
@@ -566,6 +568,35 @@ pub fn image_summary_table(all: &[SceneErrors], samples: &[usize]) -> String {
     }
     table.push('\n');
     table
+}
+
+/// The error against samples per pixel, drawn to `path` (PNG): a point per method and sample
+/// count at `log2(spp)` across and its RMSE over mip 0's, averaged over the scenes, up (the
+/// summary table's "/ mip 0"); the legend names each method without its parenthesis.
+pub fn image_error_plot(
+    all: &[SceneErrors],
+    samples: &[usize],
+    path: &std::path::Path,
+) -> Result<std::path::PathBuf, LabError> {
+    let points = image_methods()
+        .iter()
+        .enumerate()
+        .flat_map(|(m, method)| {
+            let name = method.name().split(" (").next().unwrap_or_default().to_string();
+            samples.iter().enumerate().map(move |(c, &spp)| ScatterPoint {
+                x: (spp as f64).log2(),
+                x_spread: None,
+                y: mean_ratio_to_mip0(all, m, c),
+                method: name.clone(),
+                separable: true,
+            })
+        })
+        .collect();
+    let panel = ScatterPanel {
+        title: format!("RMSE over mip 0's, mean over {} scenes", all.len()),
+        points,
+    };
+    scatter_plot(path, &[panel], ("log2 samples per pixel", "RMSE over mip 0's"))
 }
 
 /// A standard normal number from two of `stream`'s (Box-Muller).

@@ -248,7 +248,7 @@ fn scatter_panels(
     names: &[String],
     (x_desc, y_desc): (&str, &str),
 ) -> Result<(), LabError> {
-    let columns = 2;
+    let columns = panels.len().clamp(1, 2);
     let rows = panels.len().div_ceil(columns).max(1);
     for (panel, region) in panels.iter().zip(&area.split_evenly((rows, columns))) {
         let xs = panel.points.iter().flat_map(|p| {
