@@ -51,7 +51,7 @@
 
 use ash::vk;
 use ray_footprint::shaders::Module;
-use ray_footprint_lab::cli::{bench_options, count_at_least, options_or_exit};
+use ray_footprint_lab::cli::{command_options, count_at_least, options_or_exit};
 use ray_footprint_lab::timing::function::{inputs, signatures, timing_kernel, Body, Callee, Signature};
 use ray_footprint_lab::timing::peers::{extract, Peer, PEERS};
 use ray_footprint_lab::timing::{
@@ -134,7 +134,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         peers: std::env::var_os(PEERS_ENV).map(PathBuf::from),
         rounds: MIN_ROUNDS,
     };
-    for (flag, value) in bench_options(args)? {
+    for (flag, value) in command_options(args)? {
         match flag.as_str() {
             "--function" => options.function = Some(value),
             "--module" => options.module = Some(value),

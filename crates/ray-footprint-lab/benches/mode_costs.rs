@@ -35,7 +35,7 @@
 //! --samples-per-axis N --rounds N --frames N --scene NAME --texture-size N --modes LIST --csv FILE]`
 
 use ray_footprint::wireframe::WireframeSettings;
-use ray_footprint_lab::cli::{bench_options, count_at_least, options_or_exit, positive_count};
+use ray_footprint_lab::cli::{command_options, count_at_least, options_or_exit, positive_count};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::RtPushConstants;
 use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Error, Mode, Renderer, TEXTURE_SIZE};
@@ -104,7 +104,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         modes: Mode::ALL.to_vec(),
     };
     let (mut width, mut height) = (None, None);
-    for (flag, value) in bench_options(args)? {
+    for (flag, value) in command_options(args)? {
         let count = || positive_count(&flag, &value);
         match flag.as_str() {
             "--width" => width = Some(count()? as u32),

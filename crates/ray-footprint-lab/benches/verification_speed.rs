@@ -16,7 +16,7 @@
 //! run come from that cache (`shader_proptest::compile::SPIRV_CACHE_ENV`).
 
 use ray_footprint_cases::agreement::run_all_checks;
-use ray_footprint_lab::cli::{bench_options, options_or_exit, positive_count};
+use ray_footprint_lab::cli::{command_options, options_or_exit, positive_count};
 use shader_proptest::compile::SPIRV_CACHE_ENV;
 use shader_proptest::{Gpu, Outcome, Phase, PhaseTimes, RunConfig};
 use std::process::ExitCode;
@@ -37,7 +37,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         batch: RunConfig::default().batch,
         threads: None,
     };
-    for (flag, value) in bench_options(args)? {
+    for (flag, value) in command_options(args)? {
         let number = positive_count(&flag, &value)?;
         match flag.as_str() {
             "--cases" => options.cases = number,

@@ -9,7 +9,7 @@
 //!     --quality quality/table.csv --costs mode_costs.csv --out cost_quality.png
 //! ```
 
-use ray_footprint_lab::cli::options_or_exit;
+use ray_footprint_lab::cli::{command_options, options_or_exit};
 use ray_footprint_lab::quality::cost;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -23,13 +23,9 @@ struct Options {
     out: PathBuf,
 }
 
-fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let (mut quality, mut costs, mut out) = (None, None, PathBuf::from("cost_quality.png"));
-    while let Some(flag) = args.next() {
-        if flag == "--help" || flag == "-h" {
-            return Err(String::new());
-        }
-        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+    for (flag, value) in command_options(args)? {
         match flag.as_str() {
             "--quality" => quality = Some(PathBuf::from(value)),
             "--costs" => costs = Some(PathBuf::from(value)),

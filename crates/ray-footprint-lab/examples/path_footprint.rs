@@ -9,7 +9,9 @@
 //!     [--seed N] [--size WxH] [--paths N] [--step PIXELS] [--scene NAME] [--threads N]
 //! ```
 
-use ray_footprint_lab::cli::{example_command, image_size, options_or_exit, positive_count, seed};
+use ray_footprint_lab::cli::{
+    command_options, example_command, image_size, options_or_exit, positive_count, seed,
+};
 use ray_footprint_lab::paths::{
     bias_sweep_table, measure, scene_table, scenes, scenes_named, summary_table, Scene, Settings,
     DEFAULT_STEP,
@@ -46,7 +48,7 @@ fn usage() -> String {
     )
 }
 
-fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut options = Options {
         settings: Settings {
@@ -58,11 +60,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
         },
         scenes: scenes(),
     };
-    while let Some(flag) = args.next() {
-        if flag == "--help" || flag == "-h" {
-            return Err(String::new());
-        }
-        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+    for (flag, value) in command_options(args)? {
         match flag.as_str() {
             "--seed" => options.settings.seed = seed(&flag, &value)?,
             "--size" => options.settings.size = image_size(&flag, &value)?,

@@ -9,7 +9,9 @@
 //!     [--seed N] [--size WxH] [--reference-spp N] [--scene NAME] [--threads N] [--plot FILE]
 //! ```
 
-use ray_footprint_lab::cli::{example_command, image_size, options_or_exit, positive_count, seed};
+use ray_footprint_lab::cli::{
+    command_options, example_command, image_size, options_or_exit, positive_count, seed,
+};
 use ray_footprint_lab::paths::{
     image_error_plot, image_scene_table, image_summary_table, measure_image, scenes, scenes_named,
     ImageSettings, Scene, Texture,
@@ -43,7 +45,7 @@ fn usage() -> String {
     )
 }
 
-fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut options = Options {
         settings: ImageSettings {
@@ -56,11 +58,7 @@ fn parse_args(mut args: impl Iterator<Item = String>) -> Result<Options, String>
         scenes: scenes(),
         plot: PathBuf::from("path_image.png"),
     };
-    while let Some(flag) = args.next() {
-        if flag == "--help" || flag == "-h" {
-            return Err(String::new());
-        }
-        let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
+    for (flag, value) in command_options(args)? {
         match flag.as_str() {
             "--seed" => options.settings.seed = seed(&flag, &value)?,
             "--size" => options.settings.size = image_size(&flag, &value)?,

@@ -1,7 +1,7 @@
-//! What the lab's command-line programs (the `verify`, `gallery`, `quality`, `path_footprint` and
-//! `path_image` examples and the benches) share: answering `--help`, reporting a bad option,
-//! reading a benchmark's flags, a positive count, a seed and an image size, and the command that
-//! reruns an example.
+//! What the lab's command-line programs (the `verify`, `gallery`, `quality`, `cost_quality`,
+//! `path_footprint` and `path_image` examples and the benches) share: answering `--help`,
+//! reporting a bad option, reading a command line's flags, a positive count, a seed and an image
+//! size, and the command that reruns an example.
 
 use std::process::exit;
 
@@ -27,11 +27,11 @@ pub fn positive_count(flag: &str, value: &str) -> Result<usize, String> {
     }
 }
 
-/// The options of a benchmark's command line `args`, each a flag and its value, in order.
-/// `--bench`, which `cargo bench` passes to every benchmark, is skipped; `--help` or `-h` gives the
-/// empty message that asks for help ([`options_or_exit`]); a flag without a value, the message
-/// naming it.
-pub fn bench_options(mut args: impl Iterator<Item = String>) -> Result<Vec<(String, String)>, String> {
+/// The options of a benchmark's or an example's command line `args`, each a flag and its value, in
+/// order. `--bench`, which `cargo bench` passes to every benchmark, is skipped; `--help` or `-h`
+/// gives the empty message that asks for help ([`options_or_exit`]); a flag without a value, the
+/// message naming it.
+pub fn command_options(mut args: impl Iterator<Item = String>) -> Result<Vec<(String, String)>, String> {
     let mut options = Vec::new();
     while let Some(flag) = args.next() {
         match flag.as_str() {
