@@ -470,6 +470,11 @@ vec3 rt_surface_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     return colour;
 }
 
+// The hit's shading normal turned against its ray.
+vec3 rt_facing_normal(RtHit hit) {
+    return dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+}
+
 // Whether `mode` traces paths: every surface scatters the ray on (rt_path_bounce).
 bool rt_traces_paths(uint mode) {
     return mode == RT_MODE_PATH_MIP0 || mode == RT_MODE_PATH_CONE;
@@ -516,16 +521,10 @@ uvec4 rt_hash(uvec4 v) {
     return v;
 }
 
-// Two numbers in [0, 1) for the ray of `pixel` at the frame's pixel offset: different for every
-// pixel and sub-pixel sample, the same on every run.
-vec2 rt_random(uvec2 pixel) {
-    uvec4 words = rt_hash(uvec4(pixel, floatBitsToUint(pc.pixel_offset)));
-    return vec2(words.xy >> 8u) * (1.0 / 16777216.0);
-}
-
-// Two numbers in [0, 1) for the ray of the hit's pixel leaving bounce `depth` at the frame's pixel
-// offset: a path draws new ones at every bounce, the same on every run.
-vec2 rt_path_random(uvec2 pixel, uint depth) {
+// Two numbers in [0, 1) for the ray of `pixel` leaving bounce `depth` at the frame's pixel offset:
+// different for every pixel, sub-pixel sample and bounce, the same on every run (a path draws new
+// ones at every bounce; the glossy lobe of the other modes takes bounce 0's).
+vec2 rt_random(uvec2 pixel, uint depth) {
     uvec4 words = rt_hash(uvec4(pixel, floatBitsToUint(pc.pixel_offset.x) ^ (depth * 0x9e3779b9u),
         floatBitsToUint(pc.pixel_offset.y)));
     return vec2(words.xy >> 8u) * (1.0 / 16777216.0);
@@ -566,9 +565,9 @@ vec3 rt_mirror_direction(uint mode, RtHit hit) {
     if ((pc.flags & RT_FLAG_GLOSSY_LOBE) == 0u && !paths) {
         return mirrored;
     }
-    vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    vec3 facing = rt_facing_normal(hit);
     float roughness = hit.material.parameter;
-    vec2 random = paths ? rt_path_random(hit.pixel, hit.depth) : rt_random(hit.pixel);
+    vec2 random = rt_random(hit.pixel, paths ? hit.depth : 0u);
     vec3 glossy = reflect(hit.direction, rt_ggx_normal(facing, roughness * roughness, random));
     return dot(glossy, facing) > 0.0 ? glossy : mirrored;
 }
@@ -576,7 +575,7 @@ vec3 rt_mirror_direction(uint mode, RtHit hit) {
 // The direction of the ray leaving a glass hit with index ratio eta: refracted by Snell's law
 // (GLSL refract, with the normal turned against the ray), reflected on total internal reflection.
 vec3 rt_glass_direction(RtHit hit, float eta) {
-    vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    vec3 facing = rt_facing_normal(hit);
     vec3 refracted = refract(hit.direction, facing, eta);
     return all(equal(refracted, vec3(0.0))) ? reflect(hit.direction, facing) : refracted;
 }
@@ -596,9 +595,9 @@ vec3 rt_leaving_origin(RtHit hit, vec3 direction) {
 // cone is rf_scatter_ray_cone's for the lobe drawn, with the hit triangle's isotropic curvature.
 RtBounce rt_path_bounce(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagittal) {
     bool mirror = hit.material.kind == RT_MATERIAL_MIRROR;
-    vec3 facing = dot(hit.normal, hit.direction) < 0.0 ? hit.normal : -hit.normal;
+    vec3 facing = rt_facing_normal(hit);
     vec3 direction = mirror ? rt_mirror_direction(mode, hit)
-                            : rt_cosine_direction(facing, rt_path_random(hit.pixel, hit.depth));
+                            : rt_cosine_direction(facing, rt_random(hit.pixel, hit.depth));
     vec3 tint = mirror ? vec3(1.0) : rt_texture_colour(mode, hit, cone, rt_no_diff());
     RfRayCone leaving = cone;
     if (mode == RT_MODE_PATH_CONE) {
