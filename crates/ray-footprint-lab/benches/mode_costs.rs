@@ -409,13 +409,7 @@ fn print_path_goal(rows: &[Row]) {
     };
     let added = cone.minus(&mip0);
     let limit = -PATH_GOAL * mip0.median;
-    let verdict = if added.max <= limit {
-        "met"
-    } else if added.min > limit {
-        "MISSED"
-    } else {
-        "not separable at this load"
-    };
+    let verdict = against_goal(&added, limit, limit);
     println!(
         "\ngoal: path_cone's frame at least {:.0}% faster than path_mip0's: {:+.1}% ({:+.3} ms, {:+.3} to {:+.3}): {verdict}",
         100.0 * PATH_GOAL,
