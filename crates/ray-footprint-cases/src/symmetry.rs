@@ -43,6 +43,16 @@ use std::sync::Arc;
 /// Cases each symmetry runs on the mirror.
 pub const CASES: usize = 100_000;
 
+/// The variable that picks the functions whose symmetries a run checks: those whose
+/// `module::function` name holds its text (every function where it is not set).
+pub const ONLY_ENV: &str = "RAY_FOOTPRINT_SYMMETRIES";
+
+/// Whether [`ONLY_ENV`] picks `function`.
+pub fn picked(function: &dyn crate::Function) -> bool {
+    let only = std::env::var(ONLY_ENV).unwrap_or_default();
+    format!("{}::{}", function.module().stem(), function.name()).contains(&only)
+}
+
 /// Largest exponent of a drawn scale: `2^40` is about 1.1e12, the documented range.
 pub const SCALE_EXPONENT: i32 = 40;
 

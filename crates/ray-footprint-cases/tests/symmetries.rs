@@ -6,7 +6,7 @@
 //! the text; `SHADER_PROPTEST_SEED` draws other cases (the seed is printed).
 
 use ray_footprint_cases::reference::env_seed;
-use ray_footprint_cases::symmetry::{SymmetryReport, CASES};
+use ray_footprint_cases::symmetry::{picked, SymmetryReport, CASES};
 use ray_footprint_cases::{records, Function};
 use shader_proptest::SEED_ENV;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -14,11 +14,10 @@ use std::sync::Mutex;
 
 #[test]
 fn every_symmetry_holds_on_the_mirror() {
-    let only = std::env::var("RAY_FOOTPRINT_SYMMETRIES").unwrap_or_default();
     let records = records();
     let runs: Vec<(&dyn Function, usize)> = records
         .iter()
-        .filter(|record| format!("{}::{}", record.module().stem(), record.name()).contains(&only))
+        .filter(|record| picked(record.as_ref()))
         .flat_map(|record| (0..record.symmetry_list().len()).map(move |index| (record.as_ref(), index)))
         .collect();
     // The first symmetry's seed; the next ones count up from it.

@@ -12,6 +12,7 @@
 use super::{assert_all_pass, gpu};
 use ray_footprint::shaders::Module;
 use ray_footprint_cases::module_records;
+use ray_footprint_cases::symmetry::picked;
 use shader_proptest::{Language, RunConfig};
 
 /// Cases per symmetry and language where `RAY_FOOTPRINT_SYMMETRY_CASES` is not set.
@@ -33,9 +34,8 @@ fn config() -> RunConfig {
 
 fn symmetries_hold(module: Module, language: Language) {
     let gpu = gpu();
-    let only = std::env::var("RAY_FOOTPRINT_SYMMETRIES").unwrap_or_default();
     let checks: Vec<_> = module_records(module)
-        .filter(|record| format!("{}::{}", module.stem(), record.name()).contains(&only))
+        .filter(|&record| picked(record))
         .flat_map(|record| (0..record.symmetry_list().len()).map(|index| record.symmetry_check(index)))
         .collect();
     let shader = module.shader(language);
