@@ -200,13 +200,18 @@ pub fn bias_sweep() -> impl Iterator<Item = f64> + Clone {
 /// The mean `|log2|` over every vertex at bounces 2 to 4 of the cone without a scattering term
 /// with `bias` added.
 fn mean_biased_error(measurements: &[Measurement], bias: f64) -> f64 {
-    let errors: Vec<f64> = measurements
-        .iter()
-        .flat_map(|m| m.records.iter())
-        .filter(|r| r.bounce >= 2)
-        .map(|r| biased_log2_ratio(r, bias).abs())
-        .collect();
-    errors.iter().sum::<f64>() / errors.len().max(1) as f64
+    let records = measurements.iter().flat_map(|m| m.records.iter());
+    mean(
+        records
+            .filter(|r| r.bounce >= 2)
+            .map(|r| biased_log2_ratio(r, bias).abs()),
+    )
+}
+
+/// The mean of `values`, NaN for none.
+fn mean(values: impl Iterator<Item = f64>) -> f64 {
+    let (sum, count) = values.fold((0.0, 0usize), |(sum, count), value| (sum + value, count + 1));
+    sum / count as f64
 }
 
 /// The bias of [`bias_sweep`] with the lowest mean error over every vertex at bounces 2 to 4 of
@@ -232,12 +237,10 @@ pub fn bias_sweep_table(measurements: &[Measurement]) -> String {
         let mark = if bias == best { " (best)" } else { "" };
         write!(table, "\n| {bias:+.2}{mark} |").unwrap();
         for group in GROUPS {
-            let mut errors: Vec<f64> = all()
+            let errors = all()
                 .filter(|r| after(r) == Some(group))
-                .map(|r| biased_log2_ratio(r, bias).abs())
-                .collect();
-            let mean = mean_and_p95(&mut errors).map_or(f64::NAN, |(mean, _)| mean);
-            write!(table, " {mean:.3} |").unwrap();
+                .map(|r| biased_log2_ratio(r, bias).abs());
+            write!(table, " {:.3} |", mean(errors)).unwrap();
         }
         write!(table, " {:.3} |", mean_biased_error(measurements, bias)).unwrap();
     }
