@@ -1,14 +1,18 @@
 //! The shader compilers: naga (WGSL), glslang (`glslangValidator`, the compiler Vulkan's GLSL users
-//! use, and its HLSL front end) and `slangc` (the Slang compiler, also for HLSL input), each to
+//! use, and its HLSL front end) and slangc (the Slang compiler, also for HLSL input), each to
 //! SPIR-V words. One function per compiler and input language; the back ends ([`crate::Language`]) choose
 //! one for their kernels and layout probes, and any other shader a user builds with this crate goes
-//! through them too.
+//! through them too. glslang runs as a process per shader; slangc's compiler runs in this process,
+//! as the library `slangc` loads, with slangc's options (`compile/slang_library.rs`), because
+//! starting slangc is most of what it takes to compile a small shader.
 
 mod cache;
+mod slang_library;
 
 pub use crate::tool::{CompileError, Target};
 pub use cache::SPIRV_CACHE_ENV;
-use std::path::Path;
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -157,7 +161,9 @@ pub fn compile_hlsl_with_glslang(
 
 /// Compiles Slang (a whole shader with the entry point `main`) as `stage` for `target` with slangc,
 /// with `search_dirs` on the search path of `import` and `#include`. Every warning is an error.
-/// Needs `slangc` on the `PATH`.
+/// Needs `slangc` on the `PATH` and the Slang library installed with it (`libslang-compiler`, or
+/// `libslang` before 2025, beside it or in its `../lib`), which compiles in this process with
+/// slangc's options and gives slangc's SPIR-V, byte for byte.
 ///
 /// Two things are particular to the slangc of the `slangtorch` wheel that `scripts/setup.sh`
 /// installs on Debian 12, and harmless with any other:
@@ -193,7 +199,9 @@ pub fn compile_hlsl_with_slangc(
     run_slangc(source, "hlsl", stage, target, search_dirs)
 }
 
-/// slangc on `source` written to a file with `extension`, which names its language.
+/// slangc's options for `stage`, `target` and `search_dirs`, run by the Slang library in this
+/// process (`compile/slang_library.rs`) on `source` written to a file with `extension`, which
+/// names its language.
 fn run_slangc(
     source: &str,
     extension: &str,
@@ -201,27 +209,36 @@ fn run_slangc(
     target: Target,
     search_dirs: &[&Path],
 ) -> Result<Vec<u32>, CompileError> {
-    let mut command = Command::new("slangc");
-    command.args([
+    let mut options: Vec<OsString> = [
         "-target",
         "spirv",
         "-profile",
         target.slang_profile(),
         "-entry",
         "main",
-    ]);
-    command.args(["-stage", stage.slang_name(), "-O0", "-warnings-as-errors", "all"]);
+    ]
+    .into_iter()
+    .chain(["-stage", stage.slang_name(), "-O0", "-warnings-as-errors", "all"])
+    .map(OsString::from)
+    .collect();
     for dir in search_dirs {
-        command.arg("-I").arg(dir);
+        options.extend(["-I".into(), dir.as_os_str().to_os_string()]);
     }
-    let mut words = run_compiler(
-        command,
-        (source, extension),
-        search_dirs,
-        |command, input, output| {
-            command.arg(input).arg("-o").arg(output);
-        },
-    )?;
+    let mut command = Command::new("slangc");
+    command.args(&options);
+    let key = cache_key(&command, (source, extension), search_dirs);
+    let mut words = cached(key, || {
+        in_temporary_directory(source, extension, |input, _| {
+            let arguments: Vec<OsString> = options
+                .iter()
+                .cloned()
+                .chain([input.as_os_str().into()])
+                .collect();
+            let bytes = slang_library::compile(&arguments, input)?;
+            crate::spirv::from_bytes(&bytes)
+                .map_err(|e| CompileError::NotRun(format!("slangc's output: {e}")))
+        })
+    })?;
     crate::spirv::without_slang_source_language(&mut words);
     Ok(words)
 }
@@ -233,34 +250,67 @@ const GLSLANG_MISSING: &str = "Missing functionality";
 /// Runs a command-line compiler on `source`, written to a file with `extension` in a fresh
 /// temporary directory, `include_dirs` on its include path; `arguments` adds the input and output
 /// paths to `command`. Returns the output's SPIR-V words, or the compiler's log naming the input
-/// file; a run that printed [`GLSLANG_MISSING`] counts as failed. With [`SPIRV_CACHE_ENV`] set,
-/// the words of a compile of the same input by the same compiler come from the cache
-/// (`compile/cache.rs`), and a new compile's words go into it.
+/// file; a run that printed [`GLSLANG_MISSING`] counts as failed. Cached as [`cached`] says.
 fn run_compiler(
-    command: Command,
+    mut command: Command,
     (source, extension): (&str, &str),
     include_dirs: &[&Path],
     arguments: impl FnOnce(&mut Command, &Path, &Path),
 ) -> Result<Vec<u32>, CompileError> {
-    let cache = cache::directory()
-        .and_then(|dir| Some((cache::key(&command, extension, source, include_dirs)?, dir)));
-    let Some((key, dir)) = cache else {
-        return compile_in_temporary_directory(command, source, extension, arguments);
+    let key = cache_key(&command, (source, extension), include_dirs);
+    cached(key, || {
+        in_temporary_directory(source, extension, |input, output| {
+            let program = command.get_program().to_string_lossy().into_owned();
+            arguments(&mut command, input, output);
+            let run = command
+                .output()
+                .map_err(|e| CompileError::NotRun(format!("cannot run {program}: {e}")))?;
+            if String::from_utf8_lossy(&run.stdout).contains(GLSLANG_MISSING) {
+                return Err(CompileError::Failed {
+                    log: String::from_utf8_lossy(&run.stdout).into_owned(),
+                    source_path: input.display().to_string(),
+                });
+            }
+            crate::spirv::tool_output(&program, &run, std::fs::read(output), "", input)
+        })
+    })
+}
+
+/// The cache's key for compiling `source` with `command` (the compiler and its options, before
+/// the input and output paths), and the cache's directory, where [`SPIRV_CACHE_ENV`] is set.
+fn cache_key(
+    command: &Command,
+    (source, extension): (&str, &str),
+    include_dirs: &[&Path],
+) -> Option<(Vec<u8>, PathBuf)> {
+    let dir = cache::directory()?;
+    Some((cache::key(command, extension, source, include_dirs)?, dir))
+}
+
+/// `compile`'s words; with a `key` (from [`cache_key`]), the words of an earlier compile of the
+/// same input by the same compiler come from the cache (`compile/cache.rs`), and a new compile's
+/// words go into it.
+fn cached(
+    key: Option<(Vec<u8>, PathBuf)>,
+    compile: impl FnOnce() -> Result<Vec<u32>, CompileError>,
+) -> Result<Vec<u32>, CompileError> {
+    let Some((key, dir)) = key else {
+        return compile();
     };
     if let Some(words) = cache::lookup(&dir, &key) {
         return Ok(words);
     }
-    let words = compile_in_temporary_directory(command, source, extension, arguments)?;
+    let words = compile()?;
     cache::store(&dir, &key, &words);
     Ok(words)
 }
 
-/// [`run_compiler`] without the cache.
-fn compile_in_temporary_directory(
-    mut command: Command,
+/// `compile(input, output)` with `source` written to `input`, a file with `extension` in a fresh
+/// temporary directory, and `output` a path beside it; the directory is removed afterwards.
+fn in_temporary_directory(
     source: &str,
     extension: &str,
-    arguments: impl FnOnce(&mut Command, &Path, &Path),
+    compile: impl FnOnce(&Path, &Path) -> Result<Vec<u32>, CompileError>,
 ) -> Result<Vec<u32>, CompileError> {
     static COUNTER: AtomicUsize = AtomicUsize::new(0);
     let dir = std::env::temp_dir().join(format!(
@@ -271,24 +321,9 @@ fn compile_in_temporary_directory(
     std::fs::create_dir_all(&dir)
         .map_err(|e| CompileError::NotRun(format!("creating {}: {e}", dir.display())))?;
     let (input, output) = (dir.join(format!("shader.{extension}")), dir.join("shader.spv"));
-    let written = std::fs::write(&input, source);
-    let program = command.get_program().to_string_lossy().into_owned();
-    let result = written
+    let result = std::fs::write(&input, source)
         .map_err(|e| CompileError::NotRun(format!("writing {}: {e}", input.display())))
-        .and_then(|()| {
-            arguments(&mut command, &input, &output);
-            command
-                .output()
-                .map_err(|e| CompileError::NotRun(format!("cannot run {program}: {e}")))
-        });
-    let bytes = std::fs::read(&output);
+        .and_then(|()| compile(&input, &output));
     let _ = std::fs::remove_dir_all(&dir);
-    let run = result?;
-    if String::from_utf8_lossy(&run.stdout).contains(GLSLANG_MISSING) {
-        return Err(CompileError::Failed {
-            log: String::from_utf8_lossy(&run.stdout).into_owned(),
-            source_path: input.display().to_string(),
-        });
-    }
-    crate::spirv::tool_output(&program, &run, bytes, "", &input)
+    result
 }
