@@ -152,12 +152,14 @@ fn built() -> &'static (PathBuf, PathBuf) {
         .unwrap_or_else(|error| panic!("{error}"))
 }
 
-/// `cargo <arguments> --release` on the crates of [`TOGETHER`] in `workspace`.
+/// `cargo <arguments>` on the crates of [`TOGETHER`] in `workspace`, in the dev profile (the
+/// downstream workspace's, unoptimised and without debug information: the crates prove that
+/// their inclusion paths work, and their programs run in seconds unoptimised).
 fn cargo_together(workspace: &Path, arguments: &[&str]) -> Command {
     let mut command = Command::new(env!("CARGO"));
     command
         .args(arguments)
-        .args(["--release", "--quiet", "--manifest-path"])
+        .args(["--quiet", "--manifest-path"])
         .arg(workspace.join("Cargo.toml"))
         .arg("--target-dir")
         .arg(work_dir().join("target"));
@@ -190,7 +192,7 @@ fn stdout_of(mut command: Command, expected: &[&str]) -> String {
 fn run_together(name: &str, expected: &[&str]) {
     built();
     let program = work_dir()
-        .join("target/release")
+        .join("target/debug")
         .join(format!("downstream-{name}"));
     stdout_of(Command::new(program), expected);
 }
@@ -281,7 +283,7 @@ fn cpu_path_tracer_uses_the_mirror_alone() {
     let (_, workspace) = built();
     let mut command = Command::new(env!("CARGO"));
     command
-        .args(["run", "--release", "--quiet", "--manifest-path"])
+        .args(["run", "--quiet", "--manifest-path"])
         .arg(workspace.join("cpu-path-tracer/Cargo.toml"))
         .arg("--target-dir")
         .arg(work_dir().join("target"));
