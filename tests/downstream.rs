@@ -191,9 +191,7 @@ fn stdout_of(mut command: Command, expected: &[&str]) -> String {
 /// `downstream-` prefix); it must succeed and print every one of `expected`.
 fn run_together(name: &str, expected: &[&str]) {
     built();
-    let program = work_dir()
-        .join("target/debug")
-        .join(format!("downstream-{name}"));
+    let program = work_dir().join("target/debug").join(format!("downstream-{name}"));
     stdout_of(Command::new(program), expected);
 }
 
