@@ -40,6 +40,14 @@
 //! ratio of the raw medians is printed beside it.
 //! Without a directory the peer's line says "not run". No peer code is in this repository.
 //!
+//! The peers with our guards: the five functions of [`PEERS`] with a guarded adapter
+//! ([`Peer::guarded_adapter`]: the peer's same original, called with the library function's
+//! guards for degenerate input added around it, the clamps, scalings and selects the peer lacks)
+//! get one more kernel in the same rounds, compiled and timed as the peer's, on a line after the
+//! peer's ("peer + our guards"), less Slang's empty kernel too. Its verdict is ours against it,
+//! by the same rule: where the defined behaviour is what ours costs beyond the peer, ours is
+//! within 1.1 times the peer with that behaviour added.
+//!
 //! On lavapipe (a CPU implementation) the run is a smoke run: 2^10 invocations of 16 calls, no
 //! verdicts.
 //!
@@ -53,7 +61,7 @@ use ash::vk;
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::cli::{command_options, count_at_least, options_or_exit};
 use ray_footprint_lab::timing::function::{inputs, signatures, timing_kernel, Body, Callee, Signature};
-use ray_footprint_lab::timing::peers::{extract, Peer, PEERS};
+use ray_footprint_lab::timing::peers::{extract, AdapterKind, Peer, PEERS};
 use ray_footprint_lab::timing::{
     self, gpu_clocks, query_pool, read_queries, round_order, warm_up, write_timestamp, Spread, Timestamps,
 };
@@ -185,10 +193,13 @@ const LANGUAGES: [Line; 6] = [
         bounded_loops: false,
     },
 ];
-/// A row's kernels: each line's function kernel then its empty kernel, then the peer's.
-const KERNELS: usize = 2 * LANGUAGES.len() + 1;
+/// A row's kernels: each line's function kernel then its empty kernel, then the peer's, then the
+/// guarded peer's.
+const KERNELS: usize = 2 * LANGUAGES.len() + 2;
 /// The peer's kernel's index.
-const PEER: usize = KERNELS - 1;
+const PEER: usize = KERNELS - 2;
+/// The guarded peer's kernel's index (the peer's original with our guards added).
+const GUARDED_PEER: usize = KERNELS - 1;
 /// Slang's index in [`LANGUAGES`]: the peer's time is taken less Slang's empty kernel's.
 const SLANG: usize = 2;
 
@@ -274,8 +285,8 @@ struct Kernel {
     statistics: Statistics,
 }
 
-/// One function: its kernels (by [`kernel_index`], then [`PEER`]; or why there is none) and their
-/// buffers.
+/// One function: its kernels (by [`kernel_index`], then [`PEER`] and [`GUARDED_PEER`]; or why
+/// there is none) and their buffers.
 struct Row {
     module: Module,
     name: String,
@@ -415,8 +426,9 @@ impl<'g> Bench<'g> {
     }
 }
 
-/// The peers' directory's extraction for `peer`, or why its column is not run.
-fn peer_source(peers: Option<&PathBuf>, peer: &Peer) -> Result<String, String> {
+/// The peers' directory's extraction for `peer` followed by `adapter`, or why its column is not
+/// run.
+fn peer_source(peers: Option<&PathBuf>, peer: &Peer, adapter: &str) -> Result<String, String> {
     let dir = peers.ok_or_else(|| format!("not run: no peers' directory (--peers DIR or {PEERS_ENV})"))?;
     let path = peer.source.find(dir).ok_or_else(|| {
         format!(
@@ -427,11 +439,34 @@ fn peer_source(peers: Option<&PathBuf>, peer: &Peer) -> Result<String, String> {
     })?;
     let text = std::fs::read_to_string(&path).map_err(|e| format!("not run: {}: {e}", path.display()))?;
     let items = extract(&text, peer.items).map_err(|e| format!("error: {}: {e}", path.display()))?;
-    Ok(format!("{items}\n{}\n", peer.adapter))
+    Ok(format!("{items}\n{adapter}\n"))
+}
+
+/// The Slang kernel that times `peer`'s adapter of `kind` in the loop of `own` (the library
+/// function's callee), or why there is none.
+fn peer_kernel(
+    bench: &Bench<'_>,
+    module: Module,
+    own: Callee<'_>,
+    (peers, peer): (Option<&PathBuf>, Option<&Peer>),
+    kind: AdapterKind,
+) -> Source {
+    let peer = peer.ok_or_else(|| String::from("no peer"))?;
+    let adapter = peer
+        .adapter_of(kind)
+        .ok_or_else(|| String::from("no guarded adapter"))?;
+    let extra = peer_source(peers, peer, adapter)?;
+    let name = kind.name(own.name);
+    let callee = Callee {
+        name: &name,
+        extra: &extra,
+        ..own
+    };
+    bench.source(module, Line::of(Language::Slang), callee, Body::Call)
 }
 
 /// A selected function before its kernels are compiled: its sources, by [`kernel_index`] then
-/// [`PEER`], or why it has none.
+/// [`PEER`] and [`GUARDED_PEER`], or why it has none.
 struct Planned {
     module: Module,
     name: String,
@@ -463,18 +498,11 @@ fn plan(bench: &Bench<'_>, options: &Options) -> Vec<Planned> {
                         .flat_map(|&line| [(line, Body::Call), (line, Body::Empty)])
                         .map(|(line, body)| bench.source(module, line, own, body))
                         .collect();
-                    sources.push(match peer {
-                        None => Err(String::from("no peer")),
-                        Some(peer) => peer_source(options.peers.as_ref(), peer).and_then(|extra| {
-                            let adapter = format!("peer_{name}");
-                            let callee = Callee {
-                                name: &adapter,
-                                extra: &extra,
-                                ..own
-                            };
-                            bench.source(module, Line::of(Language::Slang), callee, Body::Call)
-                        }),
-                    });
+                    let peers = (options.peers.as_ref(), peer);
+                    sources.extend(
+                        [AdapterKind::Plain, AdapterKind::Guarded]
+                            .map(|kind| peer_kernel(bench, module, own, peers, kind)),
+                    );
                     sources
                 }
             };
@@ -558,16 +586,20 @@ fn instructions_cell(row: &Row, function: usize, empty: usize) -> String {
     }
 }
 
-/// The verdict on the goal against the peer (Slang against Slang), on each round's time less
-/// Slang's empty kernel's; beside it the ratio of the raw medians.
-fn peer_verdict(row: &Row, verdicts: bool) -> String {
+/// The verdict on the goal against the peer's kernel `peer_kernel` ([`PEER`] or [`GUARDED_PEER`];
+/// Slang against Slang), on each round's time less Slang's empty kernel's; beside it the ratio of
+/// the raw medians.
+fn peer_verdict(row: &Row, peer_kernel: usize, verdicts: bool) -> String {
     let slang = kernel_index(SLANG, Body::Call);
     let empty = kernel_index(SLANG, Body::Empty);
-    let (Ok(_), Ok(_)) = (&row.kernels[slang], &row.kernels[PEER]) else {
+    let (Ok(_), Ok(_)) = (&row.kernels[slang], &row.kernels[peer_kernel]) else {
         return String::new();
     };
-    let raw = Spread::of(&row.times[slang]).median / Spread::of(&row.times[PEER]).median;
-    let (Some(ours), Some(peer)) = (differences(row, slang, empty), differences(row, PEER, empty)) else {
+    let raw = Spread::of(&row.times[slang]).median / Spread::of(&row.times[peer_kernel]).median;
+    let (Some(ours), Some(peer)) = (
+        differences(row, slang, empty),
+        differences(row, peer_kernel, empty),
+    ) else {
         return format!("raw {raw:.2}x, no empty kernel: no verdict");
     };
     let (ours, peer) = (Spread::of(&ours), Spread::of(&peer));
@@ -606,24 +638,37 @@ fn print_line(row: &Row, label: &str, (function, empty): (usize, usize), verdict
     );
 }
 
+/// The peer's line and, where it has a guarded adapter, the guarded peer's with ours against it;
+/// each less Slang's empty kernel.
+fn print_peer_lines(row: &Row, peer: &Peer, verdicts: bool) {
+    let empty = kernel_index(SLANG, Body::Empty);
+    let label = format!("peer: {} (Slang)", peer.source.name());
+    print_line(row, &label, (PEER, empty), "");
+    if peer.guarded_adapter.is_some() {
+        let label = format!("peer + our guards: {} (Slang)", peer.source.name());
+        let verdict = peer_verdict(row, GUARDED_PEER, verdicts);
+        print_line(row, &label, (GUARDED_PEER, empty), &verdict);
+    }
+}
+
 fn print_rows(rows: &[Row], verdicts: bool) {
     println!(
         "| module | function | language | ns | empty kernel ns | function ns (less the empty kernel) | \
-         instructions (kernel - empty = function) | Slang vs peer (goal <= {PEER_GOAL}x) |"
+         instructions (kernel - empty = function) | Slang vs peer, on a guarded peer's line Slang vs it \
+         (goal <= {PEER_GOAL}x) |"
     );
     println!("| --- | --- | --- | ---: | ---: | ---: | ---: | --- |");
     for row in rows {
         for (index, line) in LANGUAGES.iter().enumerate() {
             let kernels = (kernel_index(index, Body::Call), kernel_index(index, Body::Empty));
             let verdict = if index == SLANG {
-                peer_verdict(row, verdicts)
+                peer_verdict(row, PEER, verdicts)
             } else {
                 String::new()
             };
             print_line(row, line.label(), kernels, &verdict);
             if let (SLANG, Some(peer)) = (index, row.peer) {
-                let label = format!("peer: {} (Slang)", peer.source.name());
-                print_line(row, &label, (PEER, kernel_index(SLANG, Body::Empty)), "");
+                print_peer_lines(row, peer, verdicts);
             }
         }
     }

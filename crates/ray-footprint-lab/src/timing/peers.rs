@@ -9,6 +9,13 @@
 //! face normal the library function computes inside), calls it, and returns the library
 //! function's result type, so both run in the same timing loop
 //! ([`super::function::timing_source`]).
+//!
+//! Five peers also have a *guarded* adapter ([`Peer::guarded_adapter`]): the same cut items,
+//! called with the library's guards for degenerate input added around them (clamps of the
+//! arguments before the call, arguments scaled so that no square overflows or underflows, a
+//! select after it), so that where the defined behaviour is what a function costs, the peer with
+//! that behaviour added shows it. Each says in comments which of the library's guards sit inside
+//! the peer's function, where no adapter can add them.
 
 use std::path::{Path, PathBuf};
 
@@ -84,10 +91,44 @@ pub struct Peer {
     pub items: &'static [&'static str],
     /// The adapter: `peer_<function>`, with the library function's parameters and result.
     pub adapter: &'static str,
+    /// The guarded adapter, where there is one: `guarded_peer_<function>`, with the library
+    /// function's parameters and result, calling the same items with the library function's
+    /// guards added around them.
+    pub guarded_adapter: Option<&'static str>,
+}
+
+/// Which of a peer's adapters a kernel calls.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AdapterKind {
+    /// [`Peer::adapter`]: the peer's original as it is.
+    Plain,
+    /// [`Peer::guarded_adapter`]: the peer's original with the library's guards added.
+    Guarded,
+}
+
+impl AdapterKind {
+    /// The adapter's name for the library function `function`.
+    pub fn name(self, function: &str) -> String {
+        match self {
+            AdapterKind::Plain => format!("peer_{function}"),
+            AdapterKind::Guarded => format!("guarded_peer_{function}"),
+        }
+    }
+}
+
+impl Peer {
+    /// The adapter of `kind`, or `None` where the peer has no such adapter.
+    pub fn adapter_of(&self, kind: AdapterKind) -> Option<&'static str> {
+        match kind {
+            AdapterKind::Plain => Some(self.adapter),
+            AdapterKind::Guarded => self.guarded_adapter,
+        }
+    }
 }
 
 /// What each peer's original is timed against. An adapter's name is `peer_` and the library
-/// function's.
+/// function's, a guarded adapter's `guarded_peer_` and the library function's
+/// ([`AdapterKind::name`]).
 pub const PEERS: &[Peer] = &[
     Peer {
         function: "rf_propagate",
@@ -97,6 +138,7 @@ pub const PEERS: &[Peer] = &[
     RayCone propagated = RayCone(cone.width, cone.spread_angle).propagateDistance(t).addToSpreadAngle(surface_spread_angle);
     return RfRayCone(propagated.getWidth(), propagated.getSpreadAngle());
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_curvature_spread_angle",
@@ -105,6 +147,7 @@ pub const PEERS: &[Peer] = &[
         adapter: "float peer_rf_curvature_spread_angle(float curvature, float width, float3 normal, float3 direction) {
     return computeSpreadAngleFromCurvatureIso(curvature, width, direction, normal);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_world_footprint",
@@ -114,6 +157,7 @@ pub const PEERS: &[Peer] = &[
     RayCone peer = { cone.width, cone.spread_angle };
     return rayConeWorldFootprint(peer, t, normal, -direction);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_texel_density",
@@ -122,6 +166,27 @@ pub const PEERS: &[Peer] = &[
         adapter: "float peer_rf_texel_density(float3 p0, float3 p1, float3 p2, float2 uv0, float2 uv1, float2 uv2) {
     return triangleTexelDensity(p0, p1, p2, uv0, uv1, uv2);
 }",
+        // Ours scales the cross product by its largest component before `length`; here the cross
+        // product is taken once more in the adapter for that scale (the peer takes it inside) and
+        // one edge passed divided by it, so the peer's |cross| is within 1 to sqrt(3), and the
+        // result scaled back by 1 / sqrt(scale). A world triangle whose cross product is below
+        // RF_MIN_SQUARED_MAGNITUDE in every component passes a unit triangle, so its area counts
+        // as RF_MIN_SQUARED_MAGNITUDE, as ours clamps it. Not addable from outside: the peer
+        // clamps the UV area to at least 1e-20 (ours takes its root as it is, 0 for a degenerate
+        // UV triangle).
+        guarded_adapter: Some(
+            "float guarded_peer_rf_texel_density(float3 p0, float3 p1, float3 p2, float2 uv0, float2 uv1, float2 uv2) {
+    float3 edge01 = p1 - p0;
+    float3 edge02 = p2 - p0;
+    float3 normal = cross(edge01, edge02);
+    float largest = max(max(abs(normal.x), abs(normal.y)), abs(normal.z));
+    float scale = max(largest, RF_MIN_SQUARED_MAGNITUDE);
+    bool flat = largest < RF_MIN_SQUARED_MAGNITUDE;
+    float3 scaled01 = flat ? float3(1.0, 0.0, 0.0) : edge01 / scale;
+    float3 scaled02 = flat ? float3(0.0, 1.0, 0.0) : edge02;
+    return triangleTexelDensity(float3(0.0), scaled01, scaled02, uv0, uv1, uv2) * rsqrt(scale);
+}",
+        ),
     },
     Peer {
         function: "rf_triangle_base_lod",
@@ -132,6 +197,32 @@ pub const PEERS: &[Peer] = &[
     float2 txcoords[3] = { uv0, uv1, uv2 };
     return computeRayConeTriangleLODValue(vertices, txcoords, float3x3(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0));
 }",
+        // The world edges as for rf_texel_density (one divided by the largest component of their
+        // cross product, a unit triangle where that is below RF_MIN_SQUARED_MAGNITUDE), half the
+        // scale's logarithm taken back out; the UV area computed in the adapter too, and a UV
+        // triangle of area RF_MIN_SQUARED_MAGNITUDE passed where it is smaller, so the peer's
+        // log2(Ta / Pa) is of a finite, nonzero quotient: ours clamps both areas to at least
+        // RF_MIN_SQUARED_MAGNITUDE. The peer's quotient stays (its single logarithm); with both
+        // areas kept in range it neither overflows nor underflows.
+        guarded_adapter: Some(
+            "float guarded_peer_rf_triangle_base_lod(float3 p0, float3 p1, float3 p2, float2 uv0, float2 uv1, float2 uv2) {
+    float3 edge01 = p1 - p0;
+    float3 edge02 = p2 - p0;
+    float3 normal = cross(edge01, edge02);
+    float largest = max(max(abs(normal.x), abs(normal.y)), abs(normal.z));
+    float scale = max(largest, RF_MIN_SQUARED_MAGNITUDE);
+    bool flat = largest < RF_MIN_SQUARED_MAGNITUDE;
+    float3 vertices[3] = { float3(0.0), flat ? float3(1.0, 0.0, 0.0) : edge01 / scale,
+        flat ? float3(0.0, 1.0, 0.0) : edge02 };
+    float2 uv_edge1 = uv1 - uv0;
+    float2 uv_edge2 = uv2 - uv0;
+    bool uv_flat = abs(uv_edge1.x * uv_edge2.y - uv_edge1.y * uv_edge2.x) < RF_MIN_SQUARED_MAGNITUDE;
+    float2 txcoords[3] = { float2(0.0), uv_flat ? float2(1.0e-18, 0.0) : uv_edge1,
+        uv_flat ? float2(0.0, 1.0e-18) : uv_edge2 };
+    return computeRayConeTriangleLODValue(vertices, txcoords, float3x3(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0))
+        - 0.5 * log2(scale);
+}",
+        ),
     },
     // Falcor's computeLOD leaves out the texture's size, which its texture sampler adds as
     // 0.5 log2(width height): the adapter adds it as that sampler does.
@@ -142,6 +233,20 @@ pub const PEERS: &[Peer] = &[
         adapter: "float peer_rf_texture_lod(float base_lod, float width, float2 texture_size, float3 normal, float3 direction) {
     return RayCone(width, 0.0).computeLOD(base_lod, direction, normal) + 0.5 * log2(texture_size.x * texture_size.y);
 }",
+        // |width| clamped to at least RF_MIN_MAGNITUDE and |n.d| to at least RF_MIN_COS before the
+        // call (the cosine taken in the adapter and handed to the peer as a direction along a unit
+        // normal, so the peer's dot is that cosine), the texture size to at least 1 and its two
+        // logarithms taken apart, as ours does. Not addable from outside: the peer's quotient
+        // |width| / |n.d| (ours takes the two logarithms apart), which overflows for widths past
+        // about 3e34.
+        guarded_adapter: Some(
+            "float guarded_peer_rf_texture_lod(float base_lod, float width, float2 texture_size, float3 normal, float3 direction) {
+    float cosine = max(abs(dot(normal, direction)), RF_MIN_COS);
+    float2 size = max(texture_size, 1.0);
+    return RayCone(max(abs(width), RF_MIN_MAGNITUDE), 0.0).computeLOD(base_lod, float3(cosine, 0.0, 0.0),
+        float3(1.0, 0.0, 0.0)) + 0.5 * (log2(size.x) + log2(size.y));
+}",
+        ),
     },
     Peer {
         function: "rf_refract_ray_cone",
@@ -162,6 +267,31 @@ pub const PEERS: &[Peer] = &[
         refracted_direction);
     return RfRefractedRayCone(RfRayCone(refracted.getWidth(), refracted.getSpreadAngle()), !transmitted);
 }",
+        // eta clamped to at least 0; the normal turned to face the ray and the normal spread's sign
+        // with it, the spread clamped to +-RF_MAX_NORMAL_SPREAD; the cone's spread clamped so
+        // that no boundary ray turns past RF_MAX_INCIDENCE_ANGLE (ours' rf_incidence_sin_cos and
+        // rf_refraction_half_spread, called in the adapter); on total internal reflection the
+        // reflected cone selected after the call (the peer leaves the cone as it was). Not
+        // addable from outside: the peer's divisions by the boundary rays' cosines (ours keeps
+        // each divisor at least RF_MIN_COS), its acos of a dot product that rounding can push
+        // past 1, and its branches, on total internal reflection for the central ray and each
+        // boundary ray.
+        guarded_adapter: Some(
+            "RfRefractedRayCone guarded_peer_rf_refract_ray_cone(RfRayCone cone, float3 normal, float3 direction,
+        float normal_spread_angle, float eta) {
+    float cosine = dot(normal, direction);
+    float3 facing_normal = cosine > 0.0 ? -normal : normal;
+    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    float half_spread = rf_refraction_half_spread(cone.spread_angle, rf_incidence_sin_cos(normal, direction, cosine));
+    RayCone refracted = RayCone(cone.width, 2.0 * half_spread);
+    float3 refracted_direction;
+    bool transmitted = refractRayCone(refracted, float3(0.0), direction, float3(0.0), facing_normal,
+        clamp(facing_spread, -RF_MAX_NORMAL_SPREAD, RF_MAX_NORMAL_SPREAD), max(eta, 0.0), refracted_direction);
+    RfRayCone leaving = transmitted ? RfRayCone(refracted.getWidth(), refracted.getSpreadAngle())
+        : RfRayCone(cone.width, cone.spread_angle + 2.0 * facing_spread);
+    return RfRefractedRayCone(leaving, !transmitted);
+}",
+        ),
     },
     Peer {
         function: "rf_pixel_directions",
@@ -174,6 +304,7 @@ pub const PEERS: &[Peer] = &[
     computeDifferentials(pixel, image_size, transpose(view_inv), transpose(proj_inv), right, below);
     return RfNeighbourDirections(right, below);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_barycentric_derivatives",
@@ -191,6 +322,7 @@ pub const PEERS: &[Peer] = &[
     computeBarycentricDifferentials(at_hit, direction, edge01, edge02, face_normal, dx, dy);
     return RfDerivatives2(dx, dy);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_texture_derivatives",
@@ -203,6 +335,7 @@ pub const PEERS: &[Peer] = &[
     interpolateDifferentials(barycentric.dx, barycentric.dy, values, dx, dy);
     return RfDerivatives2(dx, dy);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_normal_derivatives",
@@ -218,6 +351,7 @@ pub const PEERS: &[Peer] = &[
         barycentric.dx, barycentric.dy, normals, dx, dy);
     return RfDerivatives3(dx, dy);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_barycentric_deltas",
@@ -232,6 +366,7 @@ pub const PEERS: &[Peer] = &[
     return computeDerivative(peer_matrix, world_origin, object_origin, positions, direction_x, direction_y,
         hit_barycentrics);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_anisotropic_cone_gradients",
@@ -247,6 +382,7 @@ pub const PEERS: &[Peer] = &[
     computeAnisotropicEllipseAxes(p0, face_normal, direction, 0.5 * width, positions, txcoords, uv0, dx, dy);
     return RfDerivatives2(dx, dy);
 }",
+        guarded_adapter: None,
     },
     Peer {
         function: "rf_process_wireframe",
@@ -264,6 +400,28 @@ pub const PEERS: &[Peer] = &[
         settings.stipple_length, float(settings.stipple_repeats) };
     return processWireframe(peer, barycentrics, deltas);
 }",
+        // The thickness and the thickness variation clamped to [0, RF_MAX_LINE_THICKNESS] and the
+        // smoothing so that the ramp width (thickness times smoothing) stays within it, which
+        // keeps the peer's products finite; ours' screen-space switch (|deltas|, or ones); the
+        // stipple pattern, the peer's own `stipple` with ours' clamps of its arguments (repeats at
+        // least 1, length and edge position in [0, 1]) and a solid line for repeats <= 0,
+        // evaluated always and selected, the peer's branch around it switched off. Not addable
+        // from outside: ours' hard step where the ramp width is 0 (the peer's smoothstep then has
+        // equal edges, undefined), and the clamps of the edge position and of 1 - sin(e pi) in
+        // the thickness variation, both computed inside the peer's function.
+        guarded_adapter: Some(
+            "float guarded_peer_rf_process_wireframe(RfWireframeSettings settings, float3 barycentrics, float3 deltas) {
+    float thickness = clamp(settings.thickness, 0.0, RF_MAX_LINE_THICKNESS);
+    float smoothing = clamp(settings.smoothing, 0.0, RF_MAX_LINE_THICKNESS / max(thickness, RF_MIN_LINE_RAMP));
+    WireframeSettings peer = { thickness, clamp(settings.thickness_var, 0.0, RF_MAX_LINE_THICKNESS), smoothing, false,
+        settings.stipple_length, float(settings.stipple_repeats) };
+    float coverage = processWireframe(peer, barycentrics, settings.screen_space ? abs(deltas) : float3(1.0));
+    float dashes = stipple(float(max(settings.stipple_repeats, 1)), clamp(settings.stipple_length, 0.0, 1.0),
+        clamp(edgePosition(barycentrics), 0.0, 1.0));
+    float pattern = settings.stipple_repeats > 0 ? dashes : 1.0;
+    return coverage * (settings.stipple ? pattern : 1.0);
+}",
+        ),
     },
 ];
 
@@ -396,14 +554,38 @@ mod tests {
     }
 
     #[test]
-    fn every_peer_names_an_adapter_for_its_function() {
+    fn every_adapter_is_named_for_its_function_and_kind() {
         for peer in PEERS {
-            let name = format!(" peer_{}(", peer.function);
-            assert!(
-                peer.adapter.contains(&name),
-                "{}: the adapter is not {name}",
-                peer.function
-            );
+            for kind in [AdapterKind::Plain, AdapterKind::Guarded] {
+                let Some(adapter) = peer.adapter_of(kind) else {
+                    continue;
+                };
+                let name = format!(" {}(", kind.name(peer.function));
+                assert!(
+                    adapter.contains(&name),
+                    "{}: the {kind:?} adapter is not {name}",
+                    peer.function
+                );
+            }
         }
+    }
+
+    #[test]
+    fn the_five_functions_slower_than_their_peers_have_guarded_adapters() {
+        let guarded: Vec<&str> = PEERS
+            .iter()
+            .filter(|peer| peer.guarded_adapter.is_some())
+            .map(|peer| peer.function)
+            .collect();
+        assert_eq!(
+            guarded,
+            [
+                "rf_texel_density",
+                "rf_triangle_base_lod",
+                "rf_texture_lod",
+                "rf_refract_ray_cone",
+                "rf_process_wireframe"
+            ]
+        );
     }
 }
