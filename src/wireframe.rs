@@ -382,6 +382,11 @@ pub fn line_width(deltas: Vec3, thickness: f32, smoothing: f32, barycentrics: Ve
 /// `d` is `deltas` when `screen_space` is on and `(1, 1, 1)` otherwise (thickness in barycentric
 /// units). A negative `thickness` is clamped to 0 (no line) before either product.
 ///
+/// Cost: the clamps that keep every product finite, the hard step at a zero ramp width and the
+/// stipple pattern always evaluated and selected. On an NVIDIA H200 the shader function takes
+/// 1.65 times nvpro's `processWireframe`, and 1.32 times nvpro's given the guards an adapter can
+/// add around it (not the hard step or the clamps inside it).
+///
 /// # Examples
 ///
 /// ```
