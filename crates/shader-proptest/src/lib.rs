@@ -76,8 +76,8 @@ the compilers, the value descriptions, the tolerances and the layout reader.
 //! Features: `gpu` (default) is the Vulkan device (ash), the checks and proptest; `wgpu` adds WGSL
 //! checks through wgpu. Without `gpu` the crate is the compilers, the value descriptions and the
 //! layout reader only. The crate needs, at run time, a Vulkan loader, a device, the validation
-//! layer, and for GLSL `glslangValidator`, for Slang `slangc`, for HLSL the one of them that
-//! compiles it.
+//! layer, and for GLSL `glslangValidator`, for Slang `slangc` and the compiler library installed
+//! with it (loaded into the process: `compile_slang`), for HLSL the one of them that compiles it.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![deny(missing_docs)]
 
