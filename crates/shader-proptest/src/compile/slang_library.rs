@@ -229,8 +229,13 @@ pub(super) fn compile(arguments: &[OsString], input: &Path) -> Result<Vec<u8>, C
                 } else {
                     std::ffi::CStr::from_ptr(log).to_string_lossy().into_owned()
                 };
+                let log = if log.trim().is_empty() {
+                    format!("slangc failed with result {result:#x} and no diagnostic")
+                } else {
+                    log
+                };
                 Err(CompileError::Failed {
-                    log: format!("slangc failed (result {result:#x}):\n{log}"),
+                    log,
                     source_path: input.display().to_string(),
                 })
             } else {
