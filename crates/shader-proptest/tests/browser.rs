@@ -1,6 +1,6 @@
 //! The same checks in headless Chromium's WebGPU (feature `browser`): a right WGSL function
 //! passes, a wrong one fails and shrinks as on the Vulkan path, a kernel Tint rejects, a shader
-//! that needs 64-bit floats, a GLSL shader, a missing Chromium, one that never starts listening
+//! that needs 64-bit floats, a GLSL shader, a missing Chromium, one that never answers
 //! and a page that never answers each end with what happened.
 
 use shader_proptest::{
@@ -132,10 +132,10 @@ fn a_missing_chromium_is_named_with_what_to_install() {
     assert!(started.elapsed() < Duration::from_secs(1));
 }
 
-/// An executable that runs but never prints a DevTools address fails after the start timeout,
+/// An executable that runs but never answers on the DevTools pipe fails after the start timeout,
 /// however long the timeout for pages is.
 #[test]
-fn a_chromium_that_never_listens_times_out() {
+fn a_chromium_that_never_answers_times_out() {
     let silent = std::env::temp_dir().join(format!("shader-proptest-silent-{}", std::process::id()));
     std::fs::write(&silent, "#!/bin/sh\nexec sleep 30\n").expect("a script");
     std::fs::set_permissions(&silent, std::os::unix::fs::PermissionsExt::from_mode(0o755)).expect("mode");
@@ -152,7 +152,7 @@ fn a_chromium_that_never_listens_times_out() {
     match launched {
         Err(Error::Browser(message)) => {
             assert!(
-                message.contains("did not print its DevTools address within 1.0 s"),
+                message.contains("did not answer over its DevTools pipe within 1.0 s"),
                 "{message}"
             )
         }

@@ -1,19 +1,20 @@
 //! Headless Chromium with WebGPU, started as a child process and driven over the DevTools protocol
-//! through the `headless_chrome` crate: pages opened in it, scripts evaluated (promises awaited),
-//! screenshots taken, the start bounded by one timeout and each call after it by another.
+//! on its debugging pipe ([`super::devtools`]): pages opened in it, scripts evaluated (promises
+//! awaited), screenshots taken, the start bounded by one timeout and each call after it by another.
 
+use super::devtools::{decode_base64, DevTools};
 use crate::gpu::error::Error;
-use headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption;
-use headless_chrome::protocol::cdp::Runtime;
-use headless_chrome::{Browser, Tab};
+use serde_json::{json, Value};
 use std::ffi::OsString;
 use std::io::{BufRead, BufReader};
+use std::os::fd::{AsRawFd, RawFd};
+use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStderr, Command, Stdio};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{channel, RecvTimeoutError, Sender};
-use std::sync::Arc;
-use std::time::Duration;
+use std::sync::atomic::Ordering;
+use std::sync::mpsc::{Receiver, RecvTimeoutError};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
 /// Environment variable naming the Chromium (or Chrome) executable to start, instead of the first
 /// of `chromium`, `chromium-browser`, `google-chrome` on the `PATH`.
@@ -27,14 +28,14 @@ const INSTALL: &str = "install Chromium (Debian: `apt-get install chromium`, whi
 const EXECUTABLES: [&str; 3] = ["chromium", "chromium-browser", "google-chrome"];
 
 /// Flags for a headless Chromium that offers WebGPU (on a machine without a GPU, SwiftShader's
-/// Vulkan) and reaches nothing but loopback pages: no first-run, sync, component or background
-/// connections. `--no-sandbox`: the pages are the harness's own, and the sandbox cannot start as
-/// root.
+/// Vulkan), takes DevTools commands on its file descriptors 3 and 4, and reaches nothing but
+/// loopback pages: no first-run, sync, component or background connections. `--no-sandbox`: the
+/// pages are the harness's own, and the sandbox cannot start as root.
 const FLAGS: [&str; 9] = [
     "--headless",
     "--no-sandbox",
     "--enable-unsafe-webgpu",
-    "--remote-debugging-port=0",
+    "--remote-debugging-pipe",
     "--no-first-run",
     "--disable-background-networking",
     "--disable-component-update",
@@ -48,8 +49,8 @@ pub struct ChromiumOptions {
     /// The executable; `None`: [`CHROMIUM_ENV`], else the first of `chromium`,
     /// `chromium-browser`, `google-chrome` on the `PATH`.
     pub executable: Option<PathBuf>,
-    /// The longest wait for Chromium to start and print its DevTools address: a cold start on a busy
-    /// machine takes seconds. Past it [`Chromium::launch`] fails with [`Error::Browser`].
+    /// The longest wait for Chromium to start and answer its first DevTools command: a cold start
+    /// on a busy machine takes seconds. Past it [`Chromium::launch`] fails with [`Error::Browser`].
     pub start_timeout: Duration,
     /// The longest wait for anything a started Chromium is asked: a page's load, a script's
     /// answer (its promise), a screenshot. Past it the call fails with [`Error::Browser`].
@@ -79,13 +80,11 @@ impl Default for ChromiumOptions {
 /// # Ok::<(), shader_proptest::Error>(())
 /// ```
 pub struct Chromium {
-    browser: Browser,
+    devtools: Arc<DevTools>,
     process: Child,
     profile: PathBuf,
     version: String,
     timeout: Duration,
-    /// Set when dropped: ends the thread that keeps the connection busy.
-    closing: Arc<AtomicBool>,
 }
 
 impl Chromium {
@@ -102,41 +101,46 @@ impl Chromium {
             std::process::id(),
             unique()
         ));
-        let mut process = Command::new(&executable)
+        let pipe_failure = |error: std::io::Error| Error::Browser(format!("no pipe for Chromium: {error}"));
+        let (chromium_reads, commands) = std::io::pipe().map_err(pipe_failure)?;
+        let (messages, chromium_writes) = std::io::pipe().map_err(pipe_failure)?;
+        let (input, output) = (chromium_reads.as_raw_fd(), chromium_writes.as_raw_fd());
+        let mut command = Command::new(&executable);
+        command
             .args(FLAGS)
             .arg(format!("--user-data-dir={}", profile.display()))
             .arg("about:blank")
             .stdin(Stdio::null())
             .stdout(Stdio::null())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|error| {
-                Error::Setup(format!(
-                    "{} does not start ({error}): {INSTALL}",
-                    executable.display()
-                ))
-            })?;
-        let stderr = process.stderr.take().expect("stderr is piped");
-        let connected = devtools_address(stderr, options.start_timeout)
-            .map_err(|problem| Error::Browser(format!("{}: {problem}", executable.display())))
-            .and_then(|address| connect(address, options.timeout));
-        let (browser, version) = match connected {
-            Ok(connected) => connected,
-            Err(error) => {
+            .stderr(Stdio::piped());
+        // SAFETY: the closure runs in the child between fork and exec and calls only fcntl, dup2
+        // and close, which are async-signal-safe; it allocates nothing.
+        unsafe {
+            command.pre_exec(move || debugging_pipe_descriptors(input, output));
+        }
+        let mut process = command.spawn().map_err(|error| {
+            Error::Setup(format!(
+                "{} does not start ({error}): {INSTALL}",
+                executable.display()
+            ))
+        })?;
+        // Chromium holds its own ends now; closing ours lets the pipe close when it exits.
+        drop((chromium_reads, chromium_writes));
+        let last_lines = read_stderr(process.stderr.take().expect("stderr is piped"));
+        let devtools = Arc::new(DevTools::new(commands, messages));
+        match browser_version(&devtools, options.start_timeout, &last_lines) {
+            Ok(version) => Ok(Chromium {
+                devtools,
+                process,
+                profile,
+                version,
+                timeout: options.timeout,
+            }),
+            Err(problem) => {
                 end(&mut process, &profile);
-                return Err(error);
+                Err(Error::Browser(format!("{}: {problem}", executable.display())))
             }
-        };
-        let closing = Arc::new(AtomicBool::new(false));
-        keep_busy(&browser, options.timeout, &closing);
-        Ok(Chromium {
-            browser,
-            process,
-            profile,
-            version,
-            timeout: options.timeout,
-            closing,
-        })
+        }
     }
 
     /// The browser and its version, as Chromium names them: `Chromium 156.0.8078.108` (a
@@ -147,16 +151,39 @@ impl Chromium {
 
     /// Opens `url` in a new tab and waits for it to load.
     pub fn open(&self, url: &str) -> Result<BrowserPage, Error> {
-        let tab = self
-            .browser
-            .new_tab()
-            .map_err(|error| devtools_failure("opening a tab", error))?;
-        tab.set_default_timeout(self.timeout);
-        tab.navigate_to(url)
-            .and_then(|tab| tab.wait_until_navigated())
-            .map_err(|error| devtools_failure(&format!("loading {url}"), error))?;
+        let call = |session: Option<&str>, method: &str, params: Value| {
+            self.devtools
+                .call(session, method, params, self.timeout)
+                .map_err(|error| devtools_failure(&format!("loading {url}"), error))
+        };
+        let target = call(None, "Target.createTarget", json!({ "url": "about:blank" }))?;
+        let attached = call(
+            None,
+            "Target.attachToTarget",
+            json!({ "targetId": target["targetId"], "flatten": true }),
+        )?;
+        let session = attached["sessionId"]
+            .as_str()
+            .ok_or_else(|| devtools_failure(&format!("loading {url}"), "no session for the new tab"))?
+            .to_string();
+        let events = self.devtools.events(&session);
+        call(Some(&session), "Page.enable", json!({}))?;
+        call(
+            Some(&session),
+            "Page.setLifecycleEventsEnabled",
+            json!({ "enabled": true }),
+        )?;
+        let started = Instant::now();
+        let navigated = call(Some(&session), "Page.navigate", json!({ "url": url }))?;
+        if let Some(problem) = navigated["errorText"].as_str() {
+            return Err(devtools_failure(&format!("loading {url}"), problem));
+        }
+        let loader = navigated["loaderId"].clone();
+        wait_for_load(&events, &loader, self.timeout.saturating_sub(started.elapsed()))
+            .map_err(|problem| devtools_failure(&format!("loading {url}"), problem))?;
         Ok(BrowserPage {
-            tab,
+            devtools: Arc::clone(&self.devtools),
+            session,
             timeout: self.timeout,
         })
     }
@@ -164,14 +191,14 @@ impl Chromium {
 
 impl Drop for Chromium {
     fn drop(&mut self) {
-        self.closing.store(true, Ordering::Relaxed);
         end(&mut self.process, &self.profile);
     }
 }
 
 /// A page open in [`Chromium`].
 pub struct BrowserPage {
-    tab: Arc<Tab>,
+    devtools: Arc<DevTools>,
+    session: String,
     timeout: Duration,
 }
 
@@ -179,44 +206,38 @@ impl BrowserPage {
     /// The value of the script `expression` (awaited when it is a promise), as JSON. A script
     /// that throws or rejects is [`Error::Browser`] with the page's message; so is one that has
     /// not answered within the timeout.
-    pub fn evaluate(&self, expression: &str) -> Result<serde_json::Value, Error> {
-        let answer = self
-            .tab
-            .call_method(Runtime::Evaluate {
-                expression: expression.to_string(),
-                object_group: None,
-                include_command_line_api: None,
-                silent: None,
-                context_id: None,
-                return_by_value: Some(true),
-                generate_preview: None,
-                user_gesture: None,
-                await_promise: Some(true),
-                throw_on_side_effect: None,
-                timeout: None,
-                disable_breaks: None,
-                repl_mode: None,
-                allow_unsafe_eval_blocked_by_csp: None,
-                unique_context_id: None,
-                serialization_options: None,
-            })
-            .map_err(|error| self.unanswered(expression, error))?;
-        if let Some(details) = answer.exception_details {
-            let thrown = details.exception.and_then(|exception| exception.description);
+    pub fn evaluate(&self, expression: &str) -> Result<Value, Error> {
+        let params = json!({ "expression": expression, "returnByValue": true, "awaitPromise": true });
+        let answer = self.call("Runtime.evaluate", params, expression)?;
+        if let Some(details) = answer.get("exceptionDetails") {
+            let thrown = details["exception"]["description"]
+                .as_str()
+                .or(details["text"].as_str())
+                .unwrap_or("an exception without a description");
             return Err(Error::Browser(format!(
-                "the page's `{}` threw: {}",
-                short(expression),
-                thrown.unwrap_or(details.text)
+                "the page's `{}` threw: {thrown}",
+                short(expression)
             )));
         }
-        Ok(answer.result.value.unwrap_or(serde_json::Value::Null))
+        Ok(answer["result"]["value"].clone())
     }
 
     /// A PNG of the page's viewport.
     pub fn screenshot(&self) -> Result<Vec<u8>, Error> {
-        self.tab
-            .capture_screenshot(CaptureScreenshotFormatOption::Png, None, None, true)
-            .map_err(|error| self.unanswered("a screenshot", error))
+        let answer = self.call(
+            "Page.captureScreenshot",
+            json!({ "format": "png" }),
+            "a screenshot",
+        )?;
+        decode_base64(answer["data"].as_str().unwrap_or_default())
+            .map_err(|problem| self.unanswered("a screenshot", problem))
+    }
+
+    /// The result of `method` with `params` on this page; `what` names it in an error.
+    fn call(&self, method: &str, params: Value, what: &str) -> Result<Value, Error> {
+        self.devtools
+            .call(Some(&self.session), method, params, self.timeout)
+            .map_err(|problem| self.unanswered(what, problem))
     }
 
     /// The error of a call that failed or was not answered in time.
@@ -288,76 +309,98 @@ fn end(process: &mut Child, profile: &Path) {
     let _ = std::fs::remove_dir_all(profile);
 }
 
-/// The DevTools address Chromium prints on `stderr` when it listens, within `timeout`; its last
-/// lines where it exits first. A thread reads `stderr` to its end, so that Chromium never blocks
-/// on a full pipe.
-fn devtools_address(stderr: ChildStderr, timeout: Duration) -> Result<String, String> {
-    let (sender, receiver) = channel();
-    std::thread::spawn(move || read_stderr(stderr, &sender));
-    match receiver.recv_timeout(timeout) {
-        Ok(Ok(address)) => Ok(address),
-        Ok(Err(last_lines)) => Err(format!("exited before listening; it said:\n{last_lines}")),
-        Err(RecvTimeoutError::Timeout) => Err(format!(
-            "did not print its DevTools address within {:.1} s",
-            timeout.as_secs_f64()
-        )),
-        Err(RecvTimeoutError::Disconnected) => Err("its output ended without an address".into()),
-    }
-}
-
-/// Reads Chromium's `stderr` to its end; sends the DevTools address when it appears, or the last
-/// lines when the output ends first.
-fn read_stderr(stderr: ChildStderr, sender: &Sender<Result<String, String>>) {
-    const PREFIX: &str = "DevTools listening on ";
-    let mut last_lines: Vec<String> = Vec::new();
-    let mut sent = false;
-    for line in BufReader::new(stderr).lines() {
-        let Ok(line) = line else { break };
-        if !sent {
-            if let Some(address) = line.strip_prefix(PREFIX) {
-                // The receiver is gone only where the start timed out.
-                let _ = sender.send(Ok(address.trim().to_string()));
-                sent = true;
-            } else {
-                last_lines.push(line);
-                let excess = last_lines.len().saturating_sub(8);
-                last_lines.drain(..excess);
-            }
+/// In the child, before Chromium starts: the pipe ends `input` and `output` put where
+/// `--remote-debugging-pipe` looks for them, on descriptors 3 (commands) and 4 (answers and
+/// events). Each is copied above 4 first, so that neither `dup2` replaces the other's source; the
+/// copies are closed after.
+fn debugging_pipe_descriptors(input: RawFd, output: RawFd) -> std::io::Result<()> {
+    let checked = |result: libc::c_int| {
+        if result < 0 {
+            Err(std::io::Error::last_os_error())
+        } else {
+            Ok(result)
         }
+    };
+    // SAFETY: fcntl, dup2 and close on descriptors this process owns; none allocates.
+    unsafe {
+        let input_copy = checked(libc::fcntl(input, libc::F_DUPFD, 5))?;
+        let output_copy = checked(libc::fcntl(output, libc::F_DUPFD, 5))?;
+        checked(libc::dup2(input_copy, 3))?;
+        checked(libc::dup2(output_copy, 4))?;
+        checked(libc::close(input_copy))?;
+        checked(libc::close(output_copy))?;
     }
-    if !sent {
-        let _ = sender.send(Err(last_lines.join("\n")));
-    }
+    Ok(())
 }
 
-/// A connection to the Chromium listening at `address`, and its version.
-fn connect(address: String, timeout: Duration) -> Result<(Browser, String), Error> {
-    let browser = Browser::connect_with_timeout(address, timeout)
-        .map_err(|error| devtools_failure("connecting", error))?;
-    let version = browser
-        .get_version()
-        .map_err(|error| devtools_failure("telling its version", error))?;
-    let number = version
-        .product
-        .rsplit('/')
-        .next()
-        .unwrap_or(&version.product)
-        .to_string();
-    Ok((browser, format!("Chromium {number}")))
-}
-
-/// Asks `browser` its version every third of `timeout` until `closing`: the connection closes
-/// after `timeout` without a message from Chromium, and a page at work sends none.
-fn keep_busy(browser: &Browser, timeout: Duration, closing: &Arc<AtomicBool>) {
-    let (browser, closing) = (browser.clone(), Arc::clone(closing));
+/// Reads Chromium's `stderr` to its end on a thread of its own, so that Chromium never blocks on
+/// a full pipe, keeping its last lines for the error of a start that fails.
+fn read_stderr(stderr: ChildStderr) -> Arc<Mutex<Vec<String>>> {
+    let last_lines = Arc::new(Mutex::new(Vec::new()));
+    let kept = Arc::clone(&last_lines);
     std::thread::spawn(move || {
-        while !closing.load(Ordering::Relaxed) {
-            std::thread::sleep(timeout / 3);
-            if closing.load(Ordering::Relaxed) || browser.get_version().is_err() {
-                break;
-            }
+        for line in BufReader::new(stderr).lines() {
+            let Ok(line) = line else { break };
+            let mut lines = kept.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+            lines.push(line);
+            let excess = lines.len().saturating_sub(8);
+            lines.drain(..excess);
         }
     });
+    last_lines
+}
+
+/// The browser's version as `Chromium <number>`, its first answer, within `timeout`; where it
+/// exits or never answers, why, with the last lines it printed.
+fn browser_version(
+    devtools: &DevTools,
+    timeout: Duration,
+    last_lines: &Mutex<Vec<String>>,
+) -> Result<String, String> {
+    match devtools.call(None, "Browser.getVersion", json!({}), timeout) {
+        Ok(version) => {
+            let product = version["product"].as_str().unwrap_or_default();
+            Ok(format!(
+                "Chromium {}",
+                product.rsplit('/').next().unwrap_or(product)
+            ))
+        }
+        Err(problem) => {
+            // Its last words may still be on their way when the pipe closes.
+            std::thread::sleep(Duration::from_millis(200));
+            let said = last_lines
+                .lock()
+                .unwrap_or_else(|poisoned| poisoned.into_inner())
+                .join("\n");
+            Err(format!(
+                "did not answer over its DevTools pipe within {:.1} s ({problem}); it said:\n{said}",
+                timeout.as_secs_f64()
+            ))
+        }
+    }
+}
+
+/// Waits at most `timeout` for the page's `load` of the navigation `loader` among `events`.
+fn wait_for_load(events: &Receiver<Value>, loader: &Value, timeout: Duration) -> Result<(), String> {
+    let deadline = Instant::now() + timeout;
+    loop {
+        let left = deadline.saturating_duration_since(Instant::now());
+        match events.recv_timeout(left) {
+            Ok(event) => {
+                let params = &event["params"];
+                if event["method"] == "Page.lifecycleEvent"
+                    && params["name"] == "load"
+                    && &params["loaderId"] == loader
+                {
+                    return Ok(());
+                }
+            }
+            Err(RecvTimeoutError::Timeout) => {
+                return Err(format!("no load within {:.1} s", timeout.as_secs_f64()))
+            }
+            Err(RecvTimeoutError::Disconnected) => return Err("Chromium closed its DevTools pipe".into()),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -3,18 +3,19 @@
 //! Vulkan on a machine without a GPU).
 //!
 //! [`BrowserDevice`] serves a runner page on a loopback HTTP server, starts Chromium
-//! ([`Chromium`], driven over the DevTools protocol through the `headless_chrome` crate) and opens
+//! ([`Chromium`], driven over the DevTools protocol on its debugging pipe, `devtools.rs`) and opens
 //! the page, which asks for an adapter and a device. From then on the page takes jobs from the
 //! server and posts their answers there, as bytes: a kernel's WGSL to compile (Tint), a batch's
 //! input words to run, its output words back; no number is ever written as text, and no batch
-//! goes through the DevTools protocol, whose every call costs about 0.1 s with `headless_chrome`
-//! (its reader polls the socket every 100 ms). A check compares layouts and signatures and
-//! compiles its kernel with naga as on the Vulkan path before the page compiles it again.
+//! goes through the DevTools protocol, which only opens the page. A check compares layouts and
+//! signatures and compiles its kernel with naga as on the Vulkan path before the page compiles it
+//! again.
 //!
-//! `headless_chrome` rather than `chromiumoxide`: its API is synchronous, as the harness is (no
-//! async runtime to carry), and it brings fewer crates; it is used for what it does once per page
-//! (connect, open, evaluate, take a screenshot), and Chromium is started here, so that its start
-//! has one bounded wait and a clear error.
+//! The protocol is spoken here, over the pipe Chromium offers (`--remote-debugging-pipe`), with
+//! `serde_json` and nothing else: the harness needs a few of its commands (the version, a new
+//! target, attaching to it, navigating, evaluating a script, a screenshot), synchronously as the
+//! harness runs, and a client crate with the whole protocol's types took longer to build than
+//! the rest of the feature.
 //!
 //! Tint's warnings and errors (`getCompilationInfo`) and a pipeline WebGPU refuses fail the
 //! check's preparation ([`Error::Compile`]); a WebGPU error during a batch (error scopes around
@@ -24,7 +25,11 @@
 //! [`ChromiumOptions::timeout`] (30 s each unless set): a page that does not answer is
 //! [`Error::Browser`], never a hang.
 
+#[cfg(not(unix))]
+compile_error!("the `browser` feature drives Chromium over its debugging pipe, on Unix only");
+
 mod chromium;
+mod devtools;
 mod server;
 
 pub use chromium::{BrowserPage, Chromium, ChromiumOptions, CHROMIUM_ENV};
