@@ -327,13 +327,14 @@ impl<A: Args, R: Value> Symmetry<A, R> {
     /// device may flush to zero).
     pub fn exact(&self, args: &A, change: &Change) -> bool {
         let transformed = self.transform(args, change);
+        let (before, after) = (floats(args), floats(&transformed));
         let offsets = change.offset.to_array().map(f64::from);
         let in_range = |x: f32| x == 0.0 || (RANGE.0..=RANGE.1).contains(&x.abs());
-        let changed_exactly = floats(args)
+        let changed_exactly = before
             .iter()
-            .zip(floats(&transformed))
-            .zip(self.position_axes(args))
-            .all(|((&before, after), axis)| {
+            .zip(&after)
+            .zip(self.position_axes(args, &before))
+            .all(|((&before, &after), axis)| {
                 let moved = f64::from(after) - f64::from(before);
                 let valid = after.is_finite() && in_range(after);
                 match axis {
@@ -341,15 +342,15 @@ impl<A: Args, R: Value> Symmetry<A, R> {
                     None => before.to_bits() == after.to_bits() || valid,
                 }
             });
-        changed_exactly && !has_subnormal(args) && !has_subnormal(&transformed)
+        let normal = |values: &[f32]| !values.iter().any(|x| x.is_subnormal());
+        changed_exactly && normal(&before) && normal(&after)
     }
 
-    /// For each float of `args`, the axis whose offset a translation adds to it (`None` for a
-    /// float it leaves, and for every float of another kind of symmetry): a far probe offset,
-    /// `(1, 2, 4) * 1e30`, moves a position of axis `i` by about `2^i * 1e30` (a position too large
-    /// for the grid would not move).
-    fn position_axes(&self, args: &A) -> Vec<Option<usize>> {
-        let before = floats(args);
+    /// For each float of `args` (`before`, its floats), the axis whose offset a translation adds
+    /// to it (`None` for a float it leaves, and for every float of another kind of symmetry): a far
+    /// probe offset, `(1, 2, 4) * 1e30`, moves a position of axis `i` by about `2^i * 1e30` (a
+    /// position too large for the grid would not move).
+    fn position_axes(&self, args: &A, before: &[f32]) -> Vec<Option<usize>> {
         if self.kind != Kind::Translation {
             return vec![None; before.len()];
         }
@@ -626,11 +627,6 @@ fn floats<A: Args>(args: &A) -> Vec<f32> {
         .filter(|&(_, is_float)| is_float)
         .map(|(&word, _)| f32::from_bits(word))
         .collect()
-}
-
-/// Whether any float of `args` is subnormal.
-fn has_subnormal<A: Args>(args: &A) -> bool {
-    floats(args).iter().any(|x| x.is_subnormal())
 }
 
 /// The components of a result, in the harness's order.
