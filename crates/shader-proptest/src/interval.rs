@@ -305,15 +305,10 @@ impl Interval {
     pub fn div_away(self, den: Interval, m: f64) -> Interval {
         let p = coarser(self.p, den.p);
         // The divisor's possible values, as one or two intervals that exclude (-m, m).
-        let mut pieces = Vec::with_capacity(2);
-        if den.hi >= 0.0 {
-            pieces.push((den.lo.max(0.0).max(m), den.hi.max(m)));
-        }
-        if den.lo < 0.0 {
-            pieces.push((den.lo.min(-m), den.hi.min(0.0).min(-m)));
-        }
+        let positive = (den.hi >= 0.0).then(|| (den.lo.max(0.0).max(m), den.hi.max(m)));
+        let negative = (den.lo < 0.0).then(|| (den.lo.min(-m), den.hi.min(0.0).min(-m)));
         let mut result: Option<Interval> = None;
-        for (lo, hi) in pieces {
+        for (lo, hi) in positive.into_iter().chain(negative) {
             if lo <= 0.0 && hi >= 0.0 {
                 return Interval {
                     lo: f64::NEG_INFINITY,
@@ -462,29 +457,30 @@ impl Div for Interval {
 /// products, widened by `2n - 1` roundings of the sum of the term magnitudes.
 pub fn sum_of_products(terms: &[(Interval, Interval)]) -> Interval {
     let p = terms.iter().fold(F64, |p, (a, b)| coarser(p, coarser(a.p, b.p)));
-    let exact: Vec<Interval> = terms
-        .iter()
-        .map(|&(a, b)| {
-            Interval::hull_of(
-                [
-                    product(a.lo, b.lo),
-                    product(a.lo, b.hi),
-                    product(a.hi, b.lo),
-                    product(a.hi, b.hi),
-                ],
-                p,
-            )
-        })
-        .collect();
-    let sum = exact.iter().fold(Interval::point(0.0, p), |s, t| Interval {
-        lo: s.lo + t.lo,
-        hi: s.hi + t.hi,
-        p,
-    });
-    if exact.iter().all(|term| term.is_exact_zero()) {
+    let exact = |&(a, b): &(Interval, Interval)| {
+        Interval::hull_of(
+            [
+                product(a.lo, b.lo),
+                product(a.lo, b.hi),
+                product(a.hi, b.lo),
+                product(a.hi, b.hi),
+            ],
+            p,
+        )
+    };
+    let (mut sum, mut magnitude, mut all_zero) = (Interval::point(0.0, p), 0.0, true);
+    for term in terms.iter().map(exact) {
+        sum = Interval {
+            lo: sum.lo + term.lo,
+            hi: sum.hi + term.hi,
+            p,
+        };
+        magnitude += term.magnitude();
+        all_zero &= term.is_exact_zero();
+    }
+    if all_zero {
         return sum;
     }
-    let magnitude: f64 = exact.iter().map(|t| t.magnitude()).sum();
     let roundings = (2 * terms.len() - 1) as f64;
     let w = roundings * 0.5 * p.ulp * magnitude + roundings * p.floor;
     // Any partial sum, in any order, is at most the sum of the term magnitudes.
@@ -546,7 +542,7 @@ impl<const N: usize> IntervalVec<N> {
 
     /// Order-independent dot product.
     pub fn dot(self, o: IntervalVec<N>) -> Interval {
-        let terms: Vec<(Interval, Interval)> = (0..N).map(|i| (self.0[i], o.0[i])).collect();
+        let terms: [(Interval, Interval); N] = std::array::from_fn(|i| (self.0[i], o.0[i]));
         sum_of_products(&terms)
     }
 

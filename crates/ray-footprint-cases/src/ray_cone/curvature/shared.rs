@@ -40,21 +40,40 @@ pub(crate) fn shape_normal_equations(
     n: [Interval3; 3],
 ) -> ([Interval; 3], Interval3, Interval) {
     let (u, v) = shape_frame(p);
-    let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
+    let (a, b, extent) = shape_edge_components(p, u, v);
     let turns = [n[1] - n[0], n[2] - n[1], n[0] - n[2]];
-    let along = |vectors: [Interval3; 3], axis: Interval3| IntervalVec(vectors.map(|x| x.dot(axis)));
+    let (du, dv) = (along(turns, u), along(turns, v));
+    let scale = shape_scale(a, b);
+    let r = IntervalVec([a.dot(du), b.dot(du) + a.dot(dv), b.dot(dv)]) / scale;
+    (shape_squares(a, b, scale), r, extent)
+}
+
+/// The components of `vectors` along `axis`.
+fn along(vectors: [Interval3; 3], axis: Interval3) -> Interval3 {
+    IntervalVec(vectors.map(|x| x.dot(axis)))
+}
+
+/// The edges' components along the frame `(u, v)` divided by the largest of them, and that
+/// largest component (at least `MIN_MAGNITUDE`).
+fn shape_edge_components(p: [Interval3; 3], u: Interval3, v: Interval3) -> (Interval3, Interval3, Interval) {
+    let edges = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
     let (along_u, along_v) = (along(edges, u), along(edges, v));
     let extent = along_u
         .0
         .iter()
         .chain(&along_v.0)
         .fold(Interval::exact(MIN_MAGNITUDE), |largest, x| largest.max(x.abs()));
-    let (a, b) = (along_u / extent, along_v / extent);
-    let (du, dv) = (along(turns, u), along(turns, v));
-    let scale = (a.dot(a) + b.dot(b)).max_c(f64::from(MIN_MAGNITUDE));
-    let squares = [a.dot(a) / scale, b.dot(b) / scale, a.dot(b) / scale];
-    let r = IntervalVec([a.dot(du), b.dot(du) + a.dot(dv), b.dot(dv)]) / scale;
-    (squares, r, extent)
+    (along_u / extent, along_v / extent, extent)
+}
+
+/// `A + B` of the scaled edge components `a` and `b`, at least `MIN_MAGNITUDE`.
+fn shape_scale(a: Interval3, b: Interval3) -> Interval {
+    (a.dot(a) + b.dot(b)).max_c(f64::from(MIN_MAGNITUDE))
+}
+
+/// `(A, B, C)` of the scaled edge components, divided by `scale`.
+fn shape_squares(a: Interval3, b: Interval3, scale: Interval) -> [Interval; 3] {
+    [a.dot(a) / scale, b.dot(b) / scale, a.dot(b) / scale]
 }
 
 /// The determinant `AB - C²` of `triangle_shape_operator`'s normal equations, before its clamp.
@@ -68,8 +87,9 @@ pub(crate) fn shape_determinant([aa, bb, ab]: [Interval; 3]) -> Interval {
 /// above `MIN_MAGNITUDE`, where the clamp would begin.
 pub(crate) fn shape_well_conditioned(p: [Vec3; 3]) -> bool {
     let p = p.map(interval3);
-    let ([aa, bb, ab], _, extent) = shape_normal_equations(p, [interval3(Vec3::ZERO); 3]);
-    let determinant = shape_determinant([aa, bb, ab]);
+    let (u, v) = shape_frame(p);
+    let (a, b, extent) = shape_edge_components(p, u, v);
+    let determinant = shape_determinant(shape_squares(a, b, shape_scale(a, b)));
     determinant.lo > 0.0
         && determinant.relative_width() <= WELL_CONDITIONED
         && extent.lo > f64::from(MIN_MAGNITUDE)
