@@ -401,10 +401,28 @@ fn print_goals(rows: &[Row], run: &Run) {
 }
 
 /// The path tracers' goal, where both were timed: `path_cone`'s frame at least [`PATH_GOAL`] faster
-/// than `path_mip0`'s, met where the whole spread of the time saved is above it.
+/// than `path_mip0`'s, met where the whole spread of the time saved is above it; and every other
+/// path mode's frame against `path_mip0`'s.
 fn print_path_goal(rows: &[Row]) {
     let time = |mode: Mode| rows.iter().find(|row| row.mode == mode).map(|row| row.time);
-    let (Some(mip0), Some(cone)) = (time(Mode::PathMip0), time(Mode::PathCone)) else {
+    let Some(mip0) = time(Mode::PathMip0) else {
+        return;
+    };
+    for row in rows
+        .iter()
+        .filter(|row| row.mode.traces_paths() && row.mode != Mode::PathMip0)
+    {
+        let added = row.time.minus(&mip0);
+        println!(
+            "{} against path_mip0: {:+.1}% ({:+.3} ms, {:+.3} to {:+.3})",
+            row.mode,
+            100.0 * added.median / mip0.median,
+            added.median,
+            added.min,
+            added.max
+        );
+    }
+    let Some(cone) = time(Mode::PathCone) else {
         return;
     };
     let added = cone.minus(&mip0);

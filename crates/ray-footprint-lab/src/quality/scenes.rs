@@ -317,7 +317,7 @@ pub fn not_a_texture_method(mode: Mode) -> Option<&'static str> {
     match mode {
         Mode::MipLevels => Some("shows the mip levels in a texture of its own"),
         Mode::Wireframe => Some("draws lines over the texture: measured on the torus"),
-        Mode::PathMip0 | Mode::PathCone => Some(
+        _ if mode.traces_paths() => Some(
             "path traces another image (diffuse bounces, one random path a sample): measured against \
              per-vertex truth by the example path_footprint",
         ),

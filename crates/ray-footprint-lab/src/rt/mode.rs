@@ -9,9 +9,9 @@ use std::fmt;
 /// ([`crate::rt::abi::RtPixelRecord`]); the mode decides how the texture is sampled, whether a
 /// reflection off a mirror widens its cone by the surface curvature and roughness, whether glass
 /// refracts the cone (and its second section), whether a reflected or refracted ray carries a ray
-/// differential, and whether the wireframe is drawn. Every mode but the two path tracers reflects
-/// and refracts the same rays; `PathMip0` and `PathCone` scatter from every surface, and trace the
-/// same paths as each other. The ray-differential modes carry the differential through mirrors and glass (Igehy's
+/// differential, and whether the wireframe is drawn. Every mode but the path tracers reflects
+/// and refracts the same rays; the path tracers (`PathMip0` to `PathOptix`) scatter from every
+/// surface, and trace the same paths as each other. The ray-differential modes carry the differential through mirrors and glass (Igehy's
 /// reflection and refraction); the re-intersection of `BaryGradients` needs a primary hit: what
 /// the mirror reflects is sampled at the ray-cone LOD in it. The cone modes other than `ConeRefraction` and `ConeSections` carry the
 /// cone through glass as if the glass were not there.
@@ -83,11 +83,29 @@ pub enum Mode {
     /// arriving cone, the cone leaving every vertex `rf_scatter_ray_cone`'s for the lobe drawn
     /// (the hit triangle's isotropic curvature), glass refracting it as `ConeRefraction`.
     PathCone = 15,
+    /// The path tracer of `PathMip0` at the ray-cone LOD, every vertex a curved mirror whatever
+    /// the lobe drawn: the cone leaves with the curvature's spread (JCGT 2021) and no scattering
+    /// term; glass carries the cone on as if it were not there.
+    PathCurvature = 16,
+    /// `PathCurvature` plus twice `rf_roughness_spread_angle` of the lobe's roughness at every
+    /// scattering vertex (JCGT 2021 section 3, Falcor's `roughnessToSpread`), a Lambertian surface
+    /// read as roughness 1.
+    PathRoughness = 17,
+    /// The path tracer at the ray-cone LOD with RTXPT's rule: no curvature term, and at every
+    /// scattering vertex that is not a delta lobe (GGX alpha below 0.0064) the spread grows by
+    /// 0.3 times the whole angle of the spherical cap of solid angle `1 / pdf` of the direction
+    /// drawn, clamped to 2 pi (`ComputeRayConeSpreadAngleExpansionByScatterPDF`).
+    PathRtxpt = 18,
+    /// The path tracer at the ray-cone LOD with the OptiX Toolkit's rule (`ray_cone.h`): its
+    /// `reflect` (twice the curvature times the width while the angle is below 0.25), then
+    /// `scatterBsdf`, `0.25 min(1, 1 / (pi f_s))` with `f_s` the BSDF value of the direction
+    /// drawn, the cone set to the diffuse angle 0.25 once it reaches it.
+    PathOptix = 19,
 }
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 16] = [
+    pub const ALL: [Mode; 20] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
@@ -104,6 +122,10 @@ impl Mode {
         Mode::ConeAnisotropic,
         Mode::PathMip0,
         Mode::PathCone,
+        Mode::PathCurvature,
+        Mode::PathRoughness,
+        Mode::PathRtxpt,
+        Mode::PathOptix,
     ];
 
     /// The discriminant: the value of the mode's `RT_MODE_*` constant in the shaders.
@@ -130,6 +152,10 @@ impl Mode {
             Mode::ConeSections => "cone_sections",
             Mode::PathMip0 => "path_mip0",
             Mode::PathCone => "path_cone",
+            Mode::PathCurvature => "path_curvature",
+            Mode::PathRoughness => "path_roughness",
+            Mode::PathRtxpt => "path_rtxpt",
+            Mode::PathOptix => "path_optix",
         }
     }
 
@@ -152,7 +178,24 @@ impl Mode {
             Mode::ConeSections => "as cone_refraction, glass refracting the beam's two sections",
             Mode::PathMip0 => "path tracer, every textured vertex at mip 0",
             Mode::PathCone => "path tracer, rf_scatter_ray_cone at every vertex, its LOD at each",
+            Mode::PathCurvature => "path tracer, every vertex a curved mirror (no scattering term)",
+            Mode::PathRoughness => "path tracer, curvature and twice the roughness spread (JCGT 2021)",
+            Mode::PathRtxpt => "path tracer, RTXPT's spread from the direction's pdf",
+            Mode::PathOptix => "path tracer, the OptiX Toolkit's reflect and scatterBsdf",
         }
+    }
+
+    /// Whether the mode traces paths: every surface scatters the ray on, as `PathMip0` does.
+    pub fn traces_paths(self) -> bool {
+        matches!(
+            self,
+            Mode::PathMip0
+                | Mode::PathCone
+                | Mode::PathCurvature
+                | Mode::PathRoughness
+                | Mode::PathRtxpt
+                | Mode::PathOptix
+        )
     }
 
     /// The mode called `name`, or `None`.

@@ -77,6 +77,24 @@ static const uint RT_MODE_PATH_MIP0 = 14u;
 // cone, the cone leaving every vertex rf_scatter_ray_cone's for the lobe drawn (the hit triangle's
 // isotropic curvature), glass refracting it as ConeRefraction.
 static const uint RT_MODE_PATH_CONE = 15u;
+// The path tracer of PathMip0 at the ray-cone LOD, every vertex a curved mirror whatever the lobe
+// drawn: the cone leaves with the curvature's spread (JCGT 2021) and no scattering term; glass
+// carries the cone on as if it were not there.
+static const uint RT_MODE_PATH_CURVATURE = 16u;
+// PathCurvature plus twice rf_roughness_spread_angle of the lobe's roughness at every scattering
+// vertex (JCGT 2021 section 3, Falcor's roughnessToSpread), a Lambertian surface read as roughness
+// 1.
+static const uint RT_MODE_PATH_ROUGHNESS = 17u;
+// The path tracer at the ray-cone LOD with RTXPT's rule: no curvature term, and at every scattering
+// vertex that is not a delta lobe (GGX alpha below 0.0064) the spread grows by 0.3 times the whole
+// angle of the spherical cap of solid angle 1 / pdf of the direction drawn, clamped to 2 pi
+// (ComputeRayConeSpreadAngleExpansionByScatterPDF).
+static const uint RT_MODE_PATH_RTXPT = 18u;
+// The path tracer at the ray-cone LOD with the OptiX Toolkit's rule (ray_cone.h): its reflect
+// (twice the curvature times the width while the angle is below 0.25), then scatterBsdf, 0.25
+// min(1, 1 / (pi f_s)) with f_s the BSDF value of the direction drawn, the cone set to the diffuse
+// angle 0.25 once it reaches it.
+static const uint RT_MODE_PATH_OPTIX = 19u;
 
 // The material id (Material::id) of Material::Textured.
 static const uint RT_MATERIAL_TEXTURED = 0u;

@@ -451,8 +451,8 @@ vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     case RT_MODE_CONE_ANISOTROPIC:
         return rt_sample_grad(uv, rt_cone_uv_gradients(hit, cone));
     default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME, RT_MODE_CONE_REFRACTION,
-             // RT_MODE_CONE_ROUGHNESS, RT_MODE_CONE_SECTIONS (at rt_arriving_cone's cone),
-             // RT_MODE_PATH_CONE
+             // RT_MODE_CONE_ROUGHNESS, RT_MODE_CONE_SECTIONS (at rt_arriving_cone's cone), and the
+             // path modes but RT_MODE_PATH_MIP0
         return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone)).rgb;
     }
 }
@@ -477,7 +477,8 @@ vec3 rt_facing_normal(RtHit hit) {
 
 // Whether `mode` traces paths: every surface scatters the ray on (rt_path_bounce).
 bool rt_traces_paths(uint mode) {
-    return mode == RT_MODE_PATH_MIP0 || mode == RT_MODE_PATH_CONE;
+    return mode == RT_MODE_PATH_MIP0 || mode == RT_MODE_PATH_CONE || mode == RT_MODE_PATH_CURVATURE
+        || mode == RT_MODE_PATH_ROUGHNESS || mode == RT_MODE_PATH_RTXPT || mode == RT_MODE_PATH_OPTIX;
 }
 
 // Whether the ray goes on from the hit in `mode`: a mirror reflects primary rays (what it reflects is
@@ -587,23 +588,95 @@ vec3 rt_leaving_origin(RtHit hit, vec3 direction) {
     return hit.origin + hit.t * hit.direction + side * hit.normal;
 }
 
+// The density of the direction a mirror's GGX lobe of width `alpha` reflected the hit's ray to
+// (Walter et al. 2007, Eq. 14 and 24: D(h) cos(theta_h) / (4 |o.h|)), with `h` the half vector of
+// the ray and `direction`, around the normal `facing`.
+float rt_ggx_pdf(RtHit hit, vec3 facing, vec3 direction, float alpha) {
+    vec3 half_vector = normalize(direction - hit.direction);
+    float cos_h = max(dot(half_vector, facing), 0.0);
+    float alpha2 = max(alpha * alpha, 1e-12);
+    float denominator = cos_h * cos_h * (alpha2 - 1.0) + 1.0;
+    float distribution = alpha2 / (3.14159265359 * denominator * denominator);
+    return distribution * cos_h / max(4.0 * abs(dot(direction, half_vector)), 1e-12);
+}
+
+// RTXPT's growth of the spread at a scatter whose direction was drawn with density `pdf`
+// (ComputeRayConeSpreadAngleExpansionByScatterPDF): 0.3 times the whole angle 2 acos(1 - Omega /
+// (2 pi)) of the spherical cap of solid angle Omega = 1 / pdf.
+float rt_rtxpt_expansion(float pdf) {
+    return 0.3 * 2.0 * acos(max(1.0 - 1.0 / (6.28318530718 * max(pdf, 1e-30)), -1.0));
+}
+
+// The OptiX Toolkit's cone leaving a vertex (ray_cone.h): the cone carried to the hit (both
+// signs flipped where width and angle are both negative), `reflect` adding twice the curvature
+// as the ray sees it times |width| while the angle is below its diffuse angle 0.25, then
+// `scatterBsdf` adding sign(angle) 0.25 min(1, 1 / (pi f_s)) for the BSDF value `bsdf`, the cone
+// becoming the diffuse one (|width|, 0.25) where that reaches 0.25.
+RfRayCone rt_optix_toolkit_cone(RtHit hit, RfRayCone cone, float bsdf) {
+    float width = rf_width_at(cone, hit.t);
+    float angle = cone.spread_angle;
+    if (angle < 0.0 && width < 0.0) {
+        width = -width;
+        angle = -angle;
+    }
+    float seen_curvature = dot(hit.normal, hit.direction) < 0.0 ? rt_curvature(hit) : -rt_curvature(hit);
+    if (angle < 0.25) {
+        angle += 2.0 * seen_curvature * abs(width);
+    }
+    if (angle >= 0.25) {
+        return RfRayCone(width, angle);
+    }
+    float grown = angle + (angle < 0.0 ? -0.25 : 0.25) * 0.318309886 / max(bsdf, 0.318309886);
+    return abs(grown) < 0.25 ? RfRayCone(width, grown) : RfRayCone(abs(width), 0.25);
+}
+
+// The cone leaving a path vertex in `mode` from the arriving `cone`, for the ray scattered to
+// `direction` with the BSDF value `bsdf` and density `pdf` (`mirror`: off a mirror's GGX lobe,
+// else a Lambertian one): rf_scatter_ray_cone's for the lobe drawn in RT_MODE_PATH_CONE; the
+// curvature's spread (JCGT 2021) in RT_MODE_PATH_CURVATURE, plus twice rf_roughness_spread_angle of
+// the lobe's roughness (1 for Lambert) in RT_MODE_PATH_ROUGHNESS; RTXPT's and the OptiX Toolkit's
+// rules in theirs; at level 0 (RT_MODE_PATH_MIP0) the arriving cone, which nothing reads.
+RfRayCone rt_path_cone(uint mode, RtHit hit, RfRayCone cone, vec3 direction, bool mirror, float bsdf, float pdf) {
+    float roughness = mirror ? hit.material.parameter : 1.0;
+    switch (mode) {
+    case RT_MODE_PATH_CONE:
+        return rf_scatter_ray_cone(cone, hit.t, rt_curvature(hit), hit.normal, hit.direction, direction,
+            mirror ? RF_LOBE_REFLECTION : RF_LOBE_DIFFUSE);
+    case RT_MODE_PATH_CURVATURE:
+        return rf_propagate(cone, hit.t, rt_curvature_spread(hit, cone, rt_curvature(hit)));
+    case RT_MODE_PATH_ROUGHNESS:
+        return rf_propagate(cone, hit.t, rt_curvature_spread(hit, cone, rt_curvature(hit))
+            + 2.0 * rf_roughness_spread_angle(roughness));
+    case RT_MODE_PATH_RTXPT: {
+        RfRayCone carried = rf_propagate(cone, hit.t, 0.0);
+        bool delta = mirror && roughness * roughness < 0.0064;
+        float spread = delta ? carried.spread_angle : min(carried.spread_angle + rt_rtxpt_expansion(pdf), 6.28318530718);
+        return RfRayCone(carried.width, spread);
+    }
+    case RT_MODE_PATH_OPTIX:
+        return rt_optix_toolkit_cone(hit, cone, bsdf);
+    default: // RT_MODE_PATH_MIP0
+        return cone;
+    }
+}
+
 // The ray a path mode scatters from a textured surface or a mirror reached by the ray carrying
-// `cone`: a textured surface is Lambertian, a direction drawn from its cosine lobe bringing back its
-// texture colour (f cos / pdf = albedo), sampled at the arriving cone's level in RT_MODE_PATH_CONE
-// and at level 0 in RT_MODE_PATH_MIP0; a mirror reflects about a GGX normal of its roughness
-// (rt_mirror_direction) and RT_MIRROR_REFLECTANCE of the light. In RT_MODE_PATH_CONE the leaving
-// cone is rf_scatter_ray_cone's for the lobe drawn, with the hit triangle's isotropic curvature.
+// `cone`: a textured surface is Lambertian, a direction drawn from its cosine lobe (pdf cos / pi)
+// bringing back its texture colour (f cos / pdf = albedo, f = albedo / pi), sampled at the
+// arriving cone's level (at level 0 in RT_MODE_PATH_MIP0); a mirror reflects about a GGX normal of
+// its roughness (rt_mirror_direction, pdf rt_ggx_pdf) and RT_MIRROR_REFLECTANCE of the light (f =
+// RT_MIRROR_REFLECTANCE pdf / cos). The leaving cone is rt_path_cone's.
 RtBounce rt_path_bounce(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagittal) {
     bool mirror = hit.material.kind == RT_MATERIAL_MIRROR;
     vec3 facing = rt_facing_normal(hit);
     vec3 direction = mirror ? rt_mirror_direction(mode, hit)
                             : rt_cosine_direction(facing, rt_random(hit.pixel, hit.depth));
     vec3 tint = mirror ? vec3(1.0) : rt_texture_colour(mode, hit, cone, rt_no_diff());
-    RfRayCone leaving = cone;
-    if (mode == RT_MODE_PATH_CONE) {
-        uint lobe = mirror ? RF_LOBE_REFLECTION : RF_LOBE_DIFFUSE;
-        leaving = rf_scatter_ray_cone(cone, hit.t, rt_curvature(hit), hit.normal, hit.direction, direction, lobe);
-    }
+    float cos_out = max(dot(direction, facing), 1e-6);
+    float roughness = hit.material.parameter;
+    float pdf = mirror ? rt_ggx_pdf(hit, facing, direction, roughness * roughness) : cos_out * 0.318309886;
+    float bsdf = mirror ? RT_MIRROR_REFLECTANCE * pdf / cos_out : (tint.r + tint.g + tint.b) * (0.318309886 / 3.0);
+    RfRayCone leaving = rt_path_cone(mode, hit, cone, direction, mirror, bsdf, pdf);
     return RtBounce(rt_leaving_origin(hit, direction), direction, mirror ? RT_MIRROR_REFLECTANCE : 1.0, leaving,
         rt_no_diff(), sagittal, tint);
 }
