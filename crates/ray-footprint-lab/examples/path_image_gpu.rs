@@ -1,0 +1,397 @@
+//! The image error of every path mode of the ray-tracing renderer, on the GPU: per scene of the
+//! quality lab and path mode, the RMSE against a reference rendered by `path_mip0` with many
+//! samples, at equal samples per pixel and at equal GPU time, split into bias and noise as
+//! `ray_footprint_lab::paths::image` splits the CPU renders (two renders `A`, `B` of independent
+//! seeds; the reference the mean of two renders `R1`, `R2`).
+//!
+//! A sample is one frame of the mode's colour-only pipeline at a sub-pixel offset drawn from the
+//! seed's stream; the renderer draws every path's random numbers from the pixel and that offset,
+//! so each stream is a different set of paths and every mode of one stream traces the same ones.
+//! The frames' RGBA8 colours (gamma 2.2) are taken back to linear light and averaged. Equal time:
+//! each path mode's frame is timed in interleaved rounds (`Renderer::time_colour_frames`, the
+//! order reversed every other round, after warm-up rounds until two agree within 2%), and a mode
+//! gets `floor(64 x path_mip0's frame / its frame)` samples where `path_mip0` gets 64.
+//!
+//! ```text
+//! cargo run --release -p ray-footprint-lab --example path_image_gpu -- \
+//!     [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all]
+//! ```
+
+use glam::DVec3;
+use ray_footprint::wireframe::WireframeSettings;
+use ray_footprint_lab::cli::{
+    command_options, example_command, image_size, options_or_exit, positive_count, seed,
+};
+use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, ErrorSplit};
+use ray_footprint_lab::quality::{LabScene, Measure};
+use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms};
+use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer};
+use ray_footprint_lab::timing::{gpu_clocks, median, round_order, warm_up, Spread};
+use std::time::Instant;
+
+/// The default seed.
+const DEFAULT_SEED: u64 = 1;
+/// The default image size.
+const DEFAULT_SIZE: (u32, u32) = (160, 90);
+/// The default samples per pixel of each reference render.
+const DEFAULT_REFERENCE_SAMPLES: usize = 256;
+/// Samples per pixel measured at equal samples.
+const SAMPLES: [usize; 3] = [4, 16, 64];
+/// `path_mip0`'s samples per pixel at equal time.
+const EQUAL_TIME_SAMPLES: usize = 64;
+/// Timed rounds, frames of each mode per round, and the most warm-up rounds.
+const ROUNDS: usize = 8;
+const FRAMES_PER_ROUND: usize = 32;
+const MAX_WARM_UP_ROUNDS: usize = 20;
+
+/// The path modes, `path_mip0` first.
+const PATH_MODES: [Mode; 6] = [
+    Mode::PathMip0,
+    Mode::PathCone,
+    Mode::PathCurvature,
+    Mode::PathRoughness,
+    Mode::PathRtxpt,
+    Mode::PathOptix,
+];
+
+struct Options {
+    seed: u64,
+    size: (u32, u32),
+    reference_samples: usize,
+    texture_size: Option<u32>,
+    scenes: Vec<LabScene>,
+}
+
+fn usage() -> String {
+    format!(
+        "usage: path_image_gpu [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all]\n\
+         defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all, \
+         each scene's own texture",
+        DEFAULT_SIZE.0, DEFAULT_SIZE.1
+    )
+}
+
+fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
+    let mut options = Options {
+        seed: DEFAULT_SEED,
+        size: DEFAULT_SIZE,
+        reference_samples: DEFAULT_REFERENCE_SAMPLES,
+        texture_size: None,
+        scenes: texture_scenes(LabScene::all()),
+    };
+    for (flag, value) in command_options(args)? {
+        match flag.as_str() {
+            "--seed" => options.seed = seed(&flag, &value)?,
+            "--size" => options.size = image_size(&flag, &value)?,
+            "--reference-spp" => options.reference_samples = positive_count(&flag, &value)?,
+            "--texture-size" => {
+                let size = positive_count(&flag, &value)?;
+                if !size.is_power_of_two() || size > 1 << 15 {
+                    return Err(format!("{flag} {value}: expected a power of two up to 32768"));
+                }
+                options.texture_size = Some(size as u32);
+            }
+            "--scene" if value == "all" => options.scenes = texture_scenes(LabScene::all()),
+            "--scene" => {
+                options.scenes = texture_scenes(LabScene::all())
+                    .into_iter()
+                    .filter(|scene| scene.name == value)
+                    .collect();
+                if options.scenes.is_empty() {
+                    return Err(format!("--scene {value}: no such scene with a texture"));
+                }
+            }
+            other => return Err(format!("unknown argument '{other}'")),
+        }
+    }
+    Ok(options)
+}
+
+/// The scenes that measure a texture (the wireframe's torus draws lines).
+fn texture_scenes(scenes: Vec<LabScene>) -> Vec<LabScene> {
+    scenes
+        .into_iter()
+        .filter(|scene| matches!(scene.measure, Measure::Texture))
+        .collect()
+}
+
+/// SplitMix64: the `index`-th number of stream `stream`.
+fn splitmix(stream: u64, index: u64) -> u64 {
+    let mut z = stream.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ index.wrapping_add(0x632b_e59b_d9b4_e8f5);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// The push constants of sample `index` of stream `stream`: a sub-pixel offset in [-0.5, 0.5)^2.
+fn sample_push(base: &RtPushConstants, stream: u64, index: usize) -> RtPushConstants {
+    let bits = splitmix(stream, index as u64);
+    let unit = |word: u64| (word & 0xff_ffff) as f32 / 16_777_216.0 - 0.5;
+    let mut push = *base;
+    push.pixel_offset = glam::Vec2::new(unit(bits), unit(bits >> 32));
+    push
+}
+
+/// The mean of `checkpoints.last()` samples of `pipeline` from stream `stream`, in linear light,
+/// taken at every count of `checkpoints` (ascending).
+fn render_means(
+    pipeline: &ColourPipeline<'_, '_>,
+    base: &RtPushConstants,
+    uniforms: &RtUniforms,
+    stream: u64,
+    checkpoints: &[usize],
+) -> Result<Vec<Vec<DVec3>>, String> {
+    let linear: Vec<f64> = (0..256).map(|v| (f64::from(v) / 255.0).powf(2.2)).collect();
+    let pixels = (base.width * base.height) as usize;
+    let mut sum = vec![DVec3::ZERO; pixels];
+    let mut means = Vec::with_capacity(checkpoints.len());
+    let last = checkpoints.last().copied().unwrap_or(0);
+    for index in 0..last {
+        let frame = pipeline
+            .render(&sample_push(base, stream, index), uniforms)
+            .map_err(|error| error.to_string())?;
+        for (total, pixel) in sum.iter_mut().zip(&frame.pixels) {
+            *total += DVec3::new(
+                linear[pixel[0] as usize],
+                linear[pixel[1] as usize],
+                linear[pixel[2] as usize],
+            );
+        }
+        let count = index + 1;
+        for _ in checkpoints.iter().filter(|&&c| c == count) {
+            means.push(sum.iter().map(|total| *total / count as f64).collect());
+        }
+    }
+    Ok(means)
+}
+
+/// One round: [`FRAMES_PER_ROUND`] frames of every pipeline, in the round's order; each
+/// pipeline's median frame time in ms.
+fn round(
+    renderer: &Renderer<'_>,
+    pipelines: &[ColourPipeline<'_, '_>],
+    base: &RtPushConstants,
+    uniforms: &RtUniforms,
+    number: usize,
+) -> Result<Vec<f64>, String> {
+    let order = round_order(pipelines.len(), number);
+    let runs: Vec<_> = order
+        .iter()
+        .map(|&index| (&pipelines[index], FRAMES_PER_ROUND))
+        .collect();
+    let times = renderer
+        .time_colour_frames(&runs, std::slice::from_ref(base), uniforms)
+        .map_err(|error| error.to_string())?;
+    let mut medians = vec![0.0; pipelines.len()];
+    for (&index, run) in order.iter().zip(&times) {
+        let ms: Vec<f64> = run.iter().map(|t| t.as_secs_f64() * 1e3).collect();
+        medians[index] = median(&ms);
+    }
+    Ok(medians)
+}
+
+/// Each pipeline's frame time in ms, the spread of its [`ROUNDS`] round medians, after warm-up
+/// rounds until two successive ones agree within 2% (at most [`MAX_WARM_UP_ROUNDS`]).
+fn frame_times(
+    renderer: &Renderer<'_>,
+    pipelines: &[ColourPipeline<'_, '_>],
+    base: &RtPushConstants,
+    uniforms: &RtUniforms,
+) -> Result<Vec<Spread>, String> {
+    warm_up(MAX_WARM_UP_ROUNDS, || {
+        round(renderer, pipelines, base, uniforms, 0).map(|medians| median(&medians))
+    })?;
+    let mut medians = vec![Vec::with_capacity(ROUNDS); pipelines.len()];
+    for number in 0..ROUNDS {
+        for (mode_medians, value) in medians
+            .iter_mut()
+            .zip(round(renderer, pipelines, base, uniforms, number)?)
+        {
+            mode_medians.push(value);
+        }
+    }
+    Ok(medians.iter().map(|m| Spread::of(m)).collect())
+}
+
+/// One mode's results on one scene.
+struct ModeResult {
+    mode: Mode,
+    frame: Spread,
+    /// At each count of [`SAMPLES`].
+    equal_samples: Vec<ErrorSplit>,
+    equal_time_samples: usize,
+    equal_time: ErrorSplit,
+}
+
+/// Measures every path mode on `scene`; prints its table and returns the results.
+fn measure_scene(
+    gpu: &shader_proptest::Gpu,
+    scene: &LabScene,
+    options: &Options,
+) -> Result<Vec<ModeResult>, String> {
+    let started = Instant::now();
+    let texture = match options.texture_size {
+        Some(size) => enlarged(&scene.texture, size),
+        None => scene.texture.clone(),
+    };
+    let renderer = Renderer::with_texture(gpu, scene.scene.clone(), texture).map_err(|e| e.to_string())?;
+    let pipelines = PATH_MODES
+        .iter()
+        .map(|&mode| renderer.colour_pipeline(mode))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| e.to_string())?;
+    let (width, height) = options.size;
+    let mut base = renderer.push_constants(&scene.camera, Mode::PathMip0, 1.0, width, height);
+    base.flags = scene.truth_flags;
+    let uniforms = scene.camera.uniforms(options.size, WireframeSettings::default());
+    let frames = frame_times(&renderer, &pipelines, &base, &uniforms)?;
+    let streams = [
+        4 * options.seed,
+        4 * options.seed + 1,
+        4 * options.seed + 2,
+        4 * options.seed + 3,
+    ];
+    let reference_count = [options.reference_samples];
+    let r1 = render_means(&pipelines[0], &base, &uniforms, streams[2], &reference_count)?.remove(0);
+    let r2 = render_means(&pipelines[0], &base, &uniforms, streams[3], &reference_count)?.remove(0);
+    let reference: Vec<DVec3> = r1.iter().zip(&r2).map(|(a, b)| 0.5 * (*a + *b)).collect();
+    let reference_variance = mean_squared_difference(&r1, &r2) / 4.0;
+    let mut results = Vec::new();
+    for (pipeline, frame) in pipelines.iter().zip(&frames) {
+        let equal_time_samples =
+            ((EQUAL_TIME_SAMPLES as f64 * frames[0].median / frame.median) as usize).max(1);
+        let mut checkpoints: Vec<usize> = SAMPLES.iter().copied().chain([equal_time_samples]).collect();
+        checkpoints.sort_unstable();
+        checkpoints.dedup();
+        let a = render_means(pipeline, &base, &uniforms, streams[0], &checkpoints)?;
+        let b = render_means(pipeline, &base, &uniforms, streams[1], &checkpoints)?;
+        let split_at = |count: usize| {
+            let at = checkpoints
+                .iter()
+                .position(|&c| c == count)
+                .expect("a checkpoint");
+            error_split(&a[at], &b[at], &reference, reference_variance)
+        };
+        results.push(ModeResult {
+            mode: pipeline.mode(),
+            frame: *frame,
+            equal_samples: SAMPLES.iter().map(|&count| split_at(count)).collect(),
+            equal_time_samples,
+            equal_time: split_at(equal_time_samples),
+        });
+    }
+    print_scene(
+        scene,
+        &results,
+        reference_variance.sqrt(),
+        started.elapsed().as_secs_f64(),
+    );
+    Ok(results)
+}
+
+fn print_scene(scene: &LabScene, results: &[ModeResult], reference_noise: f64, seconds: f64) {
+    println!("\n### {}: {}\n", scene.name, scene.description);
+    println!("reference noise {reference_noise:.5}; {seconds:.1} s\n");
+    println!(
+        "| mode | frame ms (rounds) | 4 / 16 / 64 spp: RMSE | 64 spp: bias / sd | equal time: spp, RMSE |"
+    );
+    println!("| --- | ---: | ---: | ---: | ---: |");
+    for result in results {
+        let rmse: Vec<String> = result
+            .equal_samples
+            .iter()
+            .map(|e| format!("{:.5}", e.rmse))
+            .collect();
+        let at_64 = result.equal_samples[SAMPLES.len() - 1];
+        println!(
+            "| {} | {:.3} ({:.3} to {:.3}) | {} | {:.5} / {:.5} | {}, {:.5} |",
+            result.mode,
+            result.frame.median,
+            result.frame.min,
+            result.frame.max,
+            rmse.join(" / "),
+            at_64.bias,
+            at_64.sd,
+            result.equal_time_samples,
+            result.equal_time.rmse
+        );
+    }
+}
+
+/// The mean over the scenes of each mode's RMSE over `path_mip0`'s, at each sample count and at
+/// equal time, and the scenes where the mode's RMSE is the lowest at 64 samples and at equal time.
+fn print_summary(all: &[Vec<ModeResult>]) {
+    println!("\n## Over the scenes\n");
+    println!("| mode | RMSE / path_mip0's: 4 / 16 / 64 spp | equal time | lowest at 64 spp | lowest at equal time |");
+    println!("| --- | ---: | ---: | ---: | ---: |");
+    let count = all.len() as f64;
+    for (m, mode) in PATH_MODES.iter().enumerate() {
+        let ratio = |value: &dyn Fn(&ModeResult) -> f64| {
+            all.iter()
+                .map(|scene| value(&scene[m]) / value(&scene[0]))
+                .sum::<f64>()
+                / count
+        };
+        let ratios: Vec<String> = (0..SAMPLES.len())
+            .map(|c| format!("{:.3}", ratio(&|r: &ModeResult| r.equal_samples[c].rmse)))
+            .collect();
+        let lowest = |value: &dyn Fn(&ModeResult) -> f64| {
+            all.iter()
+                .filter(|scene| scene.iter().all(|other| value(&scene[m]) <= value(other)))
+                .count()
+        };
+        println!(
+            "| {mode} | {} | {:.3} | {} of {} | {} of {} |",
+            ratios.join(" / "),
+            ratio(&|r: &ModeResult| r.equal_time.rmse),
+            lowest(&|r: &ModeResult| r.equal_samples[SAMPLES.len() - 1].rmse),
+            all.len(),
+            lowest(&|r: &ModeResult| r.equal_time.rmse),
+            all.len()
+        );
+    }
+}
+
+fn main() {
+    let options = options_or_exit(parse_args(std::env::args().skip(1)), &usage());
+    let started = Instant::now();
+    let gpu = open_device().unwrap_or_else(|error| {
+        eprintln!("path_image_gpu: {error}");
+        std::process::exit(1);
+    });
+    println!("# Path modes' image error on the GPU\n");
+    println!("GPU clocks at the start: {}\n", gpu_clocks());
+    println!("command: `{}`\n", example_command("path_image_gpu"));
+    println!(
+        "device {}, driver {}; seed {}, image {}x{}, texture {}; samples per pixel {:?} (renders A and B: streams 4 seed and \
+         4 seed + 1); reference: path_mip0, two renders of {} spp (streams 4 seed + 2 and + 3), averaged; equal \
+         time: path_mip0 at {EQUAL_TIME_SAMPLES} spp, frame times from {ROUNDS} interleaved rounds of \
+         {FRAMES_PER_ROUND} frames after warm-up rounds.\n",
+        gpu.name(),
+        gpu.driver(),
+        options.seed,
+        options.size.0,
+        options.size.1,
+        options.texture_size.map_or("each scene's own".to_string(), |n| format!("{n} x {n}")),
+        SAMPLES,
+        options.reference_samples
+    );
+    println!(
+        "RMSE over pixels and linear RGB channels (frames' RGBA8 at gamma 2.2 taken to linear), split as the CPU \
+         path_image splits it: sd^2 = mean((A - B)^2) / 2, bias^2 = mean(((A + B) / 2 - R)^2) - sd^2 / 2 - \
+         noise^2, clamped at 0; reference noise = sqrt(mean((R1 - R2)^2) / 4)."
+    );
+    let mut all = Vec::new();
+    for scene in &options.scenes {
+        match measure_scene(&gpu, scene, &options) {
+            Ok(results) => all.push(results),
+            Err(error) => {
+                eprintln!("path_image_gpu: {}: {error}", scene.name);
+                std::process::exit(1);
+            }
+        }
+    }
+    print_summary(&all);
+    println!("\nGPU clocks at the end: {}", gpu_clocks());
+    println!("\nwall time {:.1} s", started.elapsed().as_secs_f64());
+}
