@@ -13,11 +13,13 @@
 //!
 //! `--cases` sets the cases per check and language (100,000, as `verify`); `--batch` the cases per
 //! batch (`RunConfig::batch`, 8,192); `--threads` measures one thread count only. With `SHADER_PROPTEST_SPIRV_CACHE` set, kernels compiled by an earlier
-//! run come from that cache (`shader_proptest::compile::SPIRV_CACHE_ENV`).
+//! run come from that cache (`shader_proptest::compile::SPIRV_CACHE_ENV`); without it every pass
+//! starts cold: the compiles the process keeps in memory are forgotten first
+//! (`shader_proptest::compile::forget_compiles`).
 
 use ray_footprint_cases::agreement::run_all_checks;
 use ray_footprint_lab::cli::{command_options, options_or_exit, positive_count};
-use shader_proptest::compile::SPIRV_CACHE_ENV;
+use shader_proptest::compile::{forget_compiles, SPIRV_CACHE_ENV};
 use shader_proptest::{Gpu, Outcome, Phase, PhaseTimes, RunConfig};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -164,6 +166,10 @@ fn main() -> ExitCode {
             seed: Some(SEED),
             ..RunConfig::default()
         };
+        if cache.is_empty() {
+            // Each pass starts cold, as a new process would.
+            forget_compiles();
+        }
         let started = Instant::now();
         let totals = match pass(&gpu, &config) {
             Ok(totals) => totals,

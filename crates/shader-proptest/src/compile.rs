@@ -10,7 +10,7 @@ mod cache;
 mod slang_library;
 
 pub use crate::tool::{CompileError, Target};
-pub use cache::SPIRV_CACHE_ENV;
+pub use cache::{forget_compiles, SPIRV_CACHE_ENV};
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -277,31 +277,44 @@ fn run_compiler(
 }
 
 /// The cache's key for compiling `source` with `command` (the compiler and its options, before
-/// the input and output paths), and the cache's directory, where [`SPIRV_CACHE_ENV`] is set.
+/// the input and output paths), and the disk cache's directory, where [`SPIRV_CACHE_ENV`] is
+/// set; `None` where the key cannot be made (the compiler's version or an include directory
+/// cannot be read).
 fn cache_key(
     command: &Command,
     (source, extension): (&str, &str),
     include_dirs: &[&Path],
-) -> Option<(Vec<u8>, PathBuf)> {
-    let dir = cache::directory()?;
-    Some((cache::key(command, extension, source, include_dirs)?, dir))
+) -> Option<(Vec<u8>, Option<PathBuf>)> {
+    Some((
+        cache::key(command, extension, source, include_dirs)?,
+        cache::directory(),
+    ))
 }
 
 /// `compile`'s words; with a `key` (from [`cache_key`]), the words of an earlier compile of the
-/// same input by the same compiler come from the cache (`compile/cache.rs`), and a new compile's
-/// words go into it.
+/// same input by the same compiler come from this process's memory or from the disk cache
+/// (`compile/cache.rs`), and a new compile's words go into both.
 fn cached(
-    key: Option<(Vec<u8>, PathBuf)>,
+    key: Option<(Vec<u8>, Option<PathBuf>)>,
     compile: impl FnOnce() -> Result<Vec<u32>, CompileError>,
 ) -> Result<Vec<u32>, CompileError> {
     let Some((key, dir)) = key else {
         return compile();
     };
-    if let Some(words) = cache::lookup(&dir, &key) {
+    if let Some(words) = cache::remembered(&key) {
         return Ok(words);
     }
-    let words = compile()?;
-    cache::store(&dir, &key, &words);
+    let words = match dir.as_deref().and_then(|dir| cache::lookup(dir, &key)) {
+        Some(words) => words,
+        None => {
+            let words = compile()?;
+            if let Some(dir) = &dir {
+                cache::store(dir, &key, &words);
+            }
+            words
+        }
+    };
+    cache::remember(&key, &words);
     Ok(words)
 }
 
@@ -326,4 +339,34 @@ fn in_temporary_directory(
         .and_then(|()| compile(&input, &output));
     let _ = std::fs::remove_dir_all(&dir);
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cell::Cell;
+
+    /// A second compile of the same input in one process comes from memory; after
+    /// `forget_compiles` the compiler runs again.
+    #[test]
+    fn the_same_input_is_compiled_once_per_process() {
+        let command = Command::new("glslangValidator");
+        let source = "// the_same_input_is_compiled_once_per_process\nvoid main() {}";
+        let key = || {
+            let key = cache::key(&command, "comp", source, &[])
+                .expect("glslangValidator answers --version (scripts/setup.sh installs it)");
+            Some((key, None))
+        };
+        let runs = Cell::new(0);
+        let compile = || {
+            runs.set(runs.get() + 1);
+            Ok(vec![crate::spirv::MAGIC, 0x0001_0300, 7, 9, 0])
+        };
+        let first = cached(key(), compile).expect("words");
+        let second = cached(key(), compile).expect("words");
+        assert_eq!((runs.get(), &first), (1, &second));
+        forget_compiles();
+        cached(key(), compile).expect("words");
+        assert_eq!(runs.get(), 2);
+    }
 }

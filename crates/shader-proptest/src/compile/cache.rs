@@ -1,5 +1,7 @@
-//! Compiled SPIR-V kept on disk between runs, for the command-line compilers (glslang, slangc),
-//! when [`SPIRV_CACHE_ENV`] names a directory.
+//! Compiled SPIR-V kept for the life of the process, so that a kernel that several checks of one
+//! run compile (agreement, special values, symmetries) is compiled once ([`remembered`]), and on
+//! disk between runs, for the command-line compilers (glslang, slangc), when [`SPIRV_CACHE_ENV`]
+//! names a directory.
 //!
 //! A compile's key is everything its output depends on, written out in full: the compiler's
 //! name and the version it prints, its options, the source's file extension and text, and every
@@ -106,6 +108,35 @@ fn files_under(dir: &Path) -> Option<Vec<(PathBuf, Vec<u8>)>> {
     }
     files.sort_by(|a, b| a.0.cmp(&b.0));
     Some(files)
+}
+
+/// The compiles of this process, by key.
+fn memory() -> &'static Mutex<HashMap<Vec<u8>, Vec<u32>>> {
+    static MEMORY: OnceLock<Mutex<HashMap<Vec<u8>, Vec<u32>>>> = OnceLock::new();
+    MEMORY.get_or_init(Mutex::default)
+}
+
+/// The words this process compiled for `key`, if it did.
+pub(crate) fn remembered(key: &[u8]) -> Option<Vec<u32>> {
+    memory()
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .get(key)
+        .cloned()
+}
+
+/// Keeps `words` for `key` for the life of the process.
+pub(crate) fn remember(key: &[u8], words: &[u32]) {
+    memory()
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .insert(key.to_vec(), words.to_vec());
+}
+
+/// Forgets every compile this process kept in memory: the next compile of each shader runs the
+/// compiler (or reads the disk cache) again, as in a new process. For measuring a cold start.
+pub fn forget_compiles() {
+    memory().lock().unwrap_or_else(PoisonError::into_inner).clear();
 }
 
 /// The file of `key` in `dir`, named by a hash of the key.
