@@ -610,16 +610,21 @@ pub(crate) fn metamorphic_check<A: Args + Perturb, R: Value>(
     }))
 }
 
+/// How many words an argument list of `A` takes.
+fn word_count<A: Args>() -> usize {
+    A::TYPES.iter().map(|ty| ty.words()).sum()
+}
+
 /// The words of a value.
 fn words<A: Args>(args: &A) -> Vec<u32> {
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(word_count::<A>());
     args.write(&mut out);
     out
 }
 
 /// The floats of `args`, in the order of its words.
 fn floats<A: Args>(args: &A) -> Vec<f32> {
-    let mut float = Vec::new();
+    let mut float = Vec::with_capacity(word_count::<A>());
     A::TYPES.iter().for_each(|ty| ty.float_words(&mut float));
     words(args)
         .iter()

@@ -166,7 +166,7 @@ impl<A: Args, R: Value> Check for MetamorphicCheck<A, R> {
 /// assert_ne!(case_seed(&(1.0f32, 2u32)), case_seed(&(1.0f32, 3u32)));
 /// ```
 pub fn case_seed<A: Args>(args: &A) -> u64 {
-    let mut words = Vec::new();
+    let mut words = Vec::with_capacity(A::TYPES.iter().map(|ty| ty.words()).sum());
     args.write(&mut words);
     words
         .iter()
