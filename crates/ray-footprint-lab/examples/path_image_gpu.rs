@@ -14,19 +14,25 @@
 //!
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example path_image_gpu -- \
-//!     [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all]
+//!     [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] [--crops DIR]
 //! ```
+//!
+//! With `--crops DIR`, each scene's crop (the quality lab's) of the reference and of every mode's
+//! render `A` at 64 samples per pixel, captioned with the mode and its RMSE at 64 samples, side by
+//! side in `DIR/<scene>.png`.
 
 use glam::DVec3;
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::cli::{
     command_options, example_command, image_size, options_or_exit, positive_count, seed,
 };
+use ray_footprint_lab::figure::{grid, write_png, Panel, RgbaImage};
 use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, ErrorSplit};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms};
 use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer};
 use ray_footprint_lab::timing::{gpu_clocks, median, round_order, warm_up, Spread};
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// The default seed.
@@ -60,11 +66,14 @@ struct Options {
     reference_samples: usize,
     texture_size: Option<u32>,
     scenes: Vec<LabScene>,
+    /// Where the captioned crops go, if anywhere.
+    crops: Option<PathBuf>,
 }
 
 fn usage() -> String {
     format!(
-        "usage: path_image_gpu [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all]\n\
+        "usage: path_image_gpu [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] \
+         [--crops DIR]\n\
          defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all, \
          each scene's own texture",
         DEFAULT_SIZE.0, DEFAULT_SIZE.1
@@ -78,6 +87,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         reference_samples: DEFAULT_REFERENCE_SAMPLES,
         texture_size: None,
         scenes: texture_scenes(LabScene::all()),
+        crops: None,
     };
     for (flag, value) in command_options(args)? {
         match flag.as_str() {
@@ -91,6 +101,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
                 }
                 options.texture_size = Some(size as u32);
             }
+            "--crops" => options.crops = Some(PathBuf::from(value)),
             "--scene" if value == "all" => options.scenes = texture_scenes(LabScene::all()),
             "--scene" => {
                 options.scenes = texture_scenes(LabScene::all())
@@ -257,6 +268,11 @@ fn measure_scene(
     let reference: Vec<DVec3> = r1.iter().zip(&r2).map(|(a, b)| 0.5 * (*a + *b)).collect();
     let reference_variance = mean_squared_difference(&r1, &r2) / 4.0;
     let mut results = Vec::new();
+    let crop = |image: &[DVec3]| crop_of(image, options.size, scene.crop);
+    let mut panels = vec![Panel::new(
+        format!("reference (path_mip0, 2 x {} spp)", options.reference_samples),
+        crop(&reference),
+    )];
     for (pipeline, frame) in pipelines.iter().zip(&frames) {
         let equal_time_samples =
             ((EQUAL_TIME_SAMPLES as f64 * frames[0].median / frame.median) as usize).max(1);
@@ -272,6 +288,18 @@ fn measure_scene(
                 .expect("a checkpoint");
             error_split(&a[at], &b[at], &reference, reference_variance)
         };
+        let at_64 = checkpoints
+            .iter()
+            .position(|&c| c == SAMPLES[SAMPLES.len() - 1])
+            .expect("a checkpoint");
+        panels.push(Panel::new(
+            format!(
+                "{}, 64 spp: RMSE {:.4}",
+                pipeline.mode(),
+                split_at(SAMPLES[SAMPLES.len() - 1]).rmse
+            ),
+            crop(&a[at_64]),
+        ));
         results.push(ModeResult {
             mode: pipeline.mode(),
             frame: *frame,
@@ -280,6 +308,9 @@ fn measure_scene(
             equal_time: split_at(equal_time_samples),
         });
     }
+    if let Some(dir) = &options.crops {
+        write_crops(dir, scene.name, panels)?;
+    }
     print_scene(
         scene,
         &results,
@@ -287,6 +318,38 @@ fn measure_scene(
         started.elapsed().as_secs_f64(),
     );
     Ok(results)
+}
+
+/// The part `fraction` (left, top, width, height of the image) of the linear image `image` of
+/// `size`, as RGBA8 at gamma 2.2.
+fn crop_of(image: &[DVec3], (width, height): (u32, u32), fraction: [f32; 4]) -> RgbaImage {
+    let encode = |value: f64| (value.clamp(0.0, 1.0).powf(1.0 / 2.2) * 255.0).round() as u8;
+    let full = RgbaImage {
+        width,
+        height,
+        pixels: image
+            .iter()
+            .map(|c| [encode(c.x), encode(c.y), encode(c.z), 255])
+            .collect(),
+    };
+    let (w, h) = (width as f32, height as f32);
+    let corner = ((fraction[0] * w) as u32, (fraction[1] * h) as u32);
+    let size = (
+        ((fraction[2] * w) as u32).max(1),
+        ((fraction[3] * h) as u32).max(1),
+    );
+    full.crop(corner, size, 1)
+}
+
+/// The panels in rows of four, to `dir/<scene>.png`.
+fn write_crops(dir: &std::path::Path, scene: &str, panels: Vec<Panel>) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|error| format!("creating {}: {error}", dir.display()))?;
+    let rows: Vec<Vec<Panel>> = panels.chunks(4).map(<[Panel]>::to_vec).collect();
+    let figure = grid(&rows).map_err(|error| error.to_string())?;
+    let path = dir.join(format!("{scene}.png"));
+    write_png(&path, &figure).map_err(|error| error.to_string())?;
+    println!("wrote {}", path.display());
+    Ok(())
 }
 
 fn print_scene(scene: &LabScene, results: &[ModeResult], reference_noise: f64, seconds: f64) {
