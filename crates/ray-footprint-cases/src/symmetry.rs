@@ -483,7 +483,7 @@ fn symmetric_case<A: Args + Perturb, R: Value>(
 
 /// The bound of each component of `|restore(f(transform(x))) - f(x)|`: the record's bound at the
 /// case (`result`: its components) plus its bound at the transformed case carried through the
-/// restore.
+/// restore ([`transformed_bounds`]).
 fn symmetric_bounds<A: Args + Perturb, R: Value>(
     tolerance: &Tolerance<A>,
     mirror: &dyn Fn(A) -> R,
@@ -494,14 +494,28 @@ fn symmetric_bounds<A: Args + Perturb, R: Value>(
     let change = symmetry.change(case_seed(args));
     let transformed = symmetry.transform(args, &change);
     let transformed_result = mirror(transformed.clone());
+    transformed_bounds(
+        tolerance,
+        symmetry,
+        (args, result),
+        (&transformed, &transformed_result),
+        &change,
+    )
+}
+
+/// [`symmetric_bounds`] where the transformed case `transformed` (under `change`) and its result
+/// `transformed_result` are known.
+fn transformed_bounds<A: Args + Perturb, R: Value>(
+    tolerance: &Tolerance<A>,
+    symmetry: &Symmetry<A, R>,
+    (args, result): (&A, &[f32]),
+    (transformed, transformed_result): (&A, &R),
+    change: &Change,
+) -> Vec<f32> {
     let (mut at_case, mut at_transformed) = (Vec::new(), Vec::new());
     tolerance.bounds(args, result, &mut at_case);
-    tolerance.bounds(
-        &transformed,
-        &components(&transformed_result),
-        &mut at_transformed,
-    );
-    let carried = symmetry.restored_bounds(&transformed_result, &at_transformed, &change);
+    tolerance.bounds(transformed, &components(transformed_result), &mut at_transformed);
+    let carried = symmetry.restored_bounds(transformed_result, &at_transformed, change);
     at_case.iter().zip(carried).map(|(a, b)| a + b).collect()
 }
 
@@ -528,7 +542,6 @@ pub(crate) fn run_on_mirror<A: Args + Perturb, R: Value>(
         failure: None,
     };
     let (mut expected, mut bounds, mut vacuous) = (Vec::new(), Vec::new(), 0);
-    let mirror = |args: A| record.mirror(args);
     while report.cases < cases && report.left_out < 4 * cases {
         let Ok(tree) = strategy.new_tree(&mut runner) else {
             report.left_out += 1;
@@ -539,8 +552,15 @@ pub(crate) fn run_on_mirror<A: Args + Perturb, R: Value>(
             continue;
         };
         let result = components(&record.mirror(args.clone()));
-        let restored = components(&symmetry.restore(record.mirror(transformed.clone()), &change));
-        let bound = symmetric_bounds(record.tolerance(), &mirror, symmetry, &args, &result);
+        let transformed_result = record.mirror(transformed.clone());
+        let restored = components(&symmetry.restore(transformed_result.clone(), &change));
+        let bound = transformed_bounds(
+            record.tolerance(),
+            symmetry,
+            (&args, &result),
+            (&transformed, &transformed_result),
+            &change,
+        );
         for (component, ((&got, &want), &limit)) in restored.iter().zip(&result).zip(&bound).enumerate() {
             let difference = (got - want).abs();
             let finite = got.is_finite() == want.is_finite() || !args.is_finite();

@@ -38,12 +38,11 @@ use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::cli::{command_options, count_at_least, options_or_exit, positive_count};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::RtPushConstants;
-use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Error, Mode, Renderer, TEXTURE_SIZE};
-use ray_footprint_lab::timing::{self, gpu_clocks, round_order, verdict, warm_up, Spread, Verdict};
+use ray_footprint_lab::rt::{enlarged, open_device, Error, Mode, Renderer, TEXTURE_SIZE};
+use ray_footprint_lab::timing::{self, gpu_clocks, verdict, warm_up, Spread, Verdict};
 use shader_proptest::spirv::{self, Statistics};
 use std::fmt::Write as _;
 use std::process::ExitCode;
-use std::time::Duration;
 
 /// The goal for the ray-cone LOD: at most this share added to the mip-0 frame.
 const CONE_GOAL: f64 = 0.05;
@@ -221,29 +220,6 @@ fn wireframe_settings(scene: &LabScene) -> WireframeSettings {
     }
 }
 
-/// One round: `frames` frames of every pipeline in the round's order; each pipeline's median frame
-/// time in ms, in the run's mode order.
-fn round(
-    renderer: &Renderer<'_>,
-    pipelines: &[ColourPipeline<'_, '_>],
-    samples: &[RtPushConstants],
-    uniforms: &ray_footprint_lab::rt::abi::RtUniforms,
-    (frames, round): (usize, usize),
-) -> Result<Vec<f64>, Error> {
-    let order = round_order(pipelines.len(), round);
-    let runs: Vec<_> = order.iter().map(|&index| (&pipelines[index], frames)).collect();
-    let times = renderer.time_colour_frames(&runs, samples, uniforms)?;
-    let mut medians = vec![0.0; pipelines.len()];
-    for (&index, run_times) in order.iter().zip(&times) {
-        let ms: Vec<f64> = run_times
-            .iter()
-            .map(|t: &Duration| t.as_secs_f64() * 1e3)
-            .collect();
-        medians[index] = timing::median(&ms);
-    }
-    Ok(medians)
-}
-
 /// Times every mode on `scene` and prints its table; returns its rows.
 fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Result<Vec<Row>, Failure> {
     let texture = match run.texture_size {
@@ -260,12 +236,13 @@ fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Res
     let samples = samples(&renderer, scene, run);
     let uniforms = scene.camera.uniforms(run.size, wireframe_settings(scene));
     let warm = warm_up(run.max_warm_up_rounds, || {
-        round(&renderer, &pipelines, &samples, &uniforms, (run.frames, 0))
+        renderer
+            .time_colour_round(&pipelines, &samples, &uniforms, (run.frames, 0))
             .map(|medians| timing::median(&medians))
     })?;
     let mut round_medians = vec![Vec::with_capacity(run.rounds); pipelines.len()];
     for number in 0..run.rounds {
-        let medians = round(&renderer, &pipelines, &samples, &uniforms, (run.frames, number))?;
+        let medians = renderer.time_colour_round(&pipelines, &samples, &uniforms, (run.frames, number))?;
         for (mode_medians, median) in round_medians.iter_mut().zip(medians) {
             mode_medians.push(median);
         }

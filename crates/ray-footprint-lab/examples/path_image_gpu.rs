@@ -31,7 +31,7 @@ use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, Erro
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms};
 use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer};
-use ray_footprint_lab::timing::{gpu_clocks, median, round_order, warm_up, Spread};
+use ray_footprint_lab::timing::{gpu_clocks, median, warm_up, Spread};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -50,15 +50,10 @@ const ROUNDS: usize = 8;
 const FRAMES_PER_ROUND: usize = 32;
 const MAX_WARM_UP_ROUNDS: usize = 20;
 
-/// The path modes, `path_mip0` first.
-const PATH_MODES: [Mode; 6] = [
-    Mode::PathMip0,
-    Mode::PathCone,
-    Mode::PathCurvature,
-    Mode::PathRoughness,
-    Mode::PathRtxpt,
-    Mode::PathOptix,
-];
+/// The path modes, in `Mode::ALL`'s order: `path_mip0` first.
+fn path_modes() -> Vec<Mode> {
+    Mode::ALL.into_iter().filter(|mode| mode.traces_paths()).collect()
+}
 
 struct Options {
     seed: u64,
@@ -169,36 +164,11 @@ fn render_means(
             );
         }
         let count = index + 1;
-        for _ in checkpoints.iter().filter(|&&c| c == count) {
+        if checkpoints.contains(&count) {
             means.push(sum.iter().map(|total| *total / count as f64).collect());
         }
     }
     Ok(means)
-}
-
-/// One round: [`FRAMES_PER_ROUND`] frames of every pipeline, in the round's order; each
-/// pipeline's median frame time in ms.
-fn round(
-    renderer: &Renderer<'_>,
-    pipelines: &[ColourPipeline<'_, '_>],
-    base: &RtPushConstants,
-    uniforms: &RtUniforms,
-    number: usize,
-) -> Result<Vec<f64>, String> {
-    let order = round_order(pipelines.len(), number);
-    let runs: Vec<_> = order
-        .iter()
-        .map(|&index| (&pipelines[index], FRAMES_PER_ROUND))
-        .collect();
-    let times = renderer
-        .time_colour_frames(&runs, std::slice::from_ref(base), uniforms)
-        .map_err(|error| error.to_string())?;
-    let mut medians = vec![0.0; pipelines.len()];
-    for (&index, run) in order.iter().zip(&times) {
-        let ms: Vec<f64> = run.iter().map(|t| t.as_secs_f64() * 1e3).collect();
-        medians[index] = median(&ms);
-    }
-    Ok(medians)
 }
 
 /// Each pipeline's frame time in ms, the spread of its [`ROUNDS`] round medians, after warm-up
@@ -209,15 +179,16 @@ fn frame_times(
     base: &RtPushConstants,
     uniforms: &RtUniforms,
 ) -> Result<Vec<Spread>, String> {
-    warm_up(MAX_WARM_UP_ROUNDS, || {
-        round(renderer, pipelines, base, uniforms, 0).map(|medians| median(&medians))
-    })?;
+    let samples = std::slice::from_ref(base);
+    let round = |number: usize| {
+        renderer
+            .time_colour_round(pipelines, samples, uniforms, (FRAMES_PER_ROUND, number))
+            .map_err(|error| error.to_string())
+    };
+    warm_up(MAX_WARM_UP_ROUNDS, || round(0).map(|medians| median(&medians)))?;
     let mut medians = vec![Vec::with_capacity(ROUNDS); pipelines.len()];
     for number in 0..ROUNDS {
-        for (mode_medians, value) in medians
-            .iter_mut()
-            .zip(round(renderer, pipelines, base, uniforms, number)?)
-        {
+        for (mode_medians, value) in medians.iter_mut().zip(round(number)?) {
             mode_medians.push(value);
         }
     }
@@ -246,9 +217,9 @@ fn measure_scene(
         None => scene.texture.clone(),
     };
     let renderer = Renderer::with_texture(gpu, scene.scene.clone(), texture).map_err(|e| e.to_string())?;
-    let pipelines = PATH_MODES
-        .iter()
-        .map(|&mode| renderer.colour_pipeline(mode))
+    let pipelines = path_modes()
+        .into_iter()
+        .map(|mode| renderer.colour_pipeline(mode))
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| e.to_string())?;
     let (width, height) = options.size;
@@ -332,13 +303,7 @@ fn crop_of(image: &[DVec3], (width, height): (u32, u32), fraction: [f32; 4]) -> 
             .map(|c| [encode(c.x), encode(c.y), encode(c.z), 255])
             .collect(),
     };
-    let (w, h) = (width as f32, height as f32);
-    let corner = ((fraction[0] * w) as u32, (fraction[1] * h) as u32);
-    let size = (
-        ((fraction[2] * w) as u32).max(1),
-        ((fraction[3] * h) as u32).max(1),
-    );
-    full.crop(corner, size, 1)
+    full.crop_part(fraction, 1)
 }
 
 /// The panels in rows of four, to `dir/<scene>.png`.
@@ -388,7 +353,7 @@ fn print_summary(all: &[Vec<ModeResult>]) {
     println!("| mode | RMSE / path_mip0's: 4 / 16 / 64 spp | equal time | lowest at 64 spp | lowest at equal time |");
     println!("| --- | ---: | ---: | ---: | ---: |");
     let count = all.len() as f64;
-    for (m, mode) in PATH_MODES.iter().enumerate() {
+    for (m, mode) in path_modes().iter().enumerate() {
         let ratio = |value: &dyn Fn(&ModeResult) -> f64| {
             all.iter()
                 .map(|scene| value(&scene[m]) / value(&scene[0]))

@@ -76,6 +76,18 @@ impl RgbaImage {
         out
     }
 
+    /// The part `fraction` (left, top, width and height, as fractions of the image's size) of
+    /// the image, magnified `zoom` times as [`RgbaImage::crop`] does.
+    pub fn crop_part(&self, fraction: [f32; 4], zoom: u32) -> RgbaImage {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let corner = ((fraction[0] * w) as u32, (fraction[1] * h) as u32);
+        let size = (
+            ((fraction[2] * w) as u32).max(1),
+            ((fraction[3] * h) as u32).max(1),
+        );
+        self.crop(corner, size, zoom)
+    }
+
     /// Copies `image` into this one with its top-left pixel at `(left, top)`, clipped.
     fn paste(&mut self, image: &RgbaImage, (left, top): (u32, u32)) {
         for y in 0..image.height.min(self.height.saturating_sub(top)) {

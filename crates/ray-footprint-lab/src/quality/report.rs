@@ -458,13 +458,7 @@ fn create_dir(path: &Path) -> Result<(), LabError> {
 
 /// The part of `image` the scene's crop covers, magnified.
 fn crop(image: &RgbaImage, fraction: [f32; 4]) -> RgbaImage {
-    let (w, h) = (image.width as f32, image.height as f32);
-    let corner = ((fraction[0] * w) as u32, (fraction[1] * h) as u32);
-    let size = (
-        ((fraction[2] * w) as u32).max(1),
-        ((fraction[3] * h) as u32).max(1),
-    );
-    image.crop(corner, size, CROP_ZOOM)
+    image.crop_part(fraction, CROP_ZOOM)
 }
 
 /// `panels` in rows of [`PANELS_PER_ROW`].

@@ -8,7 +8,7 @@ use super::super::abi::{RtPushConstants, RtUniforms};
 use super::super::mode::Mode;
 use super::super::pipeline::{self, RayTracing, COLOUR_STAGES, SHADER_DIR};
 use super::{Error, Frame, Records, Renderer, Target};
-use crate::timing::{query_pool, read_queries, write_timestamp, Timestamps};
+use crate::timing::{median, query_pool, read_queries, round_order, write_timestamp, Timestamps};
 use ash::vk;
 use ray_footprint::shaders::GLSL_INCLUDE_DIR;
 use shader_proptest::layout::{glsl_layout, GlslPacking};
@@ -146,6 +146,30 @@ impl<'g> Renderer<'g> {
             rest = after;
         }
         Ok(runs_times)
+    }
+}
+
+impl<'g> Renderer<'g> {
+    /// Round `round` of an interleaved timing: `frames` frames of every pipeline of `pipelines`
+    /// in the round's order ([`round_order`]: reversed every other round), as
+    /// [`Renderer::time_colour_frames`] times them; each pipeline's median frame time in ms, in
+    /// the order of `pipelines`.
+    pub fn time_colour_round(
+        &self,
+        pipelines: &[ColourPipeline<'_, 'g>],
+        samples: &[RtPushConstants],
+        uniforms: &RtUniforms,
+        (frames, round): (usize, usize),
+    ) -> Result<Vec<f64>, Error> {
+        let order = round_order(pipelines.len(), round);
+        let runs: Vec<_> = order.iter().map(|&index| (&pipelines[index], frames)).collect();
+        let times = self.time_colour_frames(&runs, samples, uniforms)?;
+        let mut medians = vec![0.0; pipelines.len()];
+        for (&index, run_times) in order.iter().zip(&times) {
+            let ms: Vec<f64> = run_times.iter().map(|t| t.as_secs_f64() * 1e3).collect();
+            medians[index] = median(&ms);
+        }
+        Ok(medians)
     }
 }
 

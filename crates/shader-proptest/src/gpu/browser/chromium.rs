@@ -151,10 +151,12 @@ impl Chromium {
 
     /// Opens `url` in a new tab and waits for it to load.
     pub fn open(&self, url: &str) -> Result<BrowserPage, Error> {
+        let loading = format!("loading {url}");
+        let failed = |problem: &dyn std::fmt::Display| devtools_failure(&loading, problem);
         let call = |session: Option<&str>, method: &str, params: Value| {
             self.devtools
                 .call(session, method, params, self.timeout)
-                .map_err(|error| devtools_failure(&format!("loading {url}"), error))
+                .map_err(|error| failed(&error))
         };
         let target = call(None, "Target.createTarget", json!({ "url": "about:blank" }))?;
         let attached = call(
@@ -164,7 +166,7 @@ impl Chromium {
         )?;
         let session = attached["sessionId"]
             .as_str()
-            .ok_or_else(|| devtools_failure(&format!("loading {url}"), "no session for the new tab"))?
+            .ok_or_else(|| failed(&"no session for the new tab"))?
             .to_string();
         let events = self.devtools.events(&session);
         call(Some(&session), "Page.enable", json!({}))?;
@@ -176,11 +178,11 @@ impl Chromium {
         let started = Instant::now();
         let navigated = call(Some(&session), "Page.navigate", json!({ "url": url }))?;
         if let Some(problem) = navigated["errorText"].as_str() {
-            return Err(devtools_failure(&format!("loading {url}"), problem));
+            return Err(failed(&problem));
         }
         let loader = navigated["loaderId"].clone();
         wait_for_load(&events, &loader, self.timeout.saturating_sub(started.elapsed()))
-            .map_err(|problem| devtools_failure(&format!("loading {url}"), problem))?;
+            .map_err(|problem| failed(&problem))?;
         Ok(BrowserPage {
             devtools: Arc::clone(&self.devtools),
             session,
