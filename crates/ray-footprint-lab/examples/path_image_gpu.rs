@@ -14,12 +14,18 @@
 //!
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example path_image_gpu -- \
-//!     [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] [--crops DIR]
+//!     [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] [--crops DIR] \
+//!     [--biases B,B,..]
 //! ```
 //!
 //! With `--crops DIR`, each scene's crop (the quality lab's) of the reference and of every mode's
 //! render `A` at 64 samples per pixel, captioned with the mode and its RMSE at 64 samples, side by
 //! side in `DIR/<scene>.png`.
+//!
+//! With `--biases`, `path_bias` is also rendered at each of the listed level-of-detail biases
+//! (`RtPushConstants::lod_bias`, in mip levels, added past the first hit) at equal samples, and
+//! the summary gives each bias' RMSE over `path_mip0`'s: the sweep that picks
+//! `ray_footprint_lab::rt::PATH_LOD_BIAS` (`--biases -2,-1.5,-1,-0.5,0,0.5,1,1.5,2,2.5,3`).
 
 use glam::DVec3;
 use ray_footprint::wireframe::WireframeSettings;
@@ -30,7 +36,7 @@ use ray_footprint_lab::figure::{grid, write_png, Panel, RgbaImage};
 use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, ErrorSplit};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms};
-use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer};
+use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer, PATH_LOD_BIAS};
 use ray_footprint_lab::timing::{gpu_clocks, median, warm_up, Spread};
 use std::path::PathBuf;
 use std::time::Instant;
@@ -63,12 +69,14 @@ struct Options {
     scenes: Vec<LabScene>,
     /// Where the captioned crops go, if anywhere.
     crops: Option<PathBuf>,
+    /// The biases `path_bias` is also rendered at, in mip levels (none by default).
+    biases: Vec<f32>,
 }
 
 fn usage() -> String {
     format!(
         "usage: path_image_gpu [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] \
-         [--crops DIR]\n\
+         [--crops DIR] [--biases B,B,..]\n\
          defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all, \
          each scene's own texture",
         DEFAULT_SIZE.0, DEFAULT_SIZE.1
@@ -83,6 +91,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         texture_size: None,
         scenes: texture_scenes(LabScene::all()),
         crops: None,
+        biases: Vec::new(),
     };
     for (flag, value) in command_options(args)? {
         match flag.as_str() {
@@ -97,6 +106,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
                 options.texture_size = Some(size as u32);
             }
             "--crops" => options.crops = Some(PathBuf::from(value)),
+            "--biases" => options.biases = biases(&flag, &value)?,
             "--scene" if value == "all" => options.scenes = texture_scenes(LabScene::all()),
             "--scene" => {
                 options.scenes = texture_scenes(LabScene::all())
@@ -111,6 +121,17 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         }
     }
     Ok(options)
+}
+
+/// The comma-separated finite numbers of `value`, or the message that names the option.
+fn biases(flag: &str, value: &str) -> Result<Vec<f32>, String> {
+    value
+        .split(',')
+        .map(|item| match item.trim().parse::<f32>() {
+            Ok(bias) if bias.is_finite() => Ok(bias),
+            _ => Err(format!("{flag} {value}: '{item}' is not a finite number of mip levels")),
+        })
+        .collect()
 }
 
 /// The scenes that measure a texture (the wireframe's torus draws lines).
@@ -195,6 +216,39 @@ fn frame_times(
     Ok(medians.iter().map(|m| Spread::of(m)).collect())
 }
 
+/// The reference: the mean of two renders of independent streams, and its variance per value.
+struct Reference {
+    mean: Vec<DVec3>,
+    variance: f64,
+}
+
+/// Renders `A` and `B` of `pipeline` (streams `streams`) at every count of `checkpoints`
+/// (ascending) and splits each pair's error against `reference`: render `A`'s means and the
+/// splits, in the order of `checkpoints`.
+fn split_renders(
+    pipeline: &ColourPipeline<'_, '_>,
+    (push, uniforms): (&RtPushConstants, &RtUniforms),
+    streams: [u64; 2],
+    checkpoints: &[usize],
+    reference: &Reference,
+) -> Result<(Vec<Vec<DVec3>>, Vec<ErrorSplit>), String> {
+    let a = render_means(pipeline, push, uniforms, streams[0], checkpoints)?;
+    let b = render_means(pipeline, push, uniforms, streams[1], checkpoints)?;
+    let splits = a
+        .iter()
+        .zip(&b)
+        .map(|(a, b)| error_split(a, b, &reference.mean, reference.variance))
+        .collect();
+    Ok((a, splits))
+}
+
+/// One scene's results: every path mode's, and `path_bias`' at each bias of `--biases` at
+/// [`SAMPLES`].
+struct SceneResult {
+    modes: Vec<ModeResult>,
+    sweep: Vec<Vec<ErrorSplit>>,
+}
+
 /// One mode's results on one scene.
 struct ModeResult {
     mode: Mode,
@@ -205,12 +259,13 @@ struct ModeResult {
     equal_time: ErrorSplit,
 }
 
-/// Measures every path mode on `scene`; prints its table and returns the results.
+/// Measures every path mode on `scene`, and `path_bias` at each of `options.biases`; prints its
+/// table and returns the results.
 fn measure_scene(
     gpu: &shader_proptest::Gpu,
     scene: &LabScene,
     options: &Options,
-) -> Result<Vec<ModeResult>, String> {
+) -> Result<SceneResult, String> {
     let started = Instant::now();
     let texture = match options.texture_size {
         Some(size) => enlarged(&scene.texture, size),
@@ -227,22 +282,19 @@ fn measure_scene(
     base.flags = scene.truth_flags;
     let uniforms = scene.camera.uniforms(options.size, WireframeSettings::default());
     let frames = frame_times(&renderer, &pipelines, &base, &uniforms)?;
-    let streams = [
-        4 * options.seed,
-        4 * options.seed + 1,
-        4 * options.seed + 2,
-        4 * options.seed + 3,
-    ];
+    let renders = [4 * options.seed, 4 * options.seed + 1];
     let reference_count = [options.reference_samples];
-    let r1 = render_means(&pipelines[0], &base, &uniforms, streams[2], &reference_count)?.remove(0);
-    let r2 = render_means(&pipelines[0], &base, &uniforms, streams[3], &reference_count)?.remove(0);
-    let reference: Vec<DVec3> = r1.iter().zip(&r2).map(|(a, b)| 0.5 * (*a + *b)).collect();
-    let reference_variance = mean_squared_difference(&r1, &r2) / 4.0;
+    let r1 = render_means(&pipelines[0], &base, &uniforms, 4 * options.seed + 2, &reference_count)?.remove(0);
+    let r2 = render_means(&pipelines[0], &base, &uniforms, 4 * options.seed + 3, &reference_count)?.remove(0);
+    let reference = Reference {
+        mean: r1.iter().zip(&r2).map(|(a, b)| 0.5 * (*a + *b)).collect(),
+        variance: mean_squared_difference(&r1, &r2) / 4.0,
+    };
     let mut results = Vec::new();
     let crop = |image: &[DVec3]| crop_of(image, options.size, scene.crop);
     let mut panels = vec![Panel::new(
         format!("reference (path_mip0, 2 x {} spp)", options.reference_samples),
-        crop(&reference),
+        crop(&reference.mean),
     )];
     for (pipeline, frame) in pipelines.iter().zip(&frames) {
         let equal_time_samples =
@@ -250,26 +302,18 @@ fn measure_scene(
         let mut checkpoints: Vec<usize> = SAMPLES.iter().copied().chain([equal_time_samples]).collect();
         checkpoints.sort_unstable();
         checkpoints.dedup();
-        let a = render_means(pipeline, &base, &uniforms, streams[0], &checkpoints)?;
-        let b = render_means(pipeline, &base, &uniforms, streams[1], &checkpoints)?;
-        let split_at = |count: usize| {
-            let at = checkpoints
+        let (a, splits) = split_renders(pipeline, (&base, &uniforms), renders, &checkpoints, &reference)?;
+        let at = |count: usize| {
+            checkpoints
                 .iter()
                 .position(|&c| c == count)
-                .expect("a checkpoint");
-            error_split(&a[at], &b[at], &reference, reference_variance)
+                .expect("a checkpoint")
         };
-        let at_64 = checkpoints
-            .iter()
-            .position(|&c| c == SAMPLES[SAMPLES.len() - 1])
-            .expect("a checkpoint");
+        let split_at = |count: usize| splits[at(count)];
+        let most = SAMPLES[SAMPLES.len() - 1];
         panels.push(Panel::new(
-            format!(
-                "{}, 64 spp: RMSE {:.4}",
-                pipeline.mode(),
-                split_at(SAMPLES[SAMPLES.len() - 1]).rmse
-            ),
-            crop(&a[at_64]),
+            format!("{}, 64 spp: RMSE {:.4}", pipeline.mode(), split_at(most).rmse),
+            crop(&a[at(most)]),
         ));
         results.push(ModeResult {
             mode: pipeline.mode(),
@@ -282,13 +326,22 @@ fn measure_scene(
     if let Some(dir) = &options.crops {
         write_crops(dir, scene.name, panels)?;
     }
+    let biased = pipelines
+        .iter()
+        .find(|pipeline| pipeline.mode() == Mode::PathBias)
+        .expect("path_bias is a path mode");
+    let mut sweep = Vec::with_capacity(options.biases.len());
+    for &lod_bias in &options.biases {
+        let push = RtPushConstants { lod_bias, ..base };
+        sweep.push(split_renders(biased, (&push, &uniforms), renders, &SAMPLES, &reference)?.1);
+    }
     print_scene(
         scene,
         &results,
-        reference_variance.sqrt(),
+        reference.variance.sqrt(),
         started.elapsed().as_secs_f64(),
     );
-    Ok(results)
+    Ok(SceneResult { modes: results, sweep })
 }
 
 /// The part `fraction` (left, top, width, height of the image) of the linear image `image` of
@@ -348,7 +401,7 @@ fn print_scene(scene: &LabScene, results: &[ModeResult], reference_noise: f64, s
 
 /// The mean over the scenes of each mode's RMSE over `path_mip0`'s, at each sample count and at
 /// equal time, and the scenes where the mode's RMSE is the lowest at 64 samples and at equal time.
-fn print_summary(all: &[Vec<ModeResult>]) {
+fn print_summary(all: &[SceneResult]) {
     println!("\n## Over the scenes\n");
     println!("| mode | RMSE / path_mip0's: 4 / 16 / 64 spp | equal time | lowest at 64 spp | lowest at equal time |");
     println!("| --- | ---: | ---: | ---: | ---: |");
@@ -356,7 +409,7 @@ fn print_summary(all: &[Vec<ModeResult>]) {
     for (m, mode) in path_modes().iter().enumerate() {
         let ratio = |value: &dyn Fn(&ModeResult) -> f64| {
             all.iter()
-                .map(|scene| value(&scene[m]) / value(&scene[0]))
+                .map(|scene| value(&scene.modes[m]) / value(&scene.modes[0]))
                 .sum::<f64>()
                 / count
         };
@@ -365,7 +418,7 @@ fn print_summary(all: &[Vec<ModeResult>]) {
             .collect();
         let lowest = |value: &dyn Fn(&ModeResult) -> f64| {
             all.iter()
-                .filter(|scene| scene.iter().all(|other| value(&scene[m]) <= value(other)))
+                .filter(|scene| scene.modes.iter().all(|other| value(&scene.modes[m]) <= value(other)))
                 .count()
         };
         println!(
@@ -380,6 +433,37 @@ fn print_summary(all: &[Vec<ModeResult>]) {
     }
 }
 
+/// The sweep of `path_bias`' bias: per bias, the mean over the scenes of its RMSE over
+/// `path_mip0`'s at each sample count, and the bias with the lowest mean at 64 samples.
+fn print_sweep(all: &[SceneResult], biases: &[f32]) {
+    if biases.is_empty() {
+        return;
+    }
+    println!("\n## path_bias' bias, swept\n");
+    println!("| bias (mip levels, past the first hit) | RMSE / path_mip0's: 4 / 16 / 64 spp |");
+    println!("| ---: | ---: |");
+    let ratio = |b: usize, c: usize| {
+        all.iter()
+            .map(|scene| scene.sweep[b][c].rmse / scene.modes[0].equal_samples[c].rmse)
+            .sum::<f64>()
+            / all.len() as f64
+    };
+    let most = SAMPLES.len() - 1;
+    for (b, bias) in biases.iter().enumerate() {
+        let ratios: Vec<String> = (0..SAMPLES.len()).map(|c| format!("{:.3}", ratio(b, c))).collect();
+        println!("| {bias:+.2} | {} |", ratios.join(" / "));
+    }
+    let best = (0..biases.len())
+        .min_by(|&x, &y| ratio(x, most).total_cmp(&ratio(y, most)))
+        .expect("a bias");
+    println!(
+        "\nlowest at {} spp: bias {:+.2} ({:.3} of path_mip0's RMSE)",
+        SAMPLES[most],
+        biases[best],
+        ratio(best, most)
+    );
+}
+
 fn main() {
     let options = options_or_exit(parse_args(std::env::args().skip(1)), &usage());
     let started = Instant::now();
@@ -391,8 +475,8 @@ fn main() {
     println!("GPU clocks at the start: {}\n", gpu_clocks());
     println!("command: `{}`\n", example_command("path_image_gpu"));
     println!(
-        "device {}, driver {}; seed {}, image {}x{}, texture {}; samples per pixel {:?} (renders A and B: streams 4 seed and \
-         4 seed + 1); reference: path_mip0, two renders of {} spp (streams 4 seed + 2 and + 3), averaged; equal \
+        "device {}, driver {}; seed {}, image {}x{}, texture {}; path_bias at bias {PATH_LOD_BIAS:+.2}; samples per \
+         pixel {:?} (renders A and B: streams 4 seed and 4 seed + 1); reference: path_mip0, two renders of {} spp (streams 4 seed + 2 and + 3), averaged; equal \
          time: path_mip0 at {EQUAL_TIME_SAMPLES} spp, frame times from {ROUNDS} interleaved rounds of \
          {FRAMES_PER_ROUND} frames after warm-up rounds.\n",
         gpu.name(),
@@ -420,6 +504,7 @@ fn main() {
         }
     }
     print_summary(&all);
+    print_sweep(&all, &options.biases);
     println!("\nGPU clocks at the end: {}", gpu_clocks());
     println!("\nwall time {:.1} s", started.elapsed().as_secs_f64());
 }

@@ -64,8 +64,9 @@ pub struct RtPushConstants {
     pub pixel_offset: glam::Vec2,
     /// What the frame renders besides its mode: a sum of the `FLAG_*` constants, 0 for none.
     pub flags: u32,
-    /// Always 0.
-    pub pad: u32,
+    /// The mip levels [`crate::rt::Mode::PathBias`] adds to the level of detail of every textured
+    /// vertex past the first hit ([`crate::rt::PATH_LOD_BIAS`] by default); no other mode reads it.
+    pub lod_bias: f32,
 }
 
 /// [`RtPushConstants::flags`]: the mirrors reflect about a normal drawn from the GGX distribution of
@@ -237,7 +238,7 @@ const _: () =
 pub fn layouts() -> Vec<shader_proptest::layout::StructLayout> {
     use shader_proptest::rust_layout;
     vec![
-        rust_layout!(RtPushConstants as "RtPushConstants" { eye, tan_half_fov_y, right, aspect, up, texture_size, forward, mode, cone, width, height, pixel_offset, flags, pad }),
+        rust_layout!(RtPushConstants as "RtPushConstants" { eye, tan_half_fov_y, right, aspect, up, texture_size, forward, mode, cone, width, height, pixel_offset, flags, lod_bias }),
         rust_layout!(RtDiffRecord as "RtDiffRecord" { eye_d_direction_dx, lod, eye_d_direction_dy, offset_lod, barycentric_dx, barycentric_dy, uv_dx, uv_dy, neighbour_right, coverage, neighbour_below, pad0, offset_dx, pad1, offset_dy, pad2, offset_uv_dx, offset_uv_dy, deltas, pad3, cone_deltas, pad4 }),
         rust_layout!(RtPixelRecord as "RtPixelRecord" { normal, t, direction, instance, barycentrics, primitive, hit, cone, width, footprint, texel_density, base_lod, lod, gradient, curvature, curvature_spread, reflected, diff, roughness_spread, eta, normal_spread, total_internal_reflection, refracted, cone_uv_dx, cone_uv_dy, sagittal }),
         rust_layout!(RtUniforms as "RtUniforms" { view_inv, proj_inv, wireframe }),

@@ -65,7 +65,7 @@ mod renderer;
 mod scene;
 mod texture;
 
-pub use mode::{Mode, Payload};
+pub use mode::{Mode, Payload, PATH_LOD_BIAS};
 pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
 pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
 pub use scene::{

@@ -10,7 +10,7 @@ use std::fmt;
 /// reflection off a mirror widens its cone by the surface curvature and roughness, whether glass
 /// refracts the cone (and its second section), whether a reflected or refracted ray carries a ray
 /// differential, and whether the wireframe is drawn. Every mode but the path tracers reflects
-/// and refracts the same rays; the path tracers (`PathMip0` to `PathOptix`) scatter from every
+/// and refracts the same rays; the path tracers (`PathMip0` to `PathBias`) scatter from every
 /// surface, and trace the same paths as each other. The ray-differential modes carry the differential through mirrors and glass (Igehy's
 /// reflection and refraction); the re-intersection of `BaryGradients` needs a primary hit: what
 /// the mirror reflects is sampled at the ray-cone LOD in it. The cone modes other than `ConeRefraction` and `ConeSections` carry the
@@ -101,11 +101,20 @@ pub enum Mode {
     /// `scatterBsdf`, `0.25 min(1, 1 / (pi f_s))` with `f_s` the BSDF value of the direction
     /// drawn, the cone set to the diffuse angle 0.25 once it reaches it.
     PathOptix = 19,
+    /// `PathCurvature` with one global level-of-detail bias, `RtPushConstants::lod_bias` mip
+    /// levels, added to the LOD of every textured vertex past the first hit: what Falcor's path
+    /// tracer does at secondary hits (one `lodBias` for all of them). [`PATH_LOD_BIAS`] by
+    /// default, the best of the sweep `path_image_gpu --bias-sweep` prints.
+    PathBias = 20,
 }
+
+/// The level-of-detail bias of [`Mode::PathBias`] that the renderer's push constants carry by
+/// default, in mip levels.
+pub const PATH_LOD_BIAS: f32 = -0.25;
 
 impl Mode {
     /// Every mode, in gallery order.
-    pub const ALL: [Mode; 20] = [
+    pub const ALL: [Mode; 21] = [
         Mode::Mip0,
         Mode::Cone,
         Mode::ConeCurvature,
@@ -126,6 +135,7 @@ impl Mode {
         Mode::PathRoughness,
         Mode::PathRtxpt,
         Mode::PathOptix,
+        Mode::PathBias,
     ];
 
     /// The discriminant: the value of the mode's `RT_MODE_*` constant in the shaders.
@@ -156,6 +166,7 @@ impl Mode {
             Mode::PathRoughness => "path_roughness",
             Mode::PathRtxpt => "path_rtxpt",
             Mode::PathOptix => "path_optix",
+            Mode::PathBias => "path_bias",
         }
     }
 
@@ -182,6 +193,7 @@ impl Mode {
             Mode::PathRoughness => "path tracer, curvature and twice the roughness spread (JCGT 2021)",
             Mode::PathRtxpt => "path tracer, RTXPT's spread from the direction's pdf",
             Mode::PathOptix => "path tracer, the OptiX Toolkit's reflect and scatterBsdf",
+            Mode::PathBias => "path tracer, path_curvature's LOD plus a global bias past the first hit",
         }
     }
 
@@ -195,6 +207,7 @@ impl Mode {
                 | Mode::PathRoughness
                 | Mode::PathRtxpt
                 | Mode::PathOptix
+                | Mode::PathBias
         )
     }
 

@@ -5,6 +5,7 @@
 //! look up the exact vertices a hit refers to and recompute what the shaders computed.
 
 use super::abi::{RtPushConstants, RtUniforms};
+use super::mode::PATH_LOD_BIAS;
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use ray_footprint::abi::{RayConePushConstants, WireframePushConstants};
 use ray_footprint::ray_cone;
@@ -632,7 +633,7 @@ impl Camera {
             height,
             pixel_offset: Vec2::ZERO,
             flags: 0,
-            pad: 0,
+            lod_bias: PATH_LOD_BIAS,
         }
     }
 

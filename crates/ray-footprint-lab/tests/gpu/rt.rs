@@ -177,6 +177,36 @@ fn glossy_lobe_changes_only_the_rough_mirror() {
     assert_eq!(other_changed, 0, "the lobe changes nothing else");
 }
 
+/// `RtPushConstants::lod_bias` is read by `path_bias` alone, past the first hit: with a bias of 0
+/// it renders `path_curvature`'s pixels exactly; a bias of 6 mip levels changes the colour of
+/// pixels of the materials view whose paths reach the textured ground after the first hit (223 of
+/// 3,072 on lavapipe) and none of `path_cone`'s.
+#[test]
+fn lod_bias_moves_only_path_bias() {
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::materials()).unwrap_or_else(|e| panic!("{e}"));
+    let camera = Camera::materials();
+    let uniforms = camera.uniforms((WIDTH, HEIGHT), WireframeSettings::default());
+    let render = |mode: Mode, lod_bias: f32| {
+        let mut push = renderer.push_constants(&camera, mode, 1.0, WIDTH, HEIGHT);
+        push.lod_bias = lod_bias;
+        renderer
+            .render(&push, &uniforms)
+            .unwrap_or_else(|e| panic!("{mode}: {e}"))
+            .pixels
+    };
+    let changed = |a: &[[u8; 4]], b: &[[u8; 4]]| a.iter().zip(b).filter(|(a, b)| a != b).count();
+    let curvature = render(Mode::PathCurvature, 6.0);
+    let unbiased = changed(&render(Mode::PathBias, 0.0), &curvature);
+    let biased = changed(&render(Mode::PathBias, 6.0), &curvature);
+    let cone = changed(&render(Mode::PathCone, 6.0), &render(Mode::PathCone, 0.0));
+    let pixels = curvature.len();
+    println!("of {pixels} pixels, against path_curvature: bias 0 changes {unbiased}, bias 6 {biased}; path_cone {cone}");
+    assert_eq!(unbiased, 0, "path_bias at bias 0 is path_curvature");
+    assert!(biased > 0, "a bias of 6 levels changes pixels");
+    assert_eq!(cone, 0, "path_cone reads no bias");
+}
+
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
 /// nothing, renders the pixels of the recording pipeline in that mode in every [`colour_views`]
 /// view, to one [`ROUNDING_STEP`].

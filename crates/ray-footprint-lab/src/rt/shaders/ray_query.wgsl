@@ -93,6 +93,11 @@ const RT_MODE_PATH_RTXPT: u32 = 18u;
 // min(1, 1 / (pi f_s)) with f_s the BSDF value of the direction drawn, the cone set to the diffuse
 // angle 0.25 once it reaches it.
 const RT_MODE_PATH_OPTIX: u32 = 19u;
+// PathCurvature with one global level-of-detail bias, RtPushConstants.lod_bias mip levels, added to
+// the LOD of every textured vertex past the first hit: what Falcor's path tracer does at secondary
+// hits (one lodBias for all of them). RT_PATH_LOD_BIAS by default, the best of the sweep
+// path_image_gpu --bias-sweep prints.
+const RT_MODE_PATH_BIAS: u32 = 20u;
 
 // The material id (Material::id) of Material::Textured.
 const RT_MATERIAL_TEXTURED: u32 = 0u;
@@ -158,8 +163,9 @@ struct RtPushConstants {
     pixel_offset: vec2<f32>,
     // What the frame renders besides its mode: a sum of the FLAG_* constants, 0 for none.
     flags: u32,
-    // Always 0.
-    pad: u32,
+    // The mip levels RT_MODE_PATH_BIAS adds to the level of detail of every textured vertex past
+    // the first hit (RT_PATH_LOD_BIAS by default); no other mode reads it.
+    lod_bias: f32,
 }
 
 // What the renderer measured at a pixel's primary hit with the ray_diff and wireframe modules

@@ -95,6 +95,11 @@ const uint RT_MODE_PATH_RTXPT = 18u;
 // min(1, 1 / (pi f_s)) with f_s the BSDF value of the direction drawn, the cone set to the diffuse
 // angle 0.25 once it reaches it.
 const uint RT_MODE_PATH_OPTIX = 19u;
+// PathCurvature with one global level-of-detail bias, RtPushConstants.lod_bias mip levels, added to
+// the LOD of every textured vertex past the first hit: what Falcor's path tracer does at secondary
+// hits (one lodBias for all of them). RT_PATH_LOD_BIAS by default, the best of the sweep
+// path_image_gpu --bias-sweep prints.
+const uint RT_MODE_PATH_BIAS = 20u;
 
 // The material id (Material::id) of Material::Textured.
 const uint RT_MATERIAL_TEXTURED = 0u;
@@ -160,8 +165,9 @@ struct RtPushConstants {
     vec2 pixel_offset;
     // What the frame renders besides its mode: a sum of the FLAG_* constants, 0 for none.
     uint flags;
-    // Always 0.
-    uint pad;
+    // The mip levels RT_MODE_PATH_BIAS adds to the level of detail of every textured vertex past
+    // the first hit (RT_PATH_LOD_BIAS by default); no other mode reads it.
+    float lod_bias;
 };
 
 // What the renderer measured at a pixel's primary hit with the ray_diff and wireframe modules

@@ -427,7 +427,8 @@ vec3 rt_sample_grad(vec2 uv, RfDerivatives2 uv_gradients) {
 // (each read only by the modes that use it). The ray-differential modes sample with the UV
 // derivatives of the carried differential, on primary and secondary hits alike; the
 // re-intersection needs a primary hit: on secondary hits it samples, like the cone modes and the
-// wireframe's base, at the ray-cone LOD.
+// wireframe's base, at the ray-cone LOD. RT_MODE_PATH_BIAS adds pc.lod_bias to that LOD past the
+// first hit.
 vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
     vec2 uv = rt_uv(hit);
     bool reintersection = mode == RT_MODE_BARY_GRADIENTS;
@@ -450,9 +451,11 @@ vec3 rt_texture_colour(uint mode, RtHit hit, RfRayCone cone, RfRayDiff diff) {
         return rt_sample_grad(uv, rt_offset_uv(hit, rt_offsets(hit, rt_neighbours(hit.pixel))));
     case RT_MODE_CONE_ANISOTROPIC:
         return rt_sample_grad(uv, rt_cone_uv_gradients(hit, cone));
+    case RT_MODE_PATH_BIAS:
+        return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone) + (hit.depth != 0u ? pc.lod_bias : 0.0)).rgb;
     default: // RT_MODE_CONE, RT_MODE_CONE_CURVATURE, RT_MODE_WIREFRAME, RT_MODE_CONE_REFRACTION,
              // RT_MODE_CONE_ROUGHNESS, RT_MODE_CONE_SECTIONS (at rt_arriving_cone's cone), and the
-             // path modes but RT_MODE_PATH_MIP0
+             // path modes but RT_MODE_PATH_MIP0 and RT_MODE_PATH_BIAS
         return textureLod(rt_textures[0], uv, rt_cone_lod(hit, cone)).rgb;
     }
 }
@@ -478,7 +481,8 @@ vec3 rt_facing_normal(RtHit hit) {
 // Whether `mode` traces paths: every surface scatters the ray on (rt_path_bounce).
 bool rt_traces_paths(uint mode) {
     return mode == RT_MODE_PATH_MIP0 || mode == RT_MODE_PATH_CONE || mode == RT_MODE_PATH_CURVATURE
-        || mode == RT_MODE_PATH_ROUGHNESS || mode == RT_MODE_PATH_RTXPT || mode == RT_MODE_PATH_OPTIX;
+        || mode == RT_MODE_PATH_ROUGHNESS || mode == RT_MODE_PATH_RTXPT || mode == RT_MODE_PATH_OPTIX
+        || mode == RT_MODE_PATH_BIAS;
 }
 
 // Whether the ray goes on from the hit in `mode`: a mirror reflects primary rays (what it reflects is
@@ -634,7 +638,8 @@ RfRayCone rt_optix_toolkit_cone(RtHit hit, RfRayCone cone, float bsdf) {
 // `direction` with the BSDF value `bsdf` and density `pdf` (`mirror`: off a mirror's GGX lobe,
 // else a Lambertian one): rf_scatter_ray_cone's for the lobe drawn in RT_MODE_PATH_CONE; the
 // curvature's spread (JCGT 2021) in RT_MODE_PATH_CURVATURE, plus twice rf_roughness_spread_angle of
-// the lobe's roughness (1 for Lambert) in RT_MODE_PATH_ROUGHNESS; RTXPT's and the OptiX Toolkit's
+// the lobe's roughness (1 for Lambert) in RT_MODE_PATH_ROUGHNESS; the curvature's spread in
+// RT_MODE_PATH_BIAS too, whose bias is in the texture's level; RTXPT's and the OptiX Toolkit's
 // rules in theirs; at level 0 (RT_MODE_PATH_MIP0) the arriving cone, which nothing reads.
 RfRayCone rt_path_cone(uint mode, RtHit hit, RfRayCone cone, vec3 direction, bool mirror, float bsdf, float pdf) {
     float roughness = mirror ? hit.material.parameter : 1.0;
@@ -643,6 +648,7 @@ RfRayCone rt_path_cone(uint mode, RtHit hit, RfRayCone cone, vec3 direction, boo
         return rf_scatter_ray_cone(cone, hit.t, rt_curvature(hit), hit.normal, hit.direction, direction,
             mirror ? RF_LOBE_REFLECTION : RF_LOBE_DIFFUSE);
     case RT_MODE_PATH_CURVATURE:
+    case RT_MODE_PATH_BIAS:
         return rf_propagate(cone, hit.t, rt_curvature_spread(hit, cone, rt_curvature(hit)));
     case RT_MODE_PATH_ROUGHNESS:
         return rf_propagate(cone, hit.t, rt_curvature_spread(hit, cone, rt_curvature(hit))
