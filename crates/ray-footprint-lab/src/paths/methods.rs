@@ -234,27 +234,38 @@ pub fn square_root_expansion(pdf: f32) -> f32 {
     (1.0 / pdf.max(1e-4)).sqrt()
 }
 
-/// The OptiX Toolkit's vertex: `propagate` (both signs flipped where width and angle are both
-/// negative), `reflect` with the curvature as the ray sees it (positive for a convex surface, the
-/// stored curvature times the sign of `-dot(n, d)`), then `scatterBsdf` with the BSDF value `bsdf`.
-/// The toolkit's `setDiffuse` writes `RayCone{fabsf(width), MAX_CONE_ANGLE}` into a struct whose
-/// fields are `{angle, width}`; this follows what its comment and notes say it does: angle 0.25,
-/// width `|w|`.
+/// The OptiX Toolkit's vertex: the arriving cone's width there, and [`optix_toolkit_cone`] with
+/// the curvature as the ray sees it (positive for a convex surface, the stored curvature times the
+/// sign of `-dot(n, d)`) and the BSDF value `bsdf`.
 fn optix_toolkit_step(cone: RayCone, vertex: &ConeVertex, bsdf: f32) -> (f32, RayCone) {
-    let mut width = width_at(cone, vertex.distance);
-    let mut angle = cone.spread_angle;
-    if angle < 0.0 && width < 0.0 {
-        (width, angle) = (-width, -angle);
-    }
     let seen_curvature = if vertex.normal.dot(vertex.incoming) < 0.0 {
         vertex.curvature
     } else {
         -vertex.curvature
     };
+    (
+        width_at(cone, vertex.distance),
+        optix_toolkit_cone(cone, vertex.distance, seen_curvature, bsdf),
+    )
+}
+
+/// The OptiX Toolkit's cone leaving a vertex that `cone` reaches at `distance`, on a surface of
+/// curvature `seen_curvature` as the ray sees it, for a direction of BSDF value `bsdf`:
+/// `propagate` (both signs flipped where width and angle are both negative), `reflect` (twice the
+/// curvature times `|w|`, only while the angle is below 0.25), then [`optix_toolkit_scatter`].
+/// The toolkit's `setDiffuse` writes `RayCone{fabsf(width), MAX_CONE_ANGLE}` into a struct whose
+/// fields are `{angle, width}`; this follows what its comment and notes say it does: angle 0.25,
+/// width `|w|`. The renderer's `path_optix` runs the same rule (`rt_optix_toolkit_cone`).
+pub fn optix_toolkit_cone(cone: RayCone, distance: f32, seen_curvature: f32, bsdf: f32) -> RayCone {
+    let mut width = width_at(cone, distance);
+    let mut angle = cone.spread_angle;
+    if angle < 0.0 && width < 0.0 {
+        (width, angle) = (-width, -angle);
+    }
     if angle < OTK_MAX_CONE_ANGLE {
         angle += 2.0 * seen_curvature * width.abs();
     }
-    (width, optix_toolkit_scatter(width, angle, bsdf))
+    optix_toolkit_scatter(width, angle, bsdf)
 }
 
 /// The OptiX Toolkit's `scatterBsdf`: unless the angle has reached 0.25 already, it grows by

@@ -58,6 +58,7 @@ mod abi;
 mod agreement;
 mod chains;
 mod degenerate;
+mod path_rules;
 mod quality;
 mod rt;
 mod special_cases;

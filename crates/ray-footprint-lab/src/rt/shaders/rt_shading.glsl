@@ -16,6 +16,8 @@
 #ifndef RT_SHADING_GLSL
 #define RT_SHADING_GLSL
 
+#include "rt_path_rules.glsl"
+
 // The section of a ray's beam across the plane of incidence of the last refraction (the sagittal
 // section), which RT_MODE_CONE_SECTIONS carries beside the cone (the tangential section, in that
 // plane): its cone and its axis, the unit cross(direction, normal) of that refraction. A round beam
@@ -592,46 +594,11 @@ vec3 rt_leaving_origin(RtHit hit, vec3 direction) {
     return hit.origin + hit.t * hit.direction + side * hit.normal;
 }
 
-// The density of the direction a mirror's GGX lobe of width `alpha` reflected the hit's ray to
-// (Walter et al. 2007, Eq. 14 and 24: D(h) cos(theta_h) / (4 |o.h|)), with `h` the half vector of
-// the ray and `direction`, around the normal `facing`.
-float rt_ggx_pdf(RtHit hit, vec3 facing, vec3 direction, float alpha) {
-    vec3 half_vector = normalize(direction - hit.direction);
-    float cos_h = max(dot(half_vector, facing), 0.0);
-    float alpha2 = max(alpha * alpha, 1e-12);
-    float denominator = cos_h * cos_h * (alpha2 - 1.0) + 1.0;
-    float distribution = alpha2 / (3.14159265359 * denominator * denominator);
-    return distribution * cos_h / max(4.0 * abs(dot(direction, half_vector)), 1e-12);
-}
-
-// RTXPT's growth of the spread at a scatter whose direction was drawn with density `pdf`
-// (ComputeRayConeSpreadAngleExpansionByScatterPDF): 0.3 times the whole angle 2 acos(1 - Omega /
-// (2 pi)) of the spherical cap of solid angle Omega = 1 / pdf.
-float rt_rtxpt_expansion(float pdf) {
-    return 0.3 * 2.0 * acos(max(1.0 - 1.0 / (6.28318530718 * max(pdf, 1e-30)), -1.0));
-}
-
-// The OptiX Toolkit's cone leaving a vertex (ray_cone.h): the cone carried to the hit (both
-// signs flipped where width and angle are both negative), `reflect` adding twice the curvature
-// as the ray sees it times |width| while the angle is below its diffuse angle 0.25, then
-// `scatterBsdf` adding sign(angle) 0.25 min(1, 1 / (pi f_s)) for the BSDF value `bsdf`, the cone
-// becoming the diffuse one (|width|, 0.25) where that reaches 0.25.
-RfRayCone rt_optix_toolkit_cone(RtHit hit, RfRayCone cone, float bsdf) {
-    float width = rf_width_at(cone, hit.t);
-    float angle = cone.spread_angle;
-    if (angle < 0.0 && width < 0.0) {
-        width = -width;
-        angle = -angle;
-    }
-    float seen_curvature = dot(hit.normal, hit.direction) < 0.0 ? rt_curvature(hit) : -rt_curvature(hit);
-    if (angle < 0.25) {
-        angle += 2.0 * seen_curvature * abs(width);
-    }
-    if (angle >= 0.25) {
-        return RfRayCone(width, angle);
-    }
-    float grown = angle + (angle < 0.0 ? -0.25 : 0.25) * 0.318309886 / max(bsdf, 0.318309886);
-    return abs(grown) < 0.25 ? RfRayCone(width, grown) : RfRayCone(abs(width), 0.25);
+// The hit triangle's curvature as the ray sees it, as the OptiX Toolkit reads it: rt_curvature,
+// positive for a surface convex towards the ray (the stored curvature times the sign of
+// -dot(normal, direction)).
+float rt_seen_curvature(RtHit hit) {
+    return dot(hit.normal, hit.direction) < 0.0 ? rt_curvature(hit) : -rt_curvature(hit);
 }
 
 // The cone leaving a path vertex in `mode` from the arriving `cone`, for the ray scattered to
@@ -660,7 +627,7 @@ RfRayCone rt_path_cone(uint mode, RtHit hit, RfRayCone cone, vec3 direction, boo
         return RfRayCone(carried.width, spread);
     }
     case RT_MODE_PATH_OPTIX:
-        return rt_optix_toolkit_cone(hit, cone, bsdf);
+        return rt_optix_toolkit_cone(cone, hit.t, rt_seen_curvature(hit), bsdf);
     default: // RT_MODE_PATH_MIP0
         return cone;
     }
@@ -680,7 +647,7 @@ RtBounce rt_path_bounce(uint mode, RtHit hit, RfRayCone cone, RtSagittal sagitta
     vec3 tint = mirror ? vec3(1.0) : rt_texture_colour(mode, hit, cone, rt_no_diff());
     float cos_out = max(dot(direction, facing), 1e-6);
     float roughness = hit.material.parameter;
-    float pdf = mirror ? rt_ggx_pdf(hit, facing, direction, roughness * roughness) : cos_out * 0.318309886;
+    float pdf = mirror ? rt_ggx_pdf(hit.direction, facing, direction, roughness * roughness) : cos_out * 0.318309886;
     float bsdf = mirror ? RT_MIRROR_REFLECTANCE * pdf / cos_out : (tint.r + tint.g + tint.b) * (0.318309886 / 3.0);
     RfRayCone leaving = rt_path_cone(mode, hit, cone, direction, mirror, bsdf, pdf);
     return RtBounce(rt_leaving_origin(hit, direction), direction, mirror ? RT_MIRROR_REFLECTANCE : 1.0, leaving,
