@@ -129,7 +129,9 @@ fn biases(flag: &str, value: &str) -> Result<Vec<f32>, String> {
         .split(',')
         .map(|item| match item.trim().parse::<f32>() {
             Ok(bias) if bias.is_finite() => Ok(bias),
-            _ => Err(format!("{flag} {value}: '{item}' is not a finite number of mip levels")),
+            _ => Err(format!(
+                "{flag} {value}: '{item}' is not a finite number of mip levels"
+            )),
         })
         .collect()
 }
@@ -284,8 +286,22 @@ fn measure_scene(
     let frames = frame_times(&renderer, &pipelines, &base, &uniforms)?;
     let renders = [4 * options.seed, 4 * options.seed + 1];
     let reference_count = [options.reference_samples];
-    let r1 = render_means(&pipelines[0], &base, &uniforms, 4 * options.seed + 2, &reference_count)?.remove(0);
-    let r2 = render_means(&pipelines[0], &base, &uniforms, 4 * options.seed + 3, &reference_count)?.remove(0);
+    let r1 = render_means(
+        &pipelines[0],
+        &base,
+        &uniforms,
+        4 * options.seed + 2,
+        &reference_count,
+    )?
+    .remove(0);
+    let r2 = render_means(
+        &pipelines[0],
+        &base,
+        &uniforms,
+        4 * options.seed + 3,
+        &reference_count,
+    )?
+    .remove(0);
     let reference = Reference {
         mean: r1.iter().zip(&r2).map(|(a, b)| 0.5 * (*a + *b)).collect(),
         variance: mean_squared_difference(&r1, &r2) / 4.0,
@@ -341,7 +357,10 @@ fn measure_scene(
         reference.variance.sqrt(),
         started.elapsed().as_secs_f64(),
     );
-    Ok(SceneResult { modes: results, sweep })
+    Ok(SceneResult {
+        modes: results,
+        sweep,
+    })
 }
 
 /// The part `fraction` (left, top, width, height of the image) of the linear image `image` of
@@ -418,7 +437,12 @@ fn print_summary(all: &[SceneResult]) {
             .collect();
         let lowest = |value: &dyn Fn(&ModeResult) -> f64| {
             all.iter()
-                .filter(|scene| scene.modes.iter().all(|other| value(&scene.modes[m]) <= value(other)))
+                .filter(|scene| {
+                    scene
+                        .modes
+                        .iter()
+                        .all(|other| value(&scene.modes[m]) <= value(other))
+                })
                 .count()
         };
         println!(
@@ -450,7 +474,9 @@ fn print_sweep(all: &[SceneResult], biases: &[f32]) {
     };
     let most = SAMPLES.len() - 1;
     for (b, bias) in biases.iter().enumerate() {
-        let ratios: Vec<String> = (0..SAMPLES.len()).map(|c| format!("{:.3}", ratio(b, c))).collect();
+        let ratios: Vec<String> = (0..SAMPLES.len())
+            .map(|c| format!("{:.3}", ratio(b, c)))
+            .collect();
         println!("| {bias:+.2} | {} |", ratios.join(" / "));
     }
     let best = (0..biases.len())

@@ -123,13 +123,20 @@ fn optix_branches((cone, t, curvature, bsdf): (RayCone, f32, f32, f32)) -> Optix
 #[test]
 fn optix_toolkit_cone_agrees_with_the_cpu_rule() {
     let signed = |range: std::ops::Range<f32>| {
-        (decades(range), any::<bool>()).prop_map(|(magnitude, negative)| if negative { -magnitude } else { magnitude })
+        (decades(range), any::<bool>())
+            .prop_map(|(magnitude, negative)| if negative { -magnitude } else { magnitude })
     };
     let curvature = prop_oneof![1 => Just(0.0f32), 4 => signed(-4.0..3.0)];
     let check = FunctionCheck::new(
         "rt_optix_toolkit_cone",
         move || {
-            (signed(-6.0..3.0), -0.3f32..0.3, decades(-3.0..4.0), curvature.clone(), decades(-3.0..3.0))
+            (
+                signed(-6.0..3.0),
+                -0.3f32..0.3,
+                decades(-3.0..4.0),
+                curvature.clone(),
+                decades(-3.0..3.0),
+            )
                 .prop_map(|(width, spread_angle, t, curvature, bsdf)| {
                     (RayCone { width, spread_angle }, t, curvature, bsdf)
                 })
@@ -144,10 +151,12 @@ fn optix_toolkit_cone_agrees_with_the_cpu_rule() {
         },
         |(cone, t, curvature, bsdf)| optix_toolkit_cone(cone, t, curvature, bsdf),
     )
-    .tolerance(Tolerance::per_case(|&args: &(RayCone, f32, f32, f32), _: &[f32]| {
-        let branches = optix_branches(args);
-        vec![branches.width_error as f32, branches.angle_error as f32]
-    }));
+    .tolerance(Tolerance::per_case(
+        |&args: &(RayCone, f32, f32, f32), _: &[f32]| {
+            let branches = optix_branches(args);
+            vec![branches.width_error as f32, branches.angle_error as f32]
+        },
+    ));
     assert_agrees(check);
 }
 
@@ -169,9 +178,10 @@ fn ggx_case() -> impl Strategy<Value = (Vec3, Vec3, Vec3, f32)> {
             let direction = incoming - 2.0 * incoming.dot(microfacet) * microfacet;
             (normal.as_vec3(), incoming.as_vec3(), direction.as_vec3(), alpha)
         })
-        .prop_filter("a ray within 0.05 of the plane", |(normal, incoming, direction, _)| {
-            incoming.dot(*normal) < -0.05 && direction.dot(*normal) > 0.05
-        })
+        .prop_filter(
+            "a ray within 0.05 of the plane",
+            |(normal, incoming, direction, _)| incoming.dot(*normal) < -0.05 && direction.dot(*normal) > 0.05,
+        )
         .prop_map(|(normal, incoming, direction, alpha)| (incoming, normal, direction, alpha))
 }
 
@@ -179,22 +189,25 @@ fn ggx_case() -> impl Strategy<Value = (Vec3, Vec3, Vec3, f32)> {
 /// whose roughness is `sqrt(alpha)`) for roughness 0.1 to 1 (alpha 0.01 to 1).
 #[test]
 fn ggx_pdf_agrees_with_the_cpu_path_tracer() {
-    let check = FunctionCheck::new(
-        "rt_ggx_pdf",
-        || ggx_case(),
-        |(incoming, facing, direction, alpha)| {
-            let conductor = Material::Conductor {
-                roughness: f64::from(alpha).sqrt(),
-            };
-            pdf_and_bsdf(conductor, facing.as_dvec3(), incoming.as_dvec3(), direction.as_dvec3()).0 as f32
-        },
-    )
+    let check = FunctionCheck::new("rt_ggx_pdf", ggx_case, |(incoming, facing, direction, alpha)| {
+        let conductor = Material::Conductor {
+            roughness: f64::from(alpha).sqrt(),
+        };
+        pdf_and_bsdf(
+            conductor,
+            facing.as_dvec3(),
+            incoming.as_dvec3(),
+            direction.as_dvec3(),
+        )
+        .0 as f32
+    })
     .tolerance(Tolerance::per_case(
         |&(incoming, facing, direction, alpha): &(Vec3, Vec3, Vec3, f32), expected: &[f32]| {
             // The half vector's cosines carry the normalize's and the dots' roundings, 12 ULP;
             // D's denominator c^2 (alpha^2 - 1) + 1 cancels towards alpha^2 near c = 1, and
             // enters squared.
-            let (incoming, facing, direction) = (incoming.as_dvec3(), facing.as_dvec3(), direction.as_dvec3());
+            let (incoming, facing, direction) =
+                (incoming.as_dvec3(), facing.as_dvec3(), direction.as_dvec3());
             let half = (direction - incoming).normalize();
             let (cos_h, cos_out) = (half.dot(facing), direction.dot(half).abs());
             let alpha2 = f64::from(alpha) * f64::from(alpha);
