@@ -4,17 +4,27 @@
 //! one for their kernels and layout probes, and any other shader a user builds with this crate goes
 //! through them too. glslang runs as a process per shader; slangc's compiler runs in this process,
 //! as the library `slangc` loads, with slangc's options (`compile/slang_library.rs`), because
-//! starting slangc is most of what it takes to compile a small shader.
+//! starting slangc is most of what it takes to compile a small shader; the Slang modules a shader
+//! imports are compiled once per process to binary modules (`compile/slang_modules.rs`).
 
 mod cache;
 mod slang_library;
+mod slang_modules;
 
 pub use crate::tool::{CompileError, Target};
-pub use cache::{forget_compiles, SPIRV_CACHE_ENV};
+pub use cache::SPIRV_CACHE_ENV;
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Forgets every compile this process kept in memory (the SPIR-V of each shader, and the Slang
+/// modules compiled for the shaders that import them): the next compile of each shader runs the compiler
+/// (or reads the disk cache) again, as in a new process. For measuring a cold start.
+pub fn forget_compiles() {
+    cache::forget();
+    slang_modules::forget();
+}
 
 /// A shader stage: for GLSL named by the file extension glslang reads it from, for Slang by
 /// slangc's `-stage`.
@@ -228,10 +238,20 @@ fn run_slangc(
     command.args(&options);
     let key = cache_key(&command, (source, extension), search_dirs);
     let mut words = cached(key, || {
-        in_temporary_directory(source, extension, |input, _| {
-            let arguments: Vec<OsString> = options
-                .iter()
-                .cloned()
+        let modules = if extension == "slang" {
+            slang_modules::imported_modules(source, search_dirs)
+        } else {
+            Vec::new()
+        };
+        in_temporary_directory(source, extension, |input, output| {
+            let dir = output.parent().unwrap_or(Path::new("."));
+            for (name, bytes) in modules.iter() {
+                std::fs::write(dir.join(name), bytes.as_slice())
+                    .map_err(|e| CompileError::NotRun(format!("writing {name}: {e}")))?;
+            }
+            let arguments: Vec<OsString> = ["-I".into(), dir.as_os_str().into()]
+                .into_iter()
+                .chain(options.iter().cloned())
                 .chain([input.as_os_str().into()])
                 .collect();
             let bytes = slang_library::compile(&arguments, input)?;

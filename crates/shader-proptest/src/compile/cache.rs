@@ -133,9 +133,8 @@ pub(crate) fn remember(key: &[u8], words: &[u32]) {
         .insert(key.to_vec(), words.to_vec());
 }
 
-/// Forgets every compile this process kept in memory: the next compile of each shader runs the
-/// compiler (or reads the disk cache) again, as in a new process. For measuring a cold start.
-pub fn forget_compiles() {
+/// Forgets every compile this process kept in memory.
+pub(crate) fn forget() {
     memory().lock().unwrap_or_else(PoisonError::into_inner).clear();
 }
 

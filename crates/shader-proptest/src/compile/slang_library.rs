@@ -32,8 +32,25 @@ struct Api {
     compile: unsafe extern "C" fn(Handle) -> i32,
     diagnostics: unsafe extern "C" fn(Handle) -> *const c_char,
     code: unsafe extern "C" fn(Handle, *mut usize) -> *const c_void,
+    container: unsafe extern "C" fn(Handle, *mut *mut Blob) -> i32,
     /// Kept loaded for the process: the functions above point into it.
     _library: Library,
+}
+
+/// `ISlangBlob` of `slang.h`: a COM object whose first word points at its functions.
+#[repr(C)]
+struct Blob {
+    functions: *const BlobFunctions,
+}
+
+/// `ISlangBlob`'s functions, in `slang.h`'s order: `ISlangUnknown`'s, then the blob's.
+#[repr(C)]
+struct BlobFunctions {
+    query_interface: *const c_void,
+    add_ref: *const c_void,
+    release: unsafe extern "C" fn(*mut Blob) -> u32,
+    buffer_pointer: unsafe extern "C" fn(*mut Blob) -> *const c_void,
+    buffer_size: unsafe extern "C" fn(*mut Blob) -> usize,
 }
 
 /// `SlangGlobalSessionDesc` of `slang.h`.
@@ -100,6 +117,7 @@ unsafe fn functions(library: Library) -> Result<Api, libloading::Error> {
         compile: *library.get(b"spCompile\0")?,
         diagnostics: *library.get(b"spGetDiagnosticOutput\0")?,
         code: *library.get(b"spGetCompileRequestCode\0")?,
+        container: *library.get(b"spGetContainerCode\0")?,
         _library: library,
     })
 }
@@ -182,6 +200,50 @@ const SLANGC_DEFAULTS: [&str; 1] = ["-matrix-layout-column-major"];
 /// Compiles as `slangc <arguments>` would, `arguments` naming the input file and no output
 /// file: the target code's bytes, or the diagnostics (which name `input`) where it fails.
 pub(super) fn compile(arguments: &[OsString], input: &Path) -> Result<Vec<u8>, CompileError> {
+    run_request(arguments, input, target_code)
+}
+
+/// Compiles as `slangc <arguments>` would where `arguments` name a module file as the output
+/// (`-o m.slang-module`): the module file's bytes, which slangc would write there, or the
+/// diagnostics (which name `input`) where it fails.
+pub(super) fn compile_module(arguments: &[OsString], input: &Path) -> Result<Vec<u8>, CompileError> {
+    run_request(arguments, input, container_code)
+}
+
+/// A compiled request's target code, if it has one.
+///
+/// # Safety
+/// `request` must be a live compile request of `api`'s library.
+unsafe fn target_code(api: &Api, request: Handle) -> Option<Vec<u8>> {
+    let mut size = 0;
+    let code = (api.code)(request, &mut size);
+    (!code.is_null() && size > 0).then(|| std::slice::from_raw_parts(code.cast::<u8>(), size).to_vec())
+}
+
+/// A compiled request's container (a module file's bytes), if it has one.
+///
+/// # Safety
+/// `request` must be a live compile request of `api`'s library.
+unsafe fn container_code(api: &Api, request: Handle) -> Option<Vec<u8>> {
+    let mut blob = std::ptr::null_mut();
+    if (api.container)(request, &mut blob) < 0 || blob.is_null() {
+        return None;
+    }
+    let functions = &*(*blob).functions;
+    let (pointer, size) = ((functions.buffer_pointer)(blob), (functions.buffer_size)(blob));
+    let bytes = (!pointer.is_null() && size > 0)
+        .then(|| std::slice::from_raw_parts(pointer.cast::<u8>(), size).to_vec());
+    (functions.release)(blob);
+    bytes
+}
+
+/// Runs one compile request of `arguments` after [`SLANGC_DEFAULTS`] on this thread's session,
+/// and `read`s its output (a compile with none fails).
+fn run_request(
+    arguments: &[OsString],
+    input: &Path,
+    read: unsafe fn(&Api, Handle) -> Option<Vec<u8>>,
+) -> Result<Vec<u8>, CompileError> {
     let api = api()?;
     let arguments = SLANGC_DEFAULTS
         .iter()
@@ -220,31 +282,33 @@ pub(super) fn compile(arguments: &[OsString], input: &Path) -> Result<Vec<u8>, C
             if result >= 0 {
                 result = (api.compile)(request);
             }
-            let mut size = 0;
-            let code = (api.code)(request, &mut size);
-            let output = if result < 0 || code.is_null() || size == 0 {
-                let log = (api.diagnostics)(request);
-                let log = if log.is_null() {
-                    String::new()
-                } else {
-                    std::ffi::CStr::from_ptr(log).to_string_lossy().into_owned()
-                };
-                let log = if log.trim().is_empty() {
-                    format!("slangc failed with result {result:#x} and no diagnostic")
-                } else {
-                    log
-                };
-                Err(CompileError::Failed {
-                    log,
-                    source_path: input.display().to_string(),
-                })
-            } else {
-                Ok(std::slice::from_raw_parts(code.cast::<u8>(), size).to_vec())
-            };
+            let code = if result < 0 { None } else { read(api, request) };
+            let output = code.ok_or_else(|| CompileError::Failed {
+                log: diagnostics(api, request, result),
+                source_path: input.display().to_string(),
+            });
             (api.destroy_request)(request);
             output
         }
     })
+}
+
+/// The diagnostics of `request`, which ended with `result`, or a line saying there were none.
+///
+/// # Safety
+/// `request` must be a live compile request of `api`'s library.
+unsafe fn diagnostics(api: &Api, request: Handle, result: i32) -> String {
+    let log = (api.diagnostics)(request);
+    let log = if log.is_null() {
+        String::new()
+    } else {
+        std::ffi::CStr::from_ptr(log).to_string_lossy().into_owned()
+    };
+    if log.trim().is_empty() {
+        format!("slangc failed with result {result:#x} and no diagnostic")
+    } else {
+        log
+    }
 }
 
 #[cfg(test)]
