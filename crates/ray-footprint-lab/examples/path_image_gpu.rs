@@ -25,7 +25,7 @@
 //! With `--biases`, `path_bias` is also rendered at each of the listed level-of-detail biases
 //! (`RtPushConstants::lod_bias`, in mip levels, added past the first hit) at equal samples, and
 //! the summary gives each bias' RMSE over `path_mip0`'s: the sweep that picks
-//! `ray_footprint_lab::rt::PATH_LOD_BIAS` (`--biases -2,-1.5,-1,-0.5,0,0.5,1,1.5,2,2.5,3`).
+//! `ray_footprint_lab::rt::PATH_LOD_BIAS` (its doc names the command).
 
 use glam::DVec3;
 use ray_footprint::wireframe::WireframeSettings;

@@ -65,7 +65,7 @@ pub struct RtPushConstants {
     /// What the frame renders besides its mode: a sum of the `FLAG_*` constants, 0 for none.
     pub flags: u32,
     /// The mip levels [`crate::rt::Mode::PathBias`] adds to the level of detail of every textured
-    /// vertex past the first hit ([`crate::rt::PATH_LOD_BIAS`] by default); no other mode reads it.
+    /// vertex past the first hit (-3 by default); no other mode reads it.
     pub lod_bias: f32,
 }
 

@@ -103,8 +103,8 @@ pub enum Mode {
     PathOptix = 19,
     /// `PathCurvature` with one global level-of-detail bias, `RtPushConstants::lod_bias` mip
     /// levels, added to the LOD of every textured vertex past the first hit: what Falcor's path
-    /// tracer does at secondary hits (one `lodBias` for all of them). [`PATH_LOD_BIAS`] by
-    /// default, the best of the sweep `path_image_gpu --bias-sweep` prints.
+    /// tracer does at secondary hits (one `lodBias` for all of them). By default -3 levels, the
+    /// best of the sweep `path_image_gpu --biases` prints.
     PathBias = 20,
 }
 

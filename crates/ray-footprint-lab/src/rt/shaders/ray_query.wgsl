@@ -95,8 +95,8 @@ const RT_MODE_PATH_RTXPT: u32 = 18u;
 const RT_MODE_PATH_OPTIX: u32 = 19u;
 // PathCurvature with one global level-of-detail bias, RtPushConstants.lod_bias mip levels, added to
 // the LOD of every textured vertex past the first hit: what Falcor's path tracer does at secondary
-// hits (one lodBias for all of them). RT_PATH_LOD_BIAS by default, the best of the sweep
-// path_image_gpu --bias-sweep prints.
+// hits (one lodBias for all of them). By default -3 levels, the best of the sweep path_image_gpu
+// --biases prints.
 const RT_MODE_PATH_BIAS: u32 = 20u;
 
 // The material id (Material::id) of Material::Textured.
@@ -164,7 +164,7 @@ struct RtPushConstants {
     // What the frame renders besides its mode: a sum of the FLAG_* constants, 0 for none.
     flags: u32,
     // The mip levels RT_MODE_PATH_BIAS adds to the level of detail of every textured vertex past
-    // the first hit (RT_PATH_LOD_BIAS by default); no other mode reads it.
+    // the first hit (-3 by default); no other mode reads it.
     lod_bias: f32,
 }
 
