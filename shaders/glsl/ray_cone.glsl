@@ -8,7 +8,9 @@
 //
 // width is the full footprint diameter, spread_angle the full cone angle, both signed; normals and
 // directions are unit length, normals as the mesh stores them (either orientation). Divergent cases
-// are clamped with the RF_ constants: finite inputs give finite outputs.
+// are clamped with the RF_ constants: finite inputs give finite outputs. A ?: chooses between named
+// values: GLSL evaluates only the operand it picks, so an operand written as an expression becomes a
+// branch, while a choice between values already computed (or mix with a bool) is an OpSelect.
 
 #ifndef RAY_FOOTPRINT_RAY_CONE_GLSL
 #define RAY_FOOTPRINT_RAY_CONE_GLSL
@@ -273,8 +275,11 @@ vec3 rf_principal_direction(vec3 p0, vec3 p1, vec3 p2, vec3 shape_operator) {
     float half_gap = 0.5 * (shape_operator.x - shape_operator.z);
     float f = shape_operator.y;
     float radius = length(vec2(half_gap, f));
-    vec2 axis = half_gap >= 0.0 ? vec2(half_gap + radius, f) : vec2(f, radius - half_gap);
-    axis = axis.x < 0.0 ? -axis : axis;
+    vec2 from_larger = vec2(half_gap + radius, f);
+    vec2 from_smaller = vec2(f, radius - half_gap);
+    vec2 axis = half_gap >= 0.0 ? from_larger : from_smaller;
+    vec2 opposite = -axis;
+    axis = axis.x < 0.0 ? opposite : axis;
     return rf_clamped_unit(axis.x * u + axis.y * v);
 }
 
@@ -285,7 +290,8 @@ vec3 rf_principal_direction(vec3 p0, vec3 p1, vec3 p2, vec3 shape_operator) {
 float rf_isotropic_curvature(vec2 principal_curvatures) {
     float least = min(principal_curvatures.x, principal_curvatures.y);
     float most = max(principal_curvatures.x, principal_curvatures.y);
-    return least > 0.0 ? least : (most < 0.0 ? most : 0.0);
+    float negative = most < 0.0 ? most : 0.0;
+    return least > 0.0 ? least : negative;
 }
 
 // -dot(normal, direction), kept at least RF_MIN_COS away from 0 with its sign; +0 and -0 give
@@ -336,7 +342,8 @@ float rf_two_section_width(float tangential_width, float sagittal_width, vec3 sa
     float half_difference = 0.5 * (tangential_square - sagittal_square);
     float off_diagonal = tangential_tilt * sagittal_tilt;
     float larger = half_sum + sqrt(half_difference * half_difference + off_diagonal * off_diagonal);
-    return across_length < RF_MIN_MAGNITUDE ? larger_width : scale * sqrt(larger);
+    float ellipse_width = scale * sqrt(larger);
+    return across_length < RF_MIN_MAGNITUDE ? larger_width : ellipse_width;
 }
 
 // Twice the world-space triangle area: |cross(p1 - p0, p2 - p0)| (RTG Eq. 4), measured as
@@ -552,7 +559,8 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, vec3 normal, vec3 directi
 RfRayCone rf_refract_sagittal_cone(RfRayCone cone, vec3 normal, vec3 direction, float normal_spread_angle,
         float eta) {
     float cosine = dot(normal, direction);
-    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    float turned_spread = -normal_spread_angle;
+    float facing_spread = cosine > 0.0 ? turned_spread : normal_spread_angle;
     vec2 incidence = rf_incidence_sin_cos(normal, direction, cosine);
     float index = max(eta, 0.0);
     float turn = 2.0 * rf_normal_tilt(cone.width, facing_spread);
@@ -609,7 +617,8 @@ RfRayCone rf_scatter_ray_cone(
     float facing = rf_facing_cos(normal, direction);
     float turn = curvature * width / facing;
     float normal_turn = clamp(turn, -RF_MAX_NORMAL_SPREAD, RF_MAX_NORMAL_SPREAD);
-    float spread_angle = lobe == RF_LOBE_DIFFUSE ? normal_turn : cone.spread_angle + 2.0 * normal_turn;
+    float mirrored_spread = cone.spread_angle + 2.0 * normal_turn;
+    float spread_angle = lobe == RF_LOBE_DIFFUSE ? normal_turn : mirrored_spread;
     return RfRayCone(width * rf_footprint_stretch(normal, direction, leaving, facing), spread_angle);
 }
 

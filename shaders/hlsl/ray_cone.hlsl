@@ -13,7 +13,9 @@
 // directions are unit length; normals are used as the mesh stores them, facing either way. Matrices
 // are float4x4: m[r][c] is row r, column c, and mul(m, v) transforms the column vector v. Divergent
 // cases are clamped with the RF_ constants: finite inputs give finite outputs. Choices between two
-// values are scalar ?: on values already computed (compiled to OpSelect), as glslang has no select().
+// values are scalar ?: between named values, as glslang has no select(): HLSL 2021 and Slang evaluate
+// only the operand a scalar ?: picks, so an operand written as an expression becomes a branch, while
+// a choice between values already computed is an OpSelect.
 
 #ifndef RAY_FOOTPRINT_RAY_CONE_HLSL
 #define RAY_FOOTPRINT_RAY_CONE_HLSL
@@ -299,8 +301,11 @@ float3 rf_principal_direction(float3 p0, float3 p1, float3 p2, float3 shape_oper
     float half_gap = 0.5 * (shape_operator.x - shape_operator.z);
     float f = shape_operator.y;
     float radius = length(float2(half_gap, f));
-    float2 axis = half_gap >= 0.0 ? float2(half_gap + radius, f) : float2(f, radius - half_gap);
-    axis = axis.x < 0.0 ? -axis : axis;
+    float2 from_larger = float2(half_gap + radius, f);
+    float2 from_smaller = float2(f, radius - half_gap);
+    float2 axis = half_gap >= 0.0 ? from_larger : from_smaller;
+    float2 opposite = -axis;
+    axis = axis.x < 0.0 ? opposite : axis;
     return rf_clamped_unit(axis.x * u + axis.y * v);
 }
 
@@ -311,7 +316,8 @@ float3 rf_principal_direction(float3 p0, float3 p1, float3 p2, float3 shape_oper
 float rf_isotropic_curvature(float2 principal_curvatures) {
     float least = min(principal_curvatures.x, principal_curvatures.y);
     float most = max(principal_curvatures.x, principal_curvatures.y);
-    return least > 0.0 ? least : (most < 0.0 ? most : 0.0);
+    float negative = most < 0.0 ? most : 0.0;
+    return least > 0.0 ? least : negative;
 }
 
 // The cosine -n.d, moved out to RF_MIN_COS when nearer 0 than that, keeping its sign (either zero
@@ -362,7 +368,8 @@ float rf_two_section_width(float tangential_width, float sagittal_width, float3 
     float half_difference = 0.5 * (tangential_square - sagittal_square);
     float off_diagonal = tangential_tilt * sagittal_tilt;
     float larger = half_sum + sqrt(half_difference * half_difference + off_diagonal * off_diagonal);
-    return across_length < RF_MIN_MAGNITUDE ? larger_width : scale * sqrt(larger);
+    float ellipse_width = scale * sqrt(larger);
+    return across_length < RF_MIN_MAGNITUDE ? larger_width : ellipse_width;
 }
 
 // Twice the triangle's world-space area, |cross(p1 - p0, p2 - p0)| (RTG Eq. 4), computed as
@@ -466,7 +473,8 @@ struct RfRefractedRayCone {
 float2 rf_incidence_sin_cos(float3 normal, float3 direction, float cosine) {
     float2 sin_cos = float2(length(direction - cosine * normal), abs(cosine));
     float sin_cos_length = length(sin_cos);
-    return sin_cos_length < RF_MIN_MAGNITUDE ? float2(0.0, 1.0) : sin_cos / sin_cos_length;
+    float2 unit = sin_cos / sin_cos_length;
+    return sin_cos_length < RF_MIN_MAGNITUDE ? float2(0.0, 1.0) : unit;
 }
 
 // (sin a, cos a).
@@ -549,7 +557,8 @@ float rf_refracted_angle_between(float sine_gap, float2 upper, float2 lower) {
 RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, float3 normal, float3 direction,
     float normal_spread_angle, float eta) {
     float cosine = dot(normal, direction);
-    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    float turned_spread = -normal_spread_angle;
+    float facing_spread = cosine > 0.0 ? turned_spread : normal_spread_angle;
     float2 incidence = rf_incidence_sin_cos(normal, direction, cosine);
     float index = max(eta, 0.0);
     bool total_internal_reflection = index * incidence.x > 1.0;
@@ -570,8 +579,9 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, float3 normal, float3 dir
         - rf_boundary_offset(lower_hit, -1.0, lower, tilt_sin_cos, transmitted);
     float refracted_spread = rf_refracted_angle_between(sine_gap, upper, lower) - 2.0 * tilt;
     float reflected_spread = cone.spread_angle + 2.0 * facing_spread;
+    float reflected_width = cone.width;
     RfRayCone leaving = {
-        total_internal_reflection ? cone.width : refracted_width,
+        total_internal_reflection ? reflected_width : refracted_width,
         total_internal_reflection ? reflected_spread : refracted_spread
     };
     RfRefractedRayCone result = { leaving, total_internal_reflection };
@@ -586,7 +596,8 @@ RfRefractedRayCone rf_refract_ray_cone(RfRayCone cone, float3 normal, float3 dir
 RfRayCone rf_refract_sagittal_cone(RfRayCone cone, float3 normal, float3 direction, float normal_spread_angle,
     float eta) {
     float cosine = dot(normal, direction);
-    float facing_spread = cosine > 0.0 ? -normal_spread_angle : normal_spread_angle;
+    float turned_spread = -normal_spread_angle;
+    float facing_spread = cosine > 0.0 ? turned_spread : normal_spread_angle;
     float2 incidence = rf_incidence_sin_cos(normal, direction, cosine);
     float index = max(eta, 0.0);
     float turn = 2.0 * rf_normal_tilt(cone.width, facing_spread);
@@ -645,7 +656,8 @@ RfRayCone rf_scatter_ray_cone(
     float facing = rf_facing_cos(normal, direction);
     float turn = curvature * width / facing;
     float normal_turn = clamp(turn, -RF_MAX_NORMAL_SPREAD, RF_MAX_NORMAL_SPREAD);
-    float spread_angle = lobe == RF_LOBE_DIFFUSE ? normal_turn : cone.spread_angle + 2.0 * normal_turn;
+    float mirrored_spread = cone.spread_angle + 2.0 * normal_turn;
+    float spread_angle = lobe == RF_LOBE_DIFFUSE ? normal_turn : mirrored_spread;
     RfRayCone scattered = { width * rf_footprint_stretch(normal, direction, leaving, facing), spread_angle };
     return scattered;
 }

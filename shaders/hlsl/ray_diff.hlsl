@@ -19,8 +19,9 @@
 // m[r][c] is row r and column c, and mul(m, v) applies m to the column vector v. Columns are read
 // element by element (glslang cannot compile matrix swizzles such as m._m00_m10_m20). Where the math
 // has no finite answer the RF_DIFF_ constants clamp it, so finite inputs always give finite outputs.
-// Choices between two values are scalar ?: on values already computed (compiled to OpSelect), as
-// glslang has no select().
+// Choices between two values are scalar ?: between named values, as glslang has no select(): HLSL
+// 2021 and Slang evaluate only the operand a scalar ?: picks, so an operand written as an expression
+// becomes a branch, while a choice between values already computed is an OpSelect.
 
 #ifndef RAY_FOOTPRINT_RAY_DIFF_HLSL
 #define RAY_FOOTPRINT_RAY_DIFF_HLSL
@@ -219,7 +220,8 @@ RfNeighbourDirections rf_pixel_directions(float2 pixel, float2 image_size, float
 // value itself, unless |value| < min_magnitude: then min_magnitude carrying the sign of value (positive
 // for either zero). No branch: ?: on computed values is OpSelect.
 float rf_clamp_away_from_zero(float value, float min_magnitude) {
-    float signed_minimum = value >= 0.0 ? min_magnitude : -min_magnitude;
+    float negative_minimum = -min_magnitude;
+    float signed_minimum = value >= 0.0 ? min_magnitude : negative_minimum;
     return abs(value) < min_magnitude ? signed_minimum : value;
 }
 
@@ -370,13 +372,16 @@ RfRefractedRayDiff rf_refract_ray_diff(RfRayDiff diff, float3 direction, float3 
     float k = 1.0 - eta * eta * (1.0 - cosine * cosine);
     bool total_internal_reflection = k < 0.0;
     float root = sqrt(max(k, 0.0));
-    float transmitted_cos = cosine <= 0.0 ? -root : root;
+    float negative_root = -root;
+    float transmitted_cos = cosine <= 0.0 ? negative_root : root;
     float mu = eta * cosine - transmitted_cos;
     float clamped_root = max(root, RF_DIFF_MIN_COS);
-    float clamped_cos = cosine <= 0.0 ? -clamped_root : clamped_root;
+    float negative_clamped_root = -clamped_root;
+    float clamped_cos = cosine <= 0.0 ? negative_clamped_root : clamped_root;
     float rate = eta - eta * eta * cosine / clamped_cos;
     float ratio = total_internal_reflection ? 1.0 : eta;
-    float normal_scale = total_internal_reflection ? 2.0 * cosine : mu;
+    float reflected_scale = 2.0 * cosine;
+    float normal_scale = total_internal_reflection ? reflected_scale : mu;
     float normal_rate = total_internal_reflection ? 2.0 : rate;
     RfRayDiff leaving = {
         diff.d_origin_dx, 0.0,
@@ -582,7 +587,8 @@ RfDerivatives3 rf_anisotropic_cone_axes(float width, float3 normal, float3 direc
     float3 across = cross(normal, direction);
     float length2 = dot(across, across);
     float3 fixed_minor = cross(normal, rf_orthonormal_tangent(normal));
-    float3 minor = length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE ? fixed_minor : across / sqrt(length2);
+    float3 unit_across = across / sqrt(length2);
+    float3 minor = length2 < RF_DIFF_MIN_SINE * RF_DIFF_MIN_SINE ? fixed_minor : unit_across;
     float size = abs(width);
     RfDerivatives3 axes = { cross(minor, normal) * (size / max(abs(dot(normal, direction)), RF_DIFF_MIN_COS)),
         minor * size };

@@ -42,7 +42,8 @@ struct RfBarycentricOffsets {
 // value itself, unless |value| < min_magnitude: then min_magnitude carrying the sign of value (positive
 // for either zero).
 double rf_clamp_away_from_zero_f64(double value, double min_magnitude) {
-    double signed_minimum = value >= double(0.0) ? min_magnitude : -min_magnitude;
+    double negative_minimum = -min_magnitude;
+    double signed_minimum = value >= double(0.0) ? min_magnitude : negative_minimum;
     return abs(value) < min_magnitude ? signed_minimum : value;
 }
 
@@ -59,7 +60,9 @@ double ray_footprint_dot_f64(double3 a, double3 b) {
 
 // clamp(value, -limit, limit) of a double, written out (see ray_footprint_cross_f64).
 double ray_footprint_clamp_f64(double value, double limit) {
-    return value < -limit ? -limit : (value > limit ? limit : value);
+    double lower = -limit;
+    double below_upper = value > limit ? limit : value;
+    return value < lower ? lower : below_upper;
 }
 
 // In double: the barycentrics (w, u, v) at which the ray meets the triangle's unbounded plane (RTG

@@ -15,7 +15,8 @@
 // pixel. Degenerate settings (smoothstep edges that coincide, zero dashes, absurd sizes) are clamped
 // with the RF_ constants, so finite inputs give a finite coverage between 0 and 1. Choices between two
 // values are ?: on values already computed, per component where the choice is, as glslang has no
-// select().
+// select(); Slang takes select() there instead, because its scalar ?: evaluates only the operand it
+// picks and would branch on each component.
 
 #ifndef RAY_FOOTPRINT_WIREFRAME_HLSL
 #define RAY_FOOTPRINT_WIREFRAME_HLSL
@@ -141,14 +142,19 @@ float rf_stipple(int stipple_repeats, float stipple_length, float edge_position)
 // smoothstep(start, start + width, x) spelled out, per component: t^2 (3 - 2 t) with
 // t = min((x - start) / max(width, RF_MIN_LINE_RAMP), 1) from start on, 0 below start, and 1 from
 // start on where width <= RF_MIN_LINE_RAMP (a hard step). Every case is evaluated and one selected
-// per component (?: on computed values is OpSelect): no branch.
+// per component (select in Slang, ?: per component otherwise): no branch.
 float3 rf_edge_ramp(float3 x, float3 start, float3 width) {
     float3 t = min((x - start) / max(width, RF_MIN_LINE_RAMP), 1.0);
     float3 ramp = t * t * (3.0 - 2.0 * t);
     bool3 ramped = width > RF_MIN_LINE_RAMP;
-    float3 above_start = float3(ramped.x ? ramp.x : 1.0, ramped.y ? ramp.y : 1.0, ramped.z ? ramp.z : 1.0);
     bool3 below = x < start;
+#ifdef __SLANG__
+    float3 above_start = select(ramped, ramp, 1.0);
+    return select(below, 0.0, above_start);
+#else
+    float3 above_start = float3(ramped.x ? ramp.x : 1.0, ramped.y ? ramp.y : 1.0, ramped.z ? ramp.z : 1.0);
     return float3(below.x ? 0.0 : above_start.x, below.y ? 0.0 : above_start.y, below.z ? 0.0 : above_start.z);
+#endif
 }
 
 // How much of the pixel a line covers: 1 minus the smallest component of rf_edge_ramp(b, |d| th, |d| sm), with
