@@ -207,6 +207,90 @@ fn is_scalar_argument(arguments: &str) -> bool {
         && (argument.starts_with("RF_") || argument.starts_with(|c: char| c.is_ascii_digit() || c == '-'))
 }
 
+/// Every `?:` of the GLSL and Slang modules chooses between named values: an identifier, a
+/// literal, an `RF_` constant (negated or not) or a vector of literals. Both languages evaluate
+/// only the operand a scalar `?:` picks, so an operand written as an expression (`-x`, `a * b`,
+/// `v.x`, a call, another `?:`) compiles to a branch around it, where a choice between values
+/// already computed is an `OpSelect`. The HLSL modules' lines are the Slang modules' but for the
+/// `#else` of an `#ifdef __SLANG__`, where `rf_edge_ramp` chooses per component (glslang, which
+/// has no `select`, makes selects of them).
+#[test]
+fn every_choice_is_between_named_values() {
+    for &module in Module::ALL {
+        for (language, source) in [("GLSL", module.glsl()), ("Slang", module.slang())] {
+            for line in source.lines() {
+                let code = line.split("//").next().unwrap_or_default();
+                for operand in choices(code)
+                    .into_iter()
+                    .flat_map(|(then, otherwise)| [then, otherwise])
+                {
+                    assert!(
+                        is_named_value(operand),
+                        "{} ({language}): `{}` chooses `{operand}`, an expression: name it first",
+                        module.stem(),
+                        line.trim()
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The two operands of each `c ? a : b` in `code`.
+fn choices(code: &str) -> Vec<(&str, &str)> {
+    let mut found = Vec::new();
+    for (at, _) in code.match_indices('?') {
+        let rest = &code[at + 1..];
+        let Some(colon) = operand_end(rest, ':') else {
+            continue;
+        };
+        let otherwise = &rest[colon + 1..];
+        let end = operand_end(otherwise, ';').unwrap_or(otherwise.len());
+        found.push((rest[..colon].trim(), otherwise[..end].trim()));
+    }
+    found
+}
+
+/// Where the operand that starts `text` ends: at the first `stop` or `,` outside brackets, or at
+/// a bracket that closes one opened before `text`.
+fn operand_end(text: &str, stop: char) -> Option<usize> {
+    let mut depth = 0usize;
+    for (at, c) in text.char_indices() {
+        match c {
+            '(' | '{' => depth += 1,
+            ')' | '}' if depth == 0 => return Some(at),
+            ')' | '}' => depth -= 1,
+            _ if depth == 0 && (c == stop || c == ',') => return Some(at),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Whether `operand` names a value: an identifier, a number, an `RF_` constant or a number with
+/// a minus sign, or a vector of numbers (`float2(0.0, 1.0)`, `(float3)1.0`).
+fn is_named_value(operand: &str) -> bool {
+    let is_identifier = |text: &str| {
+        text.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+            && text.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+    };
+    let is_number = |text: &str| text.parse::<f64>().is_ok();
+    let negated = operand.strip_prefix('-');
+    let vector = operand
+        .trim_start_matches('(')
+        .split_once(['(', ')'])
+        .filter(|(ty, _)| {
+            ["float", "vec", "double", "dvec"]
+                .iter()
+                .any(|prefix| ty.starts_with(prefix))
+        })
+        .is_some_and(|(_, values)| values.chars().all(|c| c.is_ascii_digit() || ".,-e )".contains(c)));
+    is_identifier(operand)
+        || is_number(operand)
+        || negated.is_some_and(|name| name.starts_with("RF_") && is_identifier(name))
+        || vector
+}
+
 #[test]
 fn glsl_modules_have_an_include_guard_and_no_version_or_main() {
     for &module in Module::ALL {
