@@ -10,14 +10,14 @@
 //! changes is that no process starts per shader. slangc spends most of its time on a small shader
 //! starting: loading the library and Slang's core module, about 0.3 s of the 0.37 s a kernel of
 //! this crate takes on a 2-core x86-64 machine, where the library takes 0.06-0.10 s a kernel
-//! after one session per thread (about 0.2 s, once).
+//! after making a session (about 0.2-0.3 s, once). The compiles of all threads share a pool of at
+//! most four sessions (`MAX_SESSIONS`), each used by one compile at a time.
 
 use super::CompileError;
 use libloading::Library;
-use std::cell::RefCell;
 use std::ffi::{c_char, c_int, c_void, CString, OsString};
 use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
+use std::sync::{Condvar, Mutex, OnceLock, PoisonError};
 
 /// `SlangSession*` and `SlangCompileRequest*`: opaque.
 type Handle = *mut c_void;
@@ -175,8 +175,13 @@ fn library_files(dir: &Path) -> Vec<PathBuf> {
         .collect()
 }
 
-/// A session of this thread: Slang's sessions are not to be shared between threads.
+/// A Slang session (a global session, in `slang.h`'s words). The library lets one thread at a time
+/// call into a session; [`SessionPool`] hands each to one compile at a time.
 struct Session(Handle);
+
+// SAFETY: a session is used by one thread at a time (it is either in the pool or held by the one
+// compile that took it), which is all the Slang library asks of its callers.
+unsafe impl Send for Session {}
 
 impl Drop for Session {
     fn drop(&mut self) {
@@ -187,8 +192,69 @@ impl Drop for Session {
     }
 }
 
-thread_local! {
-    static SESSION: RefCell<Option<Session>> = const { RefCell::new(None) };
+/// The sessions of this process not in use, and how many were made: at most [`MAX_SESSIONS`], so
+/// that compiles on many threads share a few sessions instead of each making one. Making a session
+/// loads Slang's core module: 0.3 s on one thread, and on a 16-thread host sixteen threads making
+/// theirs at once took 32-35 s summed (up to 4 s each), more than all their compiles together.
+struct SessionPool {
+    free: Vec<Session>,
+    made: usize,
+}
+
+/// The most sessions this process makes; a compile that finds none free while this many exist
+/// waits for one. Cold verification of the whole suite on a 16-thread host (an NVIDIA H200's)
+/// took 8.6-9.2 s with a session per thread, 12.7-14.2 s with 1 session, 8.0-9.4 s with 2, 6.1-6.6
+/// s with 4 and 6.6-6.9 s with 8.
+const MAX_SESSIONS: usize = 4;
+
+/// This process's [`SessionPool`] and the signal that a session was put back.
+fn session_pool() -> &'static (Mutex<SessionPool>, Condvar) {
+    static POOL: OnceLock<(Mutex<SessionPool>, Condvar)> = OnceLock::new();
+    POOL.get_or_init(|| {
+        let pool = SessionPool {
+            free: Vec::new(),
+            made: 0,
+        };
+        (Mutex::new(pool), Condvar::new())
+    })
+}
+
+/// A free session, or a new one while fewer than [`MAX_SESSIONS`] exist, or the next one put back.
+fn take_session(api: &Api) -> Result<Session, CompileError> {
+    let (lock, put_back) = session_pool();
+    let mut pool = lock.lock().unwrap_or_else(PoisonError::into_inner);
+    loop {
+        if let Some(session) = pool.free.pop() {
+            return Ok(session);
+        }
+        if pool.made < MAX_SESSIONS {
+            pool.made += 1;
+            drop(pool);
+            let mut handle = std::ptr::null_mut();
+            // SAFETY: the description is `slang.h`'s struct and outlives the call; a failure
+            // leaves the handle null.
+            let result = unsafe { (api.create_session)(&GlobalSessionDescription::slangc(), &mut handle) };
+            if result < 0 || handle.is_null() {
+                lock.lock().unwrap_or_else(PoisonError::into_inner).made -= 1;
+                put_back.notify_one();
+                return Err(CompileError::NotRun(
+                    "the Slang library made no session".to_string(),
+                ));
+            }
+            return Ok(Session(handle));
+        }
+        pool = put_back.wait(pool).unwrap_or_else(PoisonError::into_inner);
+    }
+}
+
+/// Puts `session` back for the next compile.
+fn put_back(session: Session) {
+    let (lock, put_back) = session_pool();
+    lock.lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .free
+        .push(session);
+    put_back.notify_one();
 }
 
 /// What slangc sets before its command line's options and a compile request does not: column-major
@@ -237,7 +303,7 @@ unsafe fn container_code(api: &Api, request: Handle) -> Option<Vec<u8>> {
     bytes
 }
 
-/// Runs one compile request of `arguments` after [`SLANGC_DEFAULTS`] on this thread's session,
+/// Runs one compile request of `arguments` after [`SLANGC_DEFAULTS`] on a session of the pool,
 /// and `read`s its output (a compile with none fails).
 fn run_request(
     arguments: &[OsString],
@@ -253,44 +319,45 @@ fn run_request(
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| CompileError::NotRun(format!("a slangc argument holds a NUL byte: {e}")))?;
     let pointers: Vec<*const c_char> = arguments.iter().map(|argument| argument.as_ptr()).collect();
+    let session = take_session(api)?;
+    let output = compile_request(api, &session, &pointers, input, read);
+    put_back(session);
+    output
+}
+
+/// Runs one compile request of the arguments `pointers` on `session`, which this compile holds,
+/// and `read`s its output (a compile with none fails).
+fn compile_request(
+    api: &Api,
+    session: &Session,
+    pointers: &[*const c_char],
+    input: &Path,
+    read: unsafe fn(&Api, Handle) -> Option<Vec<u8>>,
+) -> Result<Vec<u8>, CompileError> {
     let count = c_int::try_from(pointers.len())
         .map_err(|_| CompileError::NotRun(format!("{} slangc arguments", pointers.len())))?;
-    SESSION.with_borrow_mut(|session| {
-        let session = session.get_or_insert_with(|| {
-            let mut handle = std::ptr::null_mut();
-            // SAFETY: the description is `slang.h`'s struct and outlives the call; a failure
-            // leaves the handle null.
-            let result = unsafe { (api.create_session)(&GlobalSessionDescription::slangc(), &mut handle) };
-            Session(if result < 0 { std::ptr::null_mut() } else { handle })
-        });
-        if session.0.is_null() {
+    // SAFETY: the request is made, used and destroyed here, by the one compile holding the
+    // session; the argument pointers outlive the call that reads them; the code and the
+    // diagnostics are copied before the request is destroyed.
+    unsafe {
+        let request = (api.create_request)(session.0);
+        if request.is_null() {
             return Err(CompileError::NotRun(
-                "the Slang library made no session".to_string(),
+                "the Slang library made no compile request".to_string(),
             ));
         }
-        // SAFETY: the request is made, used and destroyed here, on the session's thread; the
-        // argument pointers outlive the call that reads them; the code and the diagnostics are
-        // copied before the request is destroyed.
-        unsafe {
-            let request = (api.create_request)(session.0);
-            if request.is_null() {
-                return Err(CompileError::NotRun(
-                    "the Slang library made no compile request".to_string(),
-                ));
-            }
-            let mut result = (api.process_arguments)(request, pointers.as_ptr(), count);
-            if result >= 0 {
-                result = (api.compile)(request);
-            }
-            let code = if result < 0 { None } else { read(api, request) };
-            let output = code.ok_or_else(|| CompileError::Failed {
-                log: diagnostics(api, request, result),
-                source_path: input.display().to_string(),
-            });
-            (api.destroy_request)(request);
-            output
+        let mut result = (api.process_arguments)(request, pointers.as_ptr(), count);
+        if result >= 0 {
+            result = (api.compile)(request);
         }
-    })
+        let code = if result < 0 { None } else { read(api, request) };
+        let output = code.ok_or_else(|| CompileError::Failed {
+            log: diagnostics(api, request, result),
+            source_path: input.display().to_string(),
+        });
+        (api.destroy_request)(request);
+        output
+    }
 }
 
 /// The diagnostics of `request`, which ended with `result`, or a line saying there were none.
