@@ -221,7 +221,7 @@ fn session_pool() -> &'static (Mutex<SessionPool>, Condvar) {
 
 /// A free session, or a new one while fewer than [`MAX_SESSIONS`] exist, or the next one put back.
 fn take_session(api: &Api) -> Result<Session, CompileError> {
-    let (lock, put_back) = session_pool();
+    let (lock, returned) = session_pool();
     let mut pool = lock.lock().unwrap_or_else(PoisonError::into_inner);
     loop {
         if let Some(session) = pool.free.pop() {
@@ -236,25 +236,25 @@ fn take_session(api: &Api) -> Result<Session, CompileError> {
             let result = unsafe { (api.create_session)(&GlobalSessionDescription::slangc(), &mut handle) };
             if result < 0 || handle.is_null() {
                 lock.lock().unwrap_or_else(PoisonError::into_inner).made -= 1;
-                put_back.notify_one();
+                returned.notify_one();
                 return Err(CompileError::NotRun(
                     "the Slang library made no session".to_string(),
                 ));
             }
             return Ok(Session(handle));
         }
-        pool = put_back.wait(pool).unwrap_or_else(PoisonError::into_inner);
+        pool = returned.wait(pool).unwrap_or_else(PoisonError::into_inner);
     }
 }
 
 /// Puts `session` back for the next compile.
 fn put_back(session: Session) {
-    let (lock, put_back) = session_pool();
+    let (lock, returned) = session_pool();
     lock.lock()
         .unwrap_or_else(PoisonError::into_inner)
         .free
         .push(session);
-    put_back.notify_one();
+    returned.notify_one();
 }
 
 /// What slangc sets before its command line's options and a compile request does not: column-major
