@@ -6,11 +6,17 @@
 //!
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example path_image -- \
-//!     [--seed N] [--size WxH] [--reference-spp N] [--scene NAME] [--threads N] [--plot FILE]
+//!     [--seed N] [--size WxH] [--reference-spp N] [--scene NAME] [--threads N] [--plot FILE] \
+//!     [--spread pixel|sample]
 //! ```
+//!
+//! With `--spread sample`, a render of `n` samples per pixel starts every path from the cone of
+//! one of `n` samples: the pixel's of an image `sqrt(n)` times taller, whose spread angle is the
+//! pixel's over `sqrt(n)` to first order (pbrt scales its camera rays' differentials by
+//! `1 / sqrt(spp)`). Each count is then a render of its own.
 
 use ray_footprint_lab::cli::{
-    command_options, example_command, image_size, options_or_exit, positive_count, seed,
+    command_options, example_command, image_size, options_or_exit, positive_count, sample_spread, seed,
 };
 use ray_footprint_lab::paths::{
     image_error_plot, image_scene_table, image_summary_table, measure_image, scenes, scenes_named,
@@ -38,9 +44,9 @@ struct Options {
 fn usage() -> String {
     format!(
         "usage: path_image [--seed N] [--size WxH] [--reference-spp N] [--scene NAME|all] [--threads N] \
-         [--plot FILE]\n\
+         [--plot FILE] [--spread pixel|sample]\n\
          defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} \
-         --scene all --threads (all cores) --plot path_image.png",
+         --scene all --threads (all cores) --plot path_image.png --spread pixel",
         DEFAULT_SIZE.0, DEFAULT_SIZE.1
     )
 }
@@ -53,6 +59,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
             size: DEFAULT_SIZE,
             samples: SAMPLES.to_vec(),
             reference_samples: DEFAULT_REFERENCE_SAMPLES,
+            sample_spread: false,
             threads,
         },
         scenes: scenes(),
@@ -66,6 +73,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
             "--threads" => options.settings.threads = positive_count(&flag, &value)?,
             "--scene" => options.scenes = scenes_named(&value)?,
             "--plot" => options.plot = PathBuf::from(value),
+            "--spread" => options.settings.sample_spread = sample_spread(&flag, &value)?,
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
@@ -87,12 +95,18 @@ fn main() {
     println!(
         "seed {}, image {}x{} (vertical field of view 60 degrees), samples per pixel {:?} (renders A and \
          B, seeds 4 seed and 4 seed + 1), reference: two renders of {} spp at level 0 (bilinear), seeds \
-         4 seed + 2 and + 3, averaged; {} threads; wall time {:.1} s\n",
+         4 seed + 2 and + 3, averaged; a render of n spp starts its paths from {}; {} threads; wall time \
+         {:.1} s\n",
         settings.seed,
         settings.size.0,
         settings.size.1,
         settings.samples,
         settings.reference_samples,
+        if settings.sample_spread {
+            "one sample's cone (the pixel's of an image sqrt(n) times taller)"
+        } else {
+            "the pixel's cone"
+        },
         settings.threads,
         started.elapsed().as_secs_f64()
     );

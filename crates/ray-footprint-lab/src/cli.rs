@@ -53,6 +53,17 @@ pub fn count_at_least(flag: &str, value: &str, min: usize) -> Result<usize, Stri
     }
 }
 
+/// `value` of the option `flag` (`--spread`) as whether a render of `n` samples per pixel starts
+/// its paths from one sample's cone (`sample`) rather than the pixel's (`pixel`), or the message
+/// that names both.
+pub fn sample_spread(flag: &str, value: &str) -> Result<bool, String> {
+    match value {
+        "pixel" => Ok(false),
+        "sample" => Ok(true),
+        _ => Err(format!("{flag} {value}: expected pixel or sample")),
+    }
+}
+
 /// `value` of the option `flag` as a seed (any `u64`), or the message that names both.
 pub fn seed(flag: &str, value: &str) -> Result<u64, String> {
     value

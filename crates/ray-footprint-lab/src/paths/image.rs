@@ -294,6 +294,10 @@ pub struct RenderJob<'a> {
     pub methods: Vec<ImageMethod>,
     /// Samples per pixel at which the running mean is kept, ascending; the last is the total.
     pub checkpoints: Vec<usize>,
+    /// How many samples share the pixel's cone: every path starts from the cone of a pixel
+    /// `sqrt(cone_share)` times smaller (the pixel of an image that many times taller). 1 starts
+    /// from the pixel's cone; `n` from the cone of one of `n` samples.
+    pub cone_share: usize,
     /// Threads to render on.
     pub threads: usize,
 }
@@ -316,14 +320,26 @@ fn path_sample(job: &RenderJob, camera: &Camera, (x, y): (u32, u32), s: usize) -
     }
 }
 
+/// The camera whose pixel's cone is the cone of one of `cone_share` samples of a pixel of
+/// `camera`: the same view with `sqrt(cone_share)` times as many rows, whose pixel spread angle
+/// `atan(2 tan(fov_y / 2) / H)` (JCGT 2021, Eq. 30) is the pixel's over `sqrt(cone_share)` to
+/// first order. Only the cones read it; the paths go through `camera`'s pixels.
+fn cone_camera(camera: &Camera, cone_share: usize) -> Camera {
+    Camera {
+        height: camera.height * (cone_share.max(1) as f64).sqrt(),
+        ..*camera
+    }
+}
+
 /// Every method's radiance along one path.
 fn method_radiances(job: &RenderJob, light: Option<Light>, sample: &PathSample) -> Vec<DVec3> {
+    let cone_camera = cone_camera(&sample.camera, job.cone_share);
     job.methods
         .iter()
         .map(|&method| match method {
             ImageMethod::Mip0 => path_radiance(job.scene, light, job.albedo, sample, None),
             ImageMethod::Cone(rule) => {
-                let widths = method_widths(rule, &sample.path, &sample.camera);
+                let widths = method_widths(rule, &sample.path, &cone_camera);
                 path_radiance(job.scene, light, job.albedo, sample, Some(&widths))
             }
         })
@@ -450,6 +466,9 @@ pub struct ImageSettings {
     pub samples: Vec<usize>,
     /// Samples per pixel of each of the two reference renders.
     pub reference_samples: usize,
+    /// Whether a render of `n` samples per pixel starts every path from the cone of one of `n`
+    /// samples (each count then a render of its own) instead of the pixel's.
+    pub sample_spread: bool,
     /// Threads.
     pub threads: usize,
 }
@@ -464,6 +483,7 @@ pub fn measure_image(scene: &Scene, texture: &Texture, settings: &ImageSettings)
         seed: settings.seed.wrapping_mul(4).wrapping_add(seed_offset),
         methods,
         checkpoints,
+        cone_share: 1,
         threads: settings.threads,
     };
     let reference_of = |offset| {
@@ -478,8 +498,23 @@ pub fn measure_image(scene: &Scene, texture: &Texture, settings: &ImageSettings)
     let (first, second) = (reference_of(2), reference_of(3));
     let reference_variance = 0.25 * mean_squared_difference(&first, &second);
     let reference: Vec<DVec3> = first.iter().zip(&second).map(|(x, y)| 0.5 * (*x + *y)).collect();
-    let a = render(&job(0, image_methods(), settings.samples.clone()));
-    let b = render(&job(1, image_methods(), settings.samples.clone()));
+    let methods_rendered = |seed_offset: u64| -> Images {
+        if !settings.sample_spread {
+            return render(&job(seed_offset, image_methods(), settings.samples.clone()));
+        }
+        settings
+            .samples
+            .iter()
+            .map(|&count| {
+                let one = RenderJob {
+                    cone_share: count,
+                    ..job(seed_offset, image_methods(), vec![count])
+                };
+                render(&one).remove(0)
+            })
+            .collect()
+    };
+    let (a, b) = (methods_rendered(0), methods_rendered(1));
     let errors = (0..image_methods().len())
         .map(|m| {
             (0..settings.samples.len())
@@ -638,6 +673,7 @@ mod tests {
             seed: 7,
             methods: image_methods(),
             checkpoints: vec![1, 4],
+            cone_share: 1,
             threads: 2,
         };
         let images = render(&job);
@@ -659,6 +695,38 @@ mod tests {
         }
     }
 
+    /// A path started from the cone of one of 16 samples has every vertex's cone width a quarter
+    /// of the pixel's cone's, for a rule linear in the width (every vertex a curved mirror): the
+    /// spread angles differ by `atan(x) / (4 atan(x / 4)) - 1`, at most `x^2 / 3` in magnitude for
+    /// the pixel's `x = 2 tan(fov_y / 2) / H`, plus f32 rounding.
+    #[test]
+    fn a_sample_cone_is_the_pixel_cone_over_the_root_of_the_samples() {
+        let scene = crate::paths::scenes()
+            .into_iter()
+            .find(|scene| scene.name == "glossy_sphere")
+            .expect("the glossy sphere scene");
+        let camera = scene.camera((640, 360));
+        let pixel = 2.0 * camera.tan_half_fov_y / camera.height;
+        let tolerance = pixel * pixel / 3.0 + 1e-5;
+        let mut vertices = 0;
+        for index in 0..64u64 {
+            let numbers = std::array::from_fn(|k| vertex_numbers(11, index, k as u32 + 1));
+            let position = (10.0 * index as f64, 5.0 * index as f64 + 0.5);
+            let path = trace(&scene, &camera, position, &numbers);
+            let whole = method_widths(Method::NoScatteringTerm, &path, &camera);
+            let share = method_widths(Method::NoScatteringTerm, &path, &cone_camera(&camera, 16));
+            for (k, (whole, share)) in whole.iter().zip(&share).enumerate() {
+                let ratio = f64::from(*share) / f64::from(*whole);
+                assert!(
+                    (4.0 * ratio - 1.0).abs() <= tolerance,
+                    "path {index} vertex {k}: {share} against {whole}"
+                );
+                vertices += 1;
+            }
+        }
+        assert!(vertices > 64, "only {vertices} vertices");
+    }
+
     /// Every measured scene lets light reach the camera: a small render of each, white albedo, has
     /// a mean above 0.05 (a scene closed by two parallel infinite planes renders black, and its
     /// image error would be 0 for every rule).
@@ -672,6 +740,7 @@ mod tests {
                 seed: 3,
                 methods: vec![ImageMethod::Mip0],
                 checkpoints: vec![4],
+                cone_share: 1,
                 threads: 2,
             };
             let image = &render(&job)[0][0];
