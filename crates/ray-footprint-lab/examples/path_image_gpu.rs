@@ -15,7 +15,7 @@
 //! ```text
 //! cargo run --release -p ray-footprint-lab --example path_image_gpu -- \
 //!     [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] [--crops DIR] \
-//!     [--biases B,B,..]
+//!     [--biases B,B,..] [--spread pixel|sample]
 //! ```
 //!
 //! With `--crops DIR`, each scene's crop (the quality lab's) of the reference and of every mode's
@@ -26,11 +26,17 @@
 //! (`RtPushConstants::lod_bias`, in mip levels, added past the first hit) at equal samples, and
 //! the summary gives each bias' RMSE over `path_mip0`'s: the sweep that picks
 //! `ray_footprint_lab::rt::PATH_LOD_BIAS` (its doc names the command).
+//!
+//! With `--spread sample`, every mode's render of `n` samples per pixel starts from the cone of
+//! one sample instead of the pixel's: the pixel's spread angle over `sqrt(n)`, the side of the
+//! pixel's share each of `n` samples stands for (pbrt scales its camera rays' differentials so:
+//! `1 / sqrt(spp)`, floored at 1/8 in pbrt-v4). Each count is then a render of its own, the
+//! frames are timed at the cone of one of 64 samples, and `--biases` renders follow it too.
 
 use glam::DVec3;
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::cli::{
-    command_options, example_command, image_size, options_or_exit, positive_count, seed,
+    command_options, example_command, image_size, options_or_exit, positive_count, sample_spread, seed,
 };
 use ray_footprint_lab::figure::{grid, write_png, Panel, RgbaImage};
 use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, ErrorSplit};
@@ -71,13 +77,16 @@ struct Options {
     crops: Option<PathBuf>,
     /// The biases `path_bias` is also rendered at, in mip levels (none by default).
     biases: Vec<f32>,
+    /// Whether a render of `n` samples starts from one sample's cone (`--spread sample`) or from
+    /// the pixel's (`pixel`).
+    sample_spread: bool,
 }
 
 fn usage() -> String {
     format!(
         "usage: path_image_gpu [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] \
-         [--crops DIR] [--biases B,B,..]\n\
-         defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all, \
+         [--crops DIR] [--biases B,B,..] [--spread pixel|sample]\n\
+         defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all --spread pixel, \
          each scene's own texture",
         DEFAULT_SIZE.0, DEFAULT_SIZE.1
     )
@@ -92,6 +101,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         scenes: texture_scenes(LabScene::all()),
         crops: None,
         biases: Vec::new(),
+        sample_spread: false,
     };
     for (flag, value) in command_options(args)? {
         match flag.as_str() {
@@ -107,6 +117,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
             }
             "--crops" => options.crops = Some(PathBuf::from(value)),
             "--biases" => options.biases = biases(&flag, &value)?,
+            "--spread" => options.sample_spread = sample_spread(&flag, &value)?,
             "--scene" if value == "all" => options.scenes = texture_scenes(LabScene::all()),
             "--scene" => {
                 options.scenes = texture_scenes(LabScene::all())
@@ -224,6 +235,34 @@ struct Reference {
     variance: f64,
 }
 
+/// `push` with the primary cone of one of `count` samples: the pixel's spread angle over
+/// `sqrt(count)`.
+fn one_sample_cone(push: &RtPushConstants, count: usize) -> RtPushConstants {
+    let mut sample = *push;
+    sample.cone.pixel_spread_angle /= (count as f32).sqrt();
+    sample
+}
+
+/// [`split_renders`] with each count of `checkpoints` rendered on its own, its primary cone's
+/// spread angle the pixel's over `sqrt(count)`: the cone of one of `count` samples.
+fn split_renders_at_sample_spread(
+    pipeline: &ColourPipeline<'_, '_>,
+    (push, uniforms): (&RtPushConstants, &RtUniforms),
+    streams: [u64; 2],
+    checkpoints: &[usize],
+    reference: &Reference,
+) -> Result<(Vec<Vec<DVec3>>, Vec<ErrorSplit>), String> {
+    let mut means = Vec::with_capacity(checkpoints.len());
+    let mut splits = Vec::with_capacity(checkpoints.len());
+    for &count in checkpoints {
+        let sample = one_sample_cone(push, count);
+        let (a, split) = split_renders(pipeline, (&sample, uniforms), streams, &[count], reference)?;
+        means.extend(a);
+        splits.extend(split);
+    }
+    Ok((means, splits))
+}
+
 /// Renders `A` and `B` of `pipeline` (streams `streams`) at every count of `checkpoints`
 /// (ascending) and splits each pair's error against `reference`: render `A`'s means and the
 /// splits, in the order of `checkpoints`.
@@ -283,7 +322,12 @@ fn measure_scene(
     let mut base = renderer.push_constants(&scene.camera, Mode::PathMip0, 1.0, width, height);
     base.flags = scene.truth_flags;
     let uniforms = scene.camera.uniforms(options.size, WireframeSettings::default());
-    let frames = frame_times(&renderer, &pipelines, &base, &uniforms)?;
+    let timed = if options.sample_spread {
+        one_sample_cone(&base, EQUAL_TIME_SAMPLES)
+    } else {
+        base
+    };
+    let frames = frame_times(&renderer, &pipelines, &timed, &uniforms)?;
     let renders = [4 * options.seed, 4 * options.seed + 1];
     let reference_count = [options.reference_samples];
     let r1 = render_means(
@@ -306,6 +350,11 @@ fn measure_scene(
         mean: r1.iter().zip(&r2).map(|(a, b)| 0.5 * (*a + *b)).collect(),
         variance: mean_squared_difference(&r1, &r2) / 4.0,
     };
+    let render = if options.sample_spread {
+        split_renders_at_sample_spread
+    } else {
+        split_renders
+    };
     let mut results = Vec::new();
     let crop = |image: &[DVec3]| crop_of(image, options.size, scene.crop);
     let mut panels = vec![Panel::new(
@@ -318,7 +367,7 @@ fn measure_scene(
         let mut checkpoints: Vec<usize> = SAMPLES.iter().copied().chain([equal_time_samples]).collect();
         checkpoints.sort_unstable();
         checkpoints.dedup();
-        let (a, splits) = split_renders(pipeline, (&base, &uniforms), renders, &checkpoints, &reference)?;
+        let (a, splits) = render(pipeline, (&base, &uniforms), renders, &checkpoints, &reference)?;
         let at = |count: usize| {
             checkpoints
                 .iter()
@@ -349,7 +398,7 @@ fn measure_scene(
     let mut sweep = Vec::with_capacity(options.biases.len());
     for &lod_bias in &options.biases {
         let push = RtPushConstants { lod_bias, ..base };
-        sweep.push(split_renders(biased, (&push, &uniforms), renders, &SAMPLES, &reference)?.1);
+        sweep.push(render(biased, (&push, &uniforms), renders, &SAMPLES, &reference)?.1);
     }
     print_scene(
         scene,
@@ -504,7 +553,7 @@ fn main() {
         "device {}, driver {}; seed {}, image {}x{}, texture {}; path_bias at bias {PATH_LOD_BIAS:+.2}; samples per \
          pixel {:?} (renders A and B: streams 4 seed and 4 seed + 1); reference: path_mip0, two renders of {} spp (streams 4 seed + 2 and + 3), averaged; equal \
          time: path_mip0 at {EQUAL_TIME_SAMPLES} spp, frame times from {ROUNDS} interleaved rounds of \
-         {FRAMES_PER_ROUND} frames after warm-up rounds.\n",
+         {FRAMES_PER_ROUND} frames after warm-up rounds; a render of n spp starts from {}.\n",
         gpu.name(),
         gpu.driver(),
         options.seed,
@@ -512,7 +561,12 @@ fn main() {
         options.size.1,
         options.texture_size.map_or("each scene's own".to_string(), |n| format!("{n} x {n}")),
         SAMPLES,
-        options.reference_samples
+        options.reference_samples,
+        if options.sample_spread {
+            "one sample's cone (the pixel's spread angle / sqrt(n))"
+        } else {
+            "the pixel's cone"
+        }
     );
     println!(
         "RMSE over pixels and linear RGB channels (frames' RGBA8 at gamma 2.2 taken to linear), split as the CPU \
