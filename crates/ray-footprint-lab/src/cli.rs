@@ -60,7 +60,7 @@ pub fn sample_spread(flag: &str, value: &str) -> Result<bool, String> {
     match value {
         "pixel" => Ok(false),
         "sample" => Ok(true),
-        _ => Err(format!("{flag} {value}: expected pixel or sample")),
+        _ => Err(format!("{flag} must be pixel or sample, got '{value}'")),
     }
 }
 

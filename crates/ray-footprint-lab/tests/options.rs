@@ -1,4 +1,4 @@
-//! Bad command-line options of the examples (`verify`, `gallery`, `quality`): each must stop the
+//! Bad command-line options of the examples (`verify`, `gallery`, `quality`, `path_image`): each must stop the
 //! program before it opens a device, with exit status 2 and a first line on stderr that names the
 //! option and the value received. The table of what was tried is rendered into the lab README's "Bad
 //! input" section; regenerate it with
@@ -50,6 +50,7 @@ const CASES: &[Case] = &[
     case("quality", &["--scene", "moon"], &["scene", "'moon'"]),
     case("quality", &["--out", ""], &["--out"]),
     case("quality", &["--truth"], &["'--truth'"]),
+    case("path_image", &["--spread", "pupil"], &["--spread", "'pupil'"]),
 ];
 
 /// The folder cargo put the examples in: beside the `deps/` folder holding this test.
