@@ -19,8 +19,8 @@ use ray_footprint_lab::cli::{
     command_options, example_command, image_size, options_or_exit, positive_count, sample_spread, seed,
 };
 use ray_footprint_lab::paths::{
-    image_error_plot, image_scene_table, image_summary_table, measure_image, scenes, scenes_named,
-    ImageSettings, Scene, Texture,
+    image_error_plot, image_scene_table, image_summary_table, measure_image, noise_floor_table, scenes,
+    scenes_named, ImageSettings, Scene, Texture,
 };
 use std::path::PathBuf;
 use std::time::Instant;
@@ -121,18 +121,19 @@ fn main() {
         "Each cell: RMSE over pixels and linear RGB channels, (A and B mean squared), (bias / sd): \
          sd^2 = mean((A - B)^2) / 2, bias^2 = mean(((A + B) / 2 - R)^2) - sd^2 / 2 - noise^2, clamped \
          at 0. Reference noise = sqrt(mean((R1 - R2)^2) / 4), the noise of the averaged reference; it is \
-         inside every RMSE (RMSE^2 = bias^2 + sd^2 + noise^2). Bold: lowest RMSE of the column.\n"
+         inside every RMSE (RMSE^2 = bias^2 + sd^2 + noise^2). Bold: lowest RMSE of the column but the floor's.\n"
     );
     for result in &results {
         println!("{}", image_scene_table(result, &settings.samples));
     }
     println!("{}", image_summary_table(&results, &settings.samples));
     println!(
-        "wins: scenes where the method has the lowest RMSE (ties count for each; a scene without texture, \
+        "wins: scenes where the method has the lowest RMSE of all but the floor (ties count for each; a scene without texture, \
          rough_room, is a tie of all); / mip 0: mean over the scenes of RMSE / mip 0's RMSE; / best \
          shipped: that mean divided by the lowest such mean among the shipped rules (JCGT roughness, \
          RTXPT, sqrt-pdf, OptiX Toolkit).\n"
     );
+    println!("{}", noise_floor_table(&results, &settings.samples));
     match image_error_plot(&results, &settings.samples, &options.plot) {
         Ok(path) => println!("wrote {}", path.display()),
         Err(error) => {

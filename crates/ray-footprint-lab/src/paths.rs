@@ -34,8 +34,8 @@ pub mod truth;
 mod tests;
 
 pub use image::{
-    image_error_plot, image_methods, image_scene_table, image_summary_table, measure_image, ImageMethod,
-    ImageSettings, SceneErrors,
+    image_error_plot, image_methods, image_scene_table, image_summary_table, measure_image,
+    noise_floor_table, ImageMethod, ImageSettings, SceneErrors,
 };
 pub use methods::{method_widths, Method, METHODS};
 pub use report::{

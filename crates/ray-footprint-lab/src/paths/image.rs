@@ -78,7 +78,16 @@ pub enum ImageMethod {
     Mip0,
     /// The level of a cone rule's width.
     Cone(Method),
+    /// The first vertex at the level of its cone's width (the cone every rule starts from, so
+    /// every rule's first width), every later vertex at the texture's last level, its mean. Its
+    /// noise (sd) is what no rule for the later vertices removes: the noise of the paths' light
+    /// and of the first hit's lookups, which every rule shares. A floor, not a rule to ship.
+    MeanPastFirstHit,
 }
+
+/// A cone width past every scene's size, whose level lies past the texture's last: a lookup
+/// there reads the texture's mean.
+const BEYOND_ANY_SCENE: f32 = 1.0e6;
 
 impl ImageMethod {
     /// The name in the tables.
@@ -86,6 +95,7 @@ impl ImageMethod {
         match self {
             ImageMethod::Mip0 => "mip 0",
             ImageMethod::Cone(method) => method.name(),
+            ImageMethod::MeanPastFirstHit => "texture mean past the first hit (the floor)",
         }
     }
 
@@ -101,10 +111,22 @@ impl ImageMethod {
     }
 }
 
-/// The methods in the order the tables print them: mip 0, then [`METHODS`].
+/// The lowest RMSE of a method other than the floor ([`ImageMethod::MeanPastFirstHit`]) at
+/// checkpoint `c` of scene `e`: the one the tables mark and count as a win.
+fn lowest_rmse(e: &SceneErrors, c: usize) -> f64 {
+    image_methods()
+        .iter()
+        .zip(&e.errors)
+        .filter(|(method, _)| **method != ImageMethod::MeanPastFirstHit)
+        .map(|(_, errors)| errors[c].rmse)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The methods in the order the tables print them: mip 0, [`METHODS`], then the floor.
 pub fn image_methods() -> Vec<ImageMethod> {
     std::iter::once(ImageMethod::Mip0)
         .chain(METHODS.iter().map(|&m| ImageMethod::Cone(m)))
+        .chain([ImageMethod::MeanPastFirstHit])
         .collect()
 }
 
@@ -342,6 +364,14 @@ fn method_radiances(job: &RenderJob, light: Option<Light>, sample: &PathSample) 
                 let widths = method_widths(rule, &sample.path, &cone_camera);
                 path_radiance(job.scene, light, job.albedo, sample, Some(&widths))
             }
+            ImageMethod::MeanPastFirstHit => {
+                let mut widths = method_widths(Method::NoScatteringTerm, &sample.path, &cone_camera);
+                widths
+                    .iter_mut()
+                    .skip(1)
+                    .for_each(|width| *width = BEYOND_ANY_SCENE);
+                path_radiance(job.scene, light, job.albedo, sample, Some(&widths))
+            }
         })
         .collect()
 }
@@ -547,11 +577,7 @@ pub fn image_scene_table(errors: &SceneErrors, samples: &[usize]) -> String {
     for (m, method) in image_methods().iter().enumerate() {
         write!(table, "\n| {} |", method.name()).unwrap();
         for c in 0..samples.len() {
-            let best = errors
-                .errors
-                .iter()
-                .map(|e| e[c].rmse)
-                .fold(f64::INFINITY, f64::min);
+            let best = lowest_rmse(errors, c);
             let cell = errors.errors[m][c];
             let rmse = if cell.rmse == best {
                 format!("**{:.5}**", cell.rmse)
@@ -572,10 +598,9 @@ fn mean_ratio_to_mip0(all: &[SceneErrors], m: usize, c: usize) -> f64 {
     ratios.sum::<f64>() / all.len() as f64
 }
 
-/// Whether method `m` has the lowest RMSE of scene `e` at checkpoint `c`.
+/// Whether method `m` has the lowest RMSE of scene `e` at checkpoint `c` ([`lowest_rmse`]).
 fn wins(e: &SceneErrors, m: usize, c: usize) -> bool {
-    let best = e.errors.iter().map(|x| x[c].rmse).fold(f64::INFINITY, f64::min);
-    e.errors[m][c].rmse == best
+    e.errors[m][c].rmse == lowest_rmse(e, c)
 }
 
 /// The summary: per sample count, on how many scenes each method has the lowest RMSE (ties count
@@ -600,6 +625,66 @@ pub fn image_summary_table(all: &[SceneErrors], samples: &[usize]) -> String {
             let ratio = mean_ratio_to_mip0(all, m, c);
             write!(table, " {count} | {:.3} | {:.3} |", ratio / best_shipped, ratio).unwrap();
         }
+    }
+    table.push('\n');
+    table
+}
+
+/// The floor against the shipped rules. The floor of a scene is the RMSE an unbiased render
+/// with [`ImageMethod::MeanPastFirstHit`]'s noise would have, `sqrt(sd^2 + var_R)` (every RMSE
+/// holds the reference's variance `var_R`). Per sample count: the mean over the scenes of the
+/// floor over mip 0's RMSE, the lowest shipped rule's mean RMSE over mip 0's (the summary's), and
+/// per scene the floor over the lowest RMSE of a shipped rule there, its mean and its smallest
+/// over the scenes. A rule for the later vertices that lowers the error by a fraction `f` from
+/// the best shipped one needs that ratio below `1 - f` on the scene.
+pub fn noise_floor_table(all: &[SceneErrors], samples: &[usize]) -> String {
+    let methods = image_methods();
+    let floor = methods
+        .iter()
+        .position(|&m| m == ImageMethod::MeanPastFirstHit)
+        .expect("the floor is measured");
+    let shipped: Vec<usize> = (0..methods.len()).filter(|&m| methods[m].is_shipped()).collect();
+    let mut rows = [
+        String::from("| floor: sqrt(its sd^2 + reference noise^2) / mip 0's RMSE, mean over the scenes |"),
+        String::from("| lowest shipped rule: RMSE / mip 0's, mean over the scenes |"),
+        String::from("| floor / the scene's lowest shipped RMSE: mean (smallest) |"),
+    ];
+    let floor_of = |e: &SceneErrors, c: usize| e.errors[floor][c].sd.hypot(e.reference_noise);
+    for c in 0..samples.len() {
+        let floor_over_mip0 = all
+            .iter()
+            .map(|e| floor_of(e, c) / e.errors[0][c].rmse)
+            .sum::<f64>()
+            / all.len() as f64;
+        let best_shipped = shipped
+            .iter()
+            .map(|&m| mean_ratio_to_mip0(all, m, c))
+            .fold(f64::INFINITY, f64::min);
+        let per_scene: Vec<f64> = all
+            .iter()
+            .map(|e| {
+                let lowest = shipped
+                    .iter()
+                    .map(|&m| e.errors[m][c].rmse)
+                    .fold(f64::INFINITY, f64::min);
+                floor_of(e, c) / lowest
+            })
+            .collect();
+        let mean = per_scene.iter().sum::<f64>() / per_scene.len() as f64;
+        let smallest = per_scene.iter().copied().fold(f64::INFINITY, f64::min);
+        write!(rows[0], " {floor_over_mip0:.3} |").unwrap();
+        write!(rows[1], " {best_shipped:.3} |").unwrap();
+        write!(rows[2], " {mean:.3} ({smallest:.3}) |").unwrap();
+    }
+    let mut table = String::from("### the floor: the noise no rule past the first hit removes\n\n|  |");
+    for s in samples {
+        write!(table, " {s} spp |").unwrap();
+    }
+    table.push_str("\n|---|");
+    table.push_str(&"---:|".repeat(samples.len()));
+    for row in rows {
+        table.push('\n');
+        table.push_str(&row);
     }
     table.push('\n');
     table
