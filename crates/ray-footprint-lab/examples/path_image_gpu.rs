@@ -24,8 +24,10 @@
 //!
 //! With `--biases`, `path_bias` is also rendered at each of the listed level-of-detail biases
 //! (`RtPushConstants::lod_bias`, in mip levels, added past the first hit) at equal samples, and
-//! the summary gives each bias' RMSE over `path_mip0`'s: the sweep that picks
-//! `ray_footprint_lab::rt::PATH_LOD_BIAS` (its doc names the command).
+//! the summary gives each bias' RMSE and noise over `path_mip0`'s RMSE, and per scene beside the
+//! lowest mode's: the sweep that picks `ray_footprint_lab::rt::PATH_LOD_BIAS` (its doc names the
+//! command). A bias of +20 reads the texture's mean past the first hit, and its noise estimates
+//! the floor no rule for the later hits gets below.
 //!
 //! With `--spread sample`, every mode's render of `n` samples per pixel starts from the cone of
 //! one sample instead of the pixel's: the pixel's spread angle over `sqrt(n)`, the side of the
@@ -286,6 +288,9 @@ fn split_renders(
 /// One scene's results: every path mode's, and `path_bias`' at each bias of `--biases` at
 /// [`SAMPLES`].
 struct SceneResult {
+    name: &'static str,
+    /// The averaged reference's noise, inside every RMSE.
+    reference_noise: f64,
     modes: Vec<ModeResult>,
     sweep: Vec<Vec<ErrorSplit>>,
 }
@@ -407,6 +412,8 @@ fn measure_scene(
         started.elapsed().as_secs_f64(),
     );
     Ok(SceneResult {
+        name: scene.name,
+        reference_noise: reference.variance.sqrt(),
         modes: results,
         sweep,
     })
@@ -506,27 +513,45 @@ fn print_summary(all: &[SceneResult]) {
     }
 }
 
-/// The sweep of `path_bias`' bias: per bias, the mean over the scenes of its RMSE over
-/// `path_mip0`'s at each sample count, and the bias with the lowest mean at 64 samples.
+/// The sweep of `path_bias`' bias: per bias, the mean over the scenes of its RMSE and of its
+/// noise over `path_mip0`'s RMSE at each sample count, and the bias with the lowest mean RMSE at
+/// 64 samples; then per scene each bias' RMSE and sd at each count beside the reference's noise
+/// and the lowest RMSE of the path modes. The noise is `sqrt(sd^2 + reference noise^2)`, the RMSE
+/// of an unbiased render with that sd (every RMSE holds the reference's noise).
+///
+/// A bias beyond the texture's levels (+20) reads every lookup past the first hit at the last
+/// level, the texture's mean: what remains is the noise of the light's paths and of the first
+/// hit's lookups, which every mode shares. Its noise estimates the floor below which no rule for
+/// the later hits can bring the RMSE.
 fn print_sweep(all: &[SceneResult], biases: &[f32]) {
     if biases.is_empty() {
         return;
     }
     println!("\n## path_bias' bias, swept\n");
-    println!("| bias (mip levels, past the first hit) | RMSE / path_mip0's: 4 / 16 / 64 spp |");
-    println!("| ---: | ---: |");
-    let ratio = |b: usize, c: usize| {
+    println!(
+        "| bias (mip levels, past the first hit) | RMSE / path_mip0's: 4 / 16 / 64 spp | sqrt(sd^2 + reference noise^2) / path_mip0's RMSE |"
+    );
+    println!("| ---: | ---: | ---: |");
+    let mean_over_mip0 = |b: usize, c: usize, value: fn(&SceneResult, &ErrorSplit) -> f64| {
         all.iter()
-            .map(|scene| scene.sweep[b][c].rmse / scene.modes[0].equal_samples[c].rmse)
+            .map(|scene| value(scene, &scene.sweep[b][c]) / scene.modes[0].equal_samples[c].rmse)
             .sum::<f64>()
             / all.len() as f64
     };
+    let ratio = |b: usize, c: usize| mean_over_mip0(b, c, |_, split| split.rmse);
     let most = SAMPLES.len() - 1;
     for (b, bias) in biases.iter().enumerate() {
-        let ratios: Vec<String> = (0..SAMPLES.len())
-            .map(|c| format!("{:.3}", ratio(b, c)))
-            .collect();
-        println!("| {bias:+.2} | {} |", ratios.join(" / "));
+        let cells = |value: fn(&SceneResult, &ErrorSplit) -> f64| {
+            let cells: Vec<String> = (0..SAMPLES.len())
+                .map(|c| format!("{:.3}", mean_over_mip0(b, c, value)))
+                .collect();
+            cells.join(" / ")
+        };
+        println!(
+            "| {bias:+.2} | {} | {} |",
+            cells(|_, split| split.rmse),
+            cells(|scene, split| split.sd.hypot(scene.reference_noise))
+        );
     }
     let best = (0..biases.len())
         .min_by(|&x, &y| ratio(x, most).total_cmp(&ratio(y, most)))
@@ -537,6 +562,43 @@ fn print_sweep(all: &[SceneResult], biases: &[f32]) {
         biases[best],
         ratio(best, most)
     );
+    print_sweep_scenes(all, biases);
+}
+
+/// Per scene: the reference's noise, the lowest RMSE of the path modes and each bias' RMSE (sd)
+/// at 4 / 16 / 64 samples.
+fn print_sweep_scenes(all: &[SceneResult], biases: &[f32]) {
+    print!("\n| scene | reference noise | lowest mode's RMSE: 4 / 16 / 64 spp |");
+    for bias in biases {
+        print!(" bias {bias:+.2}: RMSE (sd) |");
+    }
+    println!("\n| --- | ---: | ---: |{}", " ---: |".repeat(biases.len()));
+    for scene in all {
+        let lowest: Vec<String> = (0..SAMPLES.len())
+            .map(|c| {
+                let rmse = scene
+                    .modes
+                    .iter()
+                    .map(|mode| mode.equal_samples[c].rmse)
+                    .fold(f64::INFINITY, f64::min);
+                format!("{rmse:.5}")
+            })
+            .collect();
+        print!(
+            "| {} | {:.5} | {} |",
+            scene.name,
+            scene.reference_noise,
+            lowest.join(" / ")
+        );
+        for splits in &scene.sweep {
+            let cells: Vec<String> = splits
+                .iter()
+                .map(|split| format!("{:.5} ({:.5})", split.rmse, split.sd))
+                .collect();
+            print!(" {} |", cells.join(" / "));
+        }
+        println!();
+    }
 }
 
 fn main() {
