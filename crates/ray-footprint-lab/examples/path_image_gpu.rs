@@ -34,6 +34,12 @@
 //! pixel's share each of `n` samples stands for (pbrt scales its camera rays' differentials so:
 //! `1 / sqrt(spp)`, floored at 1/8 in pbrt-v4). Each count is then a render of its own, the
 //! frames are timed at the cone of one of 64 samples, and `--biases` renders follow it too.
+//!
+//! With `--offsets pixel`, each pixel of a frame samples a sub-pixel position of its own, drawn
+//! from the frame's offset and the pixel (`FLAG_PIXEL_JITTER`), instead of every pixel sampling at
+//! the frame's offset (`frame`, the default). One offset per frame makes a frame's texture error
+//! the same function of it at every pixel, so that the bias and noise of a render of 64 frames do
+//! not separate: `path_mip0`, unbiased, then reads a bias of up to 0.0096.
 
 use glam::DVec3;
 use ray_footprint::wireframe::WireframeSettings;
@@ -43,7 +49,7 @@ use ray_footprint_lab::cli::{
 use ray_footprint_lab::figure::{grid, write_png, Panel, RgbaImage};
 use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, ErrorSplit};
 use ray_footprint_lab::quality::{LabScene, Measure};
-use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms};
+use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms, FLAG_PIXEL_JITTER};
 use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer, PATH_LOD_BIAS};
 use ray_footprint_lab::timing::{gpu_clocks, median, warm_up, Spread};
 use std::path::PathBuf;
@@ -82,13 +88,17 @@ struct Options {
     /// Whether a render of `n` samples starts from one sample's cone (`--spread sample`) or from
     /// the pixel's (`pixel`).
     sample_spread: bool,
+    /// Whether each pixel of a frame samples an offset of its own (`--offsets pixel`,
+    /// [`FLAG_PIXEL_JITTER`]) or every pixel the frame's (`frame`).
+    pixel_offsets: bool,
 }
 
 fn usage() -> String {
     format!(
         "usage: path_image_gpu [--seed N] [--size WxH] [--reference-spp N] [--texture-size N] [--scene NAME|all] \
-         [--crops DIR] [--biases B,B,..] [--spread pixel|sample]\n\
-         defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all --spread pixel, \
+         [--crops DIR] [--biases B,B,..] [--spread pixel|sample] [--offsets frame|pixel]\n\
+         defaults: --seed {DEFAULT_SEED} --size {}x{} --reference-spp {DEFAULT_REFERENCE_SAMPLES} --scene all --spread pixel \
+         --offsets frame, \
          each scene's own texture",
         DEFAULT_SIZE.0, DEFAULT_SIZE.1
     )
@@ -104,6 +114,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         crops: None,
         biases: Vec::new(),
         sample_spread: false,
+        pixel_offsets: false,
     };
     for (flag, value) in command_options(args)? {
         match flag.as_str() {
@@ -120,6 +131,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
             "--crops" => options.crops = Some(PathBuf::from(value)),
             "--biases" => options.biases = biases(&flag, &value)?,
             "--spread" => options.sample_spread = sample_spread(&flag, &value)?,
+            "--offsets" => options.pixel_offsets = pixel_offsets(&flag, &value)?,
             "--scene" if value == "all" => options.scenes = texture_scenes(LabScene::all()),
             "--scene" => {
                 options.scenes = texture_scenes(LabScene::all())
@@ -147,6 +159,15 @@ fn biases(flag: &str, value: &str) -> Result<Vec<f32>, String> {
             )),
         })
         .collect()
+}
+
+/// `value` of the option `flag` (`--offsets`) as whether each pixel samples an offset of its own.
+fn pixel_offsets(flag: &str, value: &str) -> Result<bool, String> {
+    match value {
+        "frame" => Ok(false),
+        "pixel" => Ok(true),
+        _ => Err(format!("{flag} must be frame or pixel, got '{value}'")),
+    }
 }
 
 /// The scenes that measure a texture (the wireframe's torus draws lines).
@@ -325,7 +346,12 @@ fn measure_scene(
         .map_err(|e| e.to_string())?;
     let (width, height) = options.size;
     let mut base = renderer.push_constants(&scene.camera, Mode::PathMip0, 1.0, width, height);
-    base.flags = scene.truth_flags;
+    base.flags = scene.truth_flags
+        | if options.pixel_offsets {
+            FLAG_PIXEL_JITTER
+        } else {
+            0
+        };
     let uniforms = scene.camera.uniforms(options.size, WireframeSettings::default());
     let timed = if options.sample_spread {
         one_sample_cone(&base, EQUAL_TIME_SAMPLES)
@@ -615,7 +641,7 @@ fn main() {
         "device {}, driver {}; seed {}, image {}x{}, texture {}; path_bias at bias {PATH_LOD_BIAS:+.2}; samples per \
          pixel {:?} (renders A and B: streams 4 seed and 4 seed + 1); reference: path_mip0, two renders of {} spp (streams 4 seed + 2 and + 3), averaged; equal \
          time: path_mip0 at {EQUAL_TIME_SAMPLES} spp, frame times from {ROUNDS} interleaved rounds of \
-         {FRAMES_PER_ROUND} frames after warm-up rounds; a render of n spp starts from {}.\n",
+         {FRAMES_PER_ROUND} frames after warm-up rounds; a render of n spp starts from {}; a frame's pixels sample {}.\n",
         gpu.name(),
         gpu.driver(),
         options.seed,
@@ -628,6 +654,11 @@ fn main() {
             "one sample's cone (the pixel's spread angle / sqrt(n))"
         } else {
             "the pixel's cone"
+        },
+        if options.pixel_offsets {
+            "each an offset of its own"
+        } else {
+            "the frame's one offset"
         }
     );
     println!(

@@ -51,6 +51,7 @@ const CASES: &[Case] = &[
     case("quality", &["--out", ""], &["--out"]),
     case("quality", &["--truth"], &["'--truth'"]),
     case("path_image", &["--spread", "pupil"], &["--spread", "'pupil'"]),
+    case("path_image_gpu", &["--offsets", "each"], &["--offsets", "'each'"]),
 ];
 
 /// The folder cargo put the examples in: beside the `deps/` folder holding this test.

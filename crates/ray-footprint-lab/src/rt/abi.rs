@@ -80,6 +80,15 @@ pub struct RtPushConstants {
 /// normal whose reflection would leave below the surface gives the shading normal's reflection.
 pub const FLAG_GLOSSY_LOBE: u32 = 1;
 
+/// [`RtPushConstants::flags`]: each pixel of the frame samples a sub-pixel position of its own,
+/// drawn from a hash of the pixel and `pixel_offset` (uniform over the pixel, independent between
+/// pixels and frames), instead of every pixel sampling at `pixel_offset`. A render averaging such
+/// frames has errors that are independent from pixel to pixel, so that its noise and bias over the
+/// image separate; with one offset per frame, the texture's error of a frame is the same function
+/// of that offset at every pixel, and a render of `n` frames carries `n` draws of it. The
+/// ray-tracing pipelines' ray generation reads it (the ray-query shader does not).
+pub const FLAG_PIXEL_JITTER: u32 = 2;
+
 /// What the renderer measured at a pixel's primary hit: the hit data, every ray-cone value the shader computed from it, the
 /// ray-differential and wireframe values ([`RtDiffRecord`]), and the values of the hit's material
 /// (the roughness spread of a mirror, the refraction of a glass surface) and the anisotropic cone

@@ -24,7 +24,7 @@ use ray_footprint_cases::ray_cone::curvature::curvature_spread_angle::curvature_
 use ray_footprint_cases::ray_cone::curvature::isotropic_curvature::hit_curvature_error;
 use ray_footprint_cases::ray_cone::footprint::shared::area_corners;
 use ray_footprint_lab::rt::abi::{
-    self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE,
+    self, RtDiffRecord, RtPixelRecord, RtPushConstants, RtUniforms, FLAG_GLOSSY_LOBE, FLAG_PIXEL_JITTER,
 };
 use ray_footprint_lab::rt::{
     open_device, ray_query_source, Camera, ClosestHit, Error, Frame, Material, Mode, Renderer, Scene, Vertex,
@@ -207,6 +207,75 @@ fn lod_bias_moves_only_path_bias() {
     assert_eq!(cone, 0, "path_cone reads no bias");
 }
 
+/// With [`FLAG_PIXEL_JITTER`] each pixel's primary ray passes through a sub-pixel position of its
+/// own. The offsets recovered from the recorded directions (the inverse of the camera's
+/// projection) are the frame's offset at every pixel without the flag; with it they lie in the
+/// pixel, their mean is near 0 and their variance near a uniform offset's 1/12 per axis (over the
+/// ground's 2,000 or so pixels the variance's sampling error is about 2% of it, the mean's 0.0065;
+/// the bounds allow 15% and 0.03).
+#[test]
+fn pixel_jitter_gives_every_pixel_an_offset_of_its_own() {
+    let gpu = gpu();
+    let renderer = Renderer::new(&gpu, Scene::gallery()).unwrap_or_else(|e| panic!("{e}"));
+    let camera = Camera::ground();
+    let uniforms = camera.uniforms((WIDTH, HEIGHT), WireframeSettings::default());
+    let offsets = |flags: u32| -> Vec<Vec2> {
+        let mut push = renderer.push_constants(&camera, Mode::Mip0, TEX_GRAD_SCALE, WIDTH, HEIGHT);
+        push.pixel_offset = PIXEL_OFFSET;
+        push.flags = flags;
+        let frame = renderer
+            .render(&push, &uniforms)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let size = Vec2::new(WIDTH as f32, HEIGHT as f32);
+        frame
+            .records
+            .iter()
+            .enumerate()
+            .filter(|(_, record)| record.hit == 1)
+            .map(|(index, record)| {
+                let d = record.direction / record.direction.dot(push.forward);
+                let centred = Vec2::new(
+                    d.dot(push.right) / (push.aspect * push.tan_half_fov_y),
+                    -d.dot(push.up) / push.tan_half_fov_y,
+                );
+                let pixel = Vec2::new((index as u32 % WIDTH) as f32, (index as u32 / WIDTH) as f32);
+                (centred + 1.0) * 0.5 * size - pixel - 0.5
+            })
+            .collect()
+    };
+    let shared = offsets(0);
+    let largest = shared
+        .iter()
+        .map(|o| (*o - PIXEL_OFFSET).abs().max_element())
+        .fold(0.0, f32::max);
+    assert!(
+        largest < 1e-2,
+        "without the flag every pixel samples the frame's offset: off by {largest}"
+    );
+    let own = offsets(FLAG_PIXEL_JITTER);
+    let count = own.len() as f32;
+    let mean = own.iter().copied().sum::<Vec2>() / count;
+    let variance = own.iter().map(|o| (*o - mean) * (*o - mean)).sum::<Vec2>() / count;
+    println!(
+        "{} pixels' own offsets: mean {mean}, variance {variance} (uniform: 0, 1/12 = 0.0833)",
+        own.len()
+    );
+    assert!(
+        own.iter().all(|o| o.abs().max_element() <= 0.5 + 1e-2),
+        "an offset left its pixel"
+    );
+    assert!(
+        mean.abs().max_element() < 0.03,
+        "the offsets' mean {mean} is not near 0"
+    );
+    let uniform = 1.0 / 12.0;
+    assert!(
+        variance.cmpgt(Vec2::splat(0.85 * uniform)).all()
+            && variance.cmplt(Vec2::splat(1.15 * uniform)).all(),
+        "the offsets' variance {variance} is not a uniform offset's {uniform}"
+    );
+}
+
 /// Each mode's colour-only pipeline, which computes only what its mode needs and records
 /// nothing, renders the pixels of the recording pipeline in that mode in every [`colour_views`]
 /// view, to one [`ROUNDING_STEP`].
@@ -276,6 +345,12 @@ fn colour_views() -> [(Scene, Vec<ColourView>); 2] {
     let gallery = vec![
         ("ground", Camera::ground(), Vec2::ZERO, 0),
         ("ground off centre", Camera::ground(), PIXEL_OFFSET, 0),
+        (
+            "ground, own offsets",
+            Camera::ground(),
+            PIXEL_OFFSET,
+            FLAG_PIXEL_JITTER,
+        ),
         ("reflection", Camera::reflection(), Vec2::ZERO, 0),
         ("torus", Camera::torus(), Vec2::ZERO, 0),
     ];

@@ -117,6 +117,14 @@ static const uint RT_MATERIAL_GLASS = 2u;
 // and the reflection's change of variables; 1 at normal incidence), and a normal whose reflection
 // would leave below the surface gives the shading normal's reflection.
 static const uint RT_FLAG_GLOSSY_LOBE = 1u;
+// RtPushConstants.flags: each pixel of the frame samples a sub-pixel position of its own, drawn
+// from a hash of the pixel and pixel_offset (uniform over the pixel, independent between pixels and
+// frames), instead of every pixel sampling at pixel_offset. A render averaging such frames has
+// errors that are independent from pixel to pixel, so that its noise and bias over the image
+// separate; with one offset per frame, the texture's error of a frame is the same function of that
+// offset at every pixel, and a render of n frames carries n draws of it. The ray-tracing pipelines'
+// ray generation reads it (the ray-query shader does not).
+static const uint RT_FLAG_PIXEL_JITTER = 2u;
 // Floats per vertex in the vertex buffer: position xyz, u, normal xyz, v (the shaders' layout).
 static const uint RT_VERTEX_FLOATS = 8u;
 // Words per mesh in the shaders' mesh table (Scene.mesh_table).

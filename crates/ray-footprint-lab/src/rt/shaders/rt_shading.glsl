@@ -73,10 +73,36 @@ vec3 rt_weights(vec2 barycentrics) {
     return vec3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
 }
 
-// Unit direction of the primary ray through `pixel`, offset from its centre by pc.pixel_offset
+// A hash of four words to four (Jarzynski, Olano, "Hash Functions for GPU Rendering", JCGT 9(3),
+// 2020: pcg4d): a multiply-add per word, then two rounds of mixing each word into the next around an
+// xor-shift.
+uvec4 rt_hash(uvec4 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    v ^= v >> 16u;
+    v.x += v.y * v.w;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v.w += v.y * v.z;
+    return v;
+}
+
+// The offset of `pixel`'s sample from the pixel's centre, in [-0.5, 0.5)^2: pc.pixel_offset, or with
+// RT_FLAG_PIXEL_JITTER the pixel's own, from the two words of its hash that rt_random leaves unused
+// (so a path's numbers and its sample's position are drawn apart).
+vec2 rt_sample_offset(uvec2 pixel) {
+    uvec4 words = rt_hash(uvec4(pixel, floatBitsToUint(pc.pixel_offset.x), floatBitsToUint(pc.pixel_offset.y)));
+    vec2 own = vec2(words.zw >> 8u) * (1.0 / 16777216.0) - 0.5;
+    return (pc.flags & RT_FLAG_PIXEL_JITTER) != 0u ? own : pc.pixel_offset;
+}
+
+// Unit direction of the primary ray through `pixel`, offset from its centre by rt_sample_offset
 // (see RtPushConstants' Rust doc).
 vec3 rt_primary_direction(uvec2 pixel) {
-    vec2 c = 2.0 * (vec2(pixel) + 0.5 + pc.pixel_offset) / vec2(pc.width, pc.height) - 1.0;
+    vec2 c = 2.0 * (vec2(pixel) + 0.5 + rt_sample_offset(pixel)) / vec2(pc.width, pc.height) - 1.0;
     return normalize(pc.forward + c.x * pc.aspect * pc.tan_half_fov_y * pc.right
         - c.y * pc.tan_half_fov_y * pc.up);
 }
@@ -146,16 +172,16 @@ RfRayCone rt_primary_cone(vec3 direction) {
     return rf_pinhole_ray_cone_for_ray(pc.cone.pixel_spread_angle, direction, pc.forward);
 }
 
-// The eye-ray differential of the primary ray through `pixel` (offset by pc.pixel_offset), from the
+// The eye-ray differential of the primary ray through `pixel` (offset by rt_sample_offset), from the
 // inverse matrices; its origin differentials are 0.
 RfRayDiff rt_eye_diff(uvec2 pixel) {
-    return rf_eye_ray_diff_from_matrices(vec2(pixel) + pc.pixel_offset, vec2(pc.width, pc.height),
+    return rf_eye_ray_diff_from_matrices(vec2(pixel) + rt_sample_offset(pixel), vec2(pc.width, pc.height),
         rt_frame.view_inv, rt_frame.proj_inv);
 }
 
 // The directions of the rays through the right and the lower neighbours of `pixel` (offset alike).
 RfNeighbourDirections rt_neighbours(uvec2 pixel) {
-    return rf_pixel_directions(vec2(pixel) + pc.pixel_offset, vec2(pc.width, pc.height), rt_frame.view_inv,
+    return rf_pixel_directions(vec2(pixel) + rt_sample_offset(pixel), vec2(pc.width, pc.height), rt_frame.view_inv,
         rt_frame.proj_inv);
 }
 
@@ -510,23 +536,6 @@ struct RtBounce {
     RtSagittal sagittal;
     vec3 tint;
 };
-
-// A hash of four words to four (Jarzynski, Olano, "Hash Functions for GPU Rendering", JCGT 9(3),
-// 2020: pcg4d): a multiply-add per word, then two rounds of mixing each word into the next around an
-// xor-shift.
-uvec4 rt_hash(uvec4 v) {
-    v = v * 1664525u + 1013904223u;
-    v.x += v.y * v.w;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v.w += v.y * v.z;
-    v ^= v >> 16u;
-    v.x += v.y * v.w;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v.w += v.y * v.z;
-    return v;
-}
 
 // Two numbers in [0, 1) for the ray of `pixel` leaving bounce `depth` at the frame's pixel offset:
 // different for every pixel, sub-pixel sample and bounce, the same on every run (a path draws new
