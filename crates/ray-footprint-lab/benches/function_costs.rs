@@ -42,7 +42,8 @@
 //!
 //! The peers with our guards: the five functions of [`PEERS`] with a guarded adapter
 //! ([`Peer::guarded_adapter`]: the peer's same original, called with the library function's
-//! guards for degenerate input added around it, the clamps, scalings and selects the peer lacks)
+//! guards for degenerate input added around it, the clamps, scalings and selects the peer lacks,
+//! and where a guard sits inside the peer's function, added there: [`Peer::guards_inside`])
 //! get one more kernel in the same rounds, compiled and timed as the peer's, on a line after the
 //! peer's ("peer + our guards"), less Slang's empty kernel too. Its verdict is ours against it,
 //! by the same rule: where the defined behaviour is what ours costs beyond the peer, ours is
@@ -61,7 +62,7 @@ use ash::vk;
 use ray_footprint::shaders::Module;
 use ray_footprint_lab::cli::{command_options, count_at_least, options_or_exit};
 use ray_footprint_lab::timing::function::{inputs, signatures, timing_kernel, Body, Callee, Signature};
-use ray_footprint_lab::timing::peers::{extract, AdapterKind, Peer, PEERS};
+use ray_footprint_lab::timing::peers::{add_guards_inside, extract, AdapterKind, Peer, PEERS};
 use ray_footprint_lab::timing::{
     self, gpu_clocks, query_pool, read_queries, round_order, warm_up, write_timestamp, Spread, Timestamps,
 };
@@ -426,9 +427,12 @@ impl<'g> Bench<'g> {
     }
 }
 
-/// The peers' directory's extraction for `peer` followed by `adapter`, or why its column is not
-/// run.
-fn peer_source(peers: Option<&PathBuf>, peer: &Peer, adapter: &str) -> Result<String, String> {
+/// The peers' directory's extraction for `peer`, with the guards of `kind` inside it, followed by
+/// `peer`'s adapter of `kind`, or why its column is not run.
+fn peer_source(peers: Option<&PathBuf>, peer: &Peer, kind: AdapterKind) -> Result<String, String> {
+    let adapter = peer
+        .adapter_of(kind)
+        .ok_or_else(|| String::from("no guarded adapter"))?;
     let dir = peers.ok_or_else(|| format!("not run: no peers' directory (--peers DIR or {PEERS_ENV})"))?;
     let path = peer.source.find(dir).ok_or_else(|| {
         format!(
@@ -439,6 +443,11 @@ fn peer_source(peers: Option<&PathBuf>, peer: &Peer, adapter: &str) -> Result<St
     })?;
     let text = std::fs::read_to_string(&path).map_err(|e| format!("not run: {}: {e}", path.display()))?;
     let items = extract(&text, peer.items).map_err(|e| format!("error: {}: {e}", path.display()))?;
+    let items = match kind {
+        AdapterKind::Plain => items,
+        AdapterKind::Guarded => add_guards_inside(&items, peer.guards_inside)
+            .map_err(|e| format!("error: {}: {e}", path.display()))?,
+    };
     Ok(format!("{items}\n{adapter}\n"))
 }
 
@@ -452,10 +461,7 @@ fn peer_kernel(
     kind: AdapterKind,
 ) -> Source {
     let peer = peer.ok_or_else(|| String::from("no peer"))?;
-    let adapter = peer
-        .adapter_of(kind)
-        .ok_or_else(|| String::from("no guarded adapter"))?;
-    let extra = peer_source(peers, peer, adapter)?;
+    let extra = peer_source(peers, peer, kind)?;
     let name = kind.name(own.name);
     let callee = Callee {
         name: &name,

@@ -14,8 +14,9 @@
 //! called with the library's guards for degenerate input added around them (clamps of the
 //! arguments before the call, arguments scaled so that no square overflows or underflows, a
 //! select after it), so that where the defined behaviour is what a function costs, the peer with
-//! that behaviour added shows it. Each says in comments which of the library's guards sit inside
-//! the peer's function, where no adapter can add them.
+//! that behaviour added shows it. Where a guard sits inside the peer's function, the guarded
+//! kernel edits the cut items ([`Peer::guards_inside`], [`add_guards_inside`]): the peer's own
+//! text, replaced by the same text with the guard added.
 
 use std::path::{Path, PathBuf};
 
@@ -95,6 +96,10 @@ pub struct Peer {
     /// function's parameters and result, calling the same items with the library function's
     /// guards added around them.
     pub guarded_adapter: Option<&'static str>,
+    /// The library's guards that sit inside the peer's functions, added there for the guarded
+    /// kernel: each `(peer's text, guarded text)` replaces the peer's text, which must occur once
+    /// in the cut items ([`add_guards_inside`]).
+    pub guards_inside: &'static [(&'static str, &'static str)],
 }
 
 /// Which of a peer's adapters a kernel calls.
@@ -139,6 +144,7 @@ pub const PEERS: &[Peer] = &[
     return RfRayCone(propagated.getWidth(), propagated.getSpreadAngle());
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_curvature_spread_angle",
@@ -148,6 +154,7 @@ pub const PEERS: &[Peer] = &[
     return computeSpreadAngleFromCurvatureIso(curvature, width, direction, normal);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_world_footprint",
@@ -158,6 +165,7 @@ pub const PEERS: &[Peer] = &[
     return rayConeWorldFootprint(peer, t, normal, -direction);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_texel_density",
@@ -187,6 +195,7 @@ pub const PEERS: &[Peer] = &[
     return triangleTexelDensity(float3(0.0), scaled01, scaled02, uv0, uv1, uv2) * rsqrt(scale);
 }",
         ),
+        guards_inside: &[],
     },
     Peer {
         function: "rf_triangle_base_lod",
@@ -223,6 +232,7 @@ pub const PEERS: &[Peer] = &[
         - 0.5 * log2(scale);
 }",
         ),
+        guards_inside: &[],
     },
     // Falcor's computeLOD leaves out the texture's size, which its texture sampler adds as
     // 0.5 log2(width height): the adapter adds it as that sampler does.
@@ -247,6 +257,7 @@ pub const PEERS: &[Peer] = &[
         float3(1.0, 0.0, 0.0)) + 0.5 * (log2(size.x) + log2(size.y));
 }",
         ),
+        guards_inside: &[],
     },
     Peer {
         function: "rf_refract_ray_cone",
@@ -292,6 +303,7 @@ pub const PEERS: &[Peer] = &[
     return RfRefractedRayCone(leaving, !transmitted);
 }",
         ),
+        guards_inside: &[],
     },
     Peer {
         function: "rf_pixel_directions",
@@ -305,6 +317,7 @@ pub const PEERS: &[Peer] = &[
     return RfNeighbourDirections(right, below);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_barycentric_derivatives",
@@ -323,6 +336,7 @@ pub const PEERS: &[Peer] = &[
     return RfDerivatives2(dx, dy);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_texture_derivatives",
@@ -336,6 +350,7 @@ pub const PEERS: &[Peer] = &[
     return RfDerivatives2(dx, dy);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_normal_derivatives",
@@ -352,6 +367,7 @@ pub const PEERS: &[Peer] = &[
     return RfDerivatives3(dx, dy);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_barycentric_deltas",
@@ -367,6 +383,7 @@ pub const PEERS: &[Peer] = &[
         hit_barycentrics);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_anisotropic_cone_gradients",
@@ -383,6 +400,7 @@ pub const PEERS: &[Peer] = &[
     return RfDerivatives2(dx, dy);
 }",
         guarded_adapter: None,
+        guards_inside: &[],
     },
     Peer {
         function: "rf_process_wireframe",
@@ -405,10 +423,13 @@ pub const PEERS: &[Peer] = &[
         // keeps the peer's products finite; ours' screen-space switch (|deltas|, or ones); the
         // stipple pattern, the peer's own `stipple` with ours' clamps of its arguments (repeats at
         // least 1, length and edge position in [0, 1]) and a solid line for repeats <= 0,
-        // evaluated always and selected, the peer's branch around it switched off. Not addable
-        // from outside: ours' hard step where the ramp width is 0 (the peer's smoothstep then has
-        // equal edges, undefined), and the clamps of the edge position and of 1 - sin(e pi) in
-        // the thickness variation, both computed inside the peer's function.
+        // evaluated always and selected, the peer's branch around it switched off. Inside the
+        // peer's functions (`guards_inside`): ours' hard step where the ramp width is at most
+        // RF_MIN_LINE_RAMP, selected beside the peer's smoothstep; the smoothstep taken from the
+        // ramp's start over its width, as ours divides, so that a ramp narrower than half an ulp
+        // of its start (whose two edges round to one, where the peer's smoothstep is undefined)
+        // still ramps; and the clamps of the edge position and of 1 - sin(e pi) in the thickness
+        // variation.
         guarded_adapter: Some(
             "float guarded_peer_rf_process_wireframe(RfWireframeSettings settings, float3 barycentrics, float3 deltas) {
     float thickness = clamp(settings.thickness, 0.0, RF_MAX_LINE_THICKNESS);
@@ -422,8 +443,35 @@ pub const PEERS: &[Peer] = &[
     return coverage * (settings.stipple ? pattern : 1.0);
 }",
         ),
+        guards_inside: &[
+            (
+                "smoothstep(deltas * (thickness), deltas * (thickness + smoothing), barys)",
+                "select(deltas * smoothing > RF_MIN_LINE_RAMP, smoothstep(0.0, max(deltas * smoothing, RF_MIN_LINE_RAMP), barys - deltas * (thickness)), step(deltas * (thickness), barys))",
+            ),
+            (
+                "(1.0 - sin(edgePos * M_PI))",
+                "clamp(1.0 - sin(clamp(edgePos, 0.0, 1.0) * M_PI), 0.0, 1.0)",
+            ),
+        ],
     },
 ];
+
+/// `items` (an [`extract`]ion) with each of `edits`' peer's text replaced by its guarded text.
+/// Fails naming the first text that does not occur exactly once.
+pub fn add_guards_inside(items: &str, edits: &[(&str, &str)]) -> Result<String, String> {
+    let mut guarded = items.to_string();
+    for (peer_text, guarded_text) in edits {
+        match guarded.matches(peer_text).count() {
+            1 => guarded = guarded.replacen(peer_text, guarded_text, 1),
+            count => {
+                return Err(format!(
+                    "'{peer_text}' occurs {count} times, not once, where a guard goes"
+                ))
+            }
+        }
+    }
+    Ok(guarded)
+}
 
 /// What an extraction needs beside the items: pi, which the peers take from a header of their
 /// own (`M_PI`).
@@ -545,6 +593,18 @@ mod tests {
         assert!(
             !extracted.contains("main") && !extracted.contains("include") && !extracted.contains("brace")
         );
+    }
+
+    #[test]
+    fn guards_replace_the_peers_text_once() {
+        let extracted = extract(PEER_FILE, &["float twice("]).unwrap();
+        let guarded = add_guards_inside(&extracted, &[("2.0 * x.x", "2.0 * max(x.x, 0.0)")]).unwrap();
+        assert!(guarded.contains("float twice(float2 x) { return 2.0 * max(x.x, 0.0); }"));
+        assert!(guarded.contains("float twice(float x) { return 2.0 * x; }"));
+        let missing = add_guards_inside(&extracted, &[("3.0 * x", "0.0")]).unwrap_err();
+        assert_eq!(missing, "'3.0 * x' occurs 0 times, not once, where a guard goes");
+        let twice = add_guards_inside(&extracted, &[("return 2.0", "return 0.0")]).unwrap_err();
+        assert_eq!(twice, "'return 2.0' occurs 2 times, not once, where a guard goes");
     }
 
     #[test]
