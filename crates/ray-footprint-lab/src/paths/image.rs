@@ -815,6 +815,47 @@ mod tests {
     /// Every measured scene lets light reach the camera: a small render of each, white albedo, has
     /// a mean above 0.05 (a scene closed by two parallel infinite planes renders black, and its
     /// image error would be 0 for every rule).
+    /// The floor looks the first vertex up at the width every rule gives it, and every later
+    /// vertex at the texture's last level, its mean, however grazing the hit.
+    #[test]
+    fn the_floor_reads_every_rules_first_width_then_the_textures_mean() {
+        // A chain of TEXTURE_SIZE^2 texels down to 1 x 1.
+        let last_level = f64::from(TEXTURE_SIZE.ilog2());
+        let mut later = 0;
+        for scene in crate::paths::scenes() {
+            let camera = scene.camera((160, 90));
+            for index in 0..16u64 {
+                let numbers = std::array::from_fn(|k| vertex_numbers(5, index, k as u32 + 1));
+                let position = (10.0 * index as f64 + 0.5, 5.0 * index as f64 + 0.5);
+                let path = trace(&scene, &camera, position, &numbers);
+                let Some(first) = method_widths(Method::NoScatteringTerm, &path, &camera)
+                    .first()
+                    .copied()
+                else {
+                    continue;
+                };
+                for method in METHODS {
+                    assert_eq!(
+                        method_widths(method, &path, &camera)[0],
+                        first,
+                        "{}: {method:?}",
+                        scene.name
+                    );
+                }
+                for vertex in path.vertices.iter().skip(1) {
+                    let level = level_of_detail(BEYOND_ANY_SCENE, vertex);
+                    assert!(
+                        level >= last_level,
+                        "{}: level {level} below the last, {last_level}",
+                        scene.name
+                    );
+                    later += 1;
+                }
+            }
+        }
+        assert!(later > 100, "only {later} vertices past the first");
+    }
+
     #[test]
     fn every_scene_is_lit() {
         for scene in crate::paths::scenes() {
