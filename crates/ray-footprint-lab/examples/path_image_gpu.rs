@@ -591,37 +591,42 @@ fn print_sweep(all: &[SceneResult], biases: &[f32]) {
     print_sweep_scenes(all, biases);
 }
 
-/// Per scene: the reference's noise, the lowest RMSE of the path modes and each bias' RMSE (sd)
-/// at 4 / 16 / 64 samples.
+/// Per scene: the reference's noise, the lowest RMSE of the path modes, and each bias' RMSE (sd)
+/// and its noise `sqrt(sd^2 + reference noise^2)` over that lowest RMSE, at 4 / 16 / 64 samples.
 fn print_sweep_scenes(all: &[SceneResult], biases: &[f32]) {
     print!("\n| scene | reference noise | lowest mode's RMSE: 4 / 16 / 64 spp |");
     for bias in biases {
-        print!(" bias {bias:+.2}: RMSE (sd) |");
+        print!(" bias {bias:+.2}: RMSE (sd) | its noise / the lowest RMSE |");
     }
-    println!("\n| --- | ---: | ---: |{}", " ---: |".repeat(biases.len()));
+    println!("\n| --- | ---: | ---: |{}", " ---: | ---: |".repeat(biases.len()));
+    let joined = |cells: Vec<String>| cells.join(" / ");
     for scene in all {
-        let lowest: Vec<String> = (0..SAMPLES.len())
+        let lowest: Vec<f64> = (0..SAMPLES.len())
             .map(|c| {
-                let rmse = scene
+                scene
                     .modes
                     .iter()
                     .map(|mode| mode.equal_samples[c].rmse)
-                    .fold(f64::INFINITY, f64::min);
-                format!("{rmse:.5}")
+                    .fold(f64::INFINITY, f64::min)
             })
             .collect();
         print!(
             "| {} | {:.5} | {} |",
             scene.name,
             scene.reference_noise,
-            lowest.join(" / ")
+            joined(lowest.iter().map(|rmse| format!("{rmse:.5}")).collect())
         );
         for splits in &scene.sweep {
-            let cells: Vec<String> = splits
+            let cells = splits
                 .iter()
                 .map(|split| format!("{:.5} ({:.5})", split.rmse, split.sd))
                 .collect();
-            print!(" {} |", cells.join(" / "));
+            let ratios = splits
+                .iter()
+                .zip(&lowest)
+                .map(|(split, lowest)| format!("{:.3}", split.sd.hypot(scene.reference_noise) / lowest))
+                .collect();
+            print!(" {} | {} |", joined(cells), joined(ratios));
         }
         println!();
     }
