@@ -337,7 +337,8 @@ fn closest_hit_renders_the_glsl_colours(closest_hit: ClosestHit, label: &str) {
 type ColourView = (&'static str, Camera, Vec2, u32);
 
 /// The views the colour comparisons render, per scene: on the gallery the ground view, through the
-/// pixel centres and through points off them ([`PIXEL_OFFSET`]), the mirror close-up and the torus
+/// pixel centres, through points off them ([`PIXEL_OFFSET`]) and through each pixel's own point
+/// ([`FLAG_PIXEL_JITTER`]), the mirror close-up and the torus
 /// close-up; on the materials scene the glass close-up, the glass from inside ([`inside_glass`],
 /// where rays reflect totally), and both spheres with the rough mirror reflecting about the
 /// shading normal and about GGX-drawn normals ([`FLAG_GLOSSY_LOBE`]).
