@@ -92,11 +92,14 @@ uvec4 rt_hash(uvec4 v) {
 
 // The offset of `pixel`'s sample from the pixel's centre, in [-0.5, 0.5)^2: pc.pixel_offset, or with
 // RT_FLAG_PIXEL_JITTER the pixel's own, from the two words of its hash that rt_random leaves unused
-// (so a path's numbers and its sample's position are drawn apart).
+// (so a path's numbers and its sample's position are drawn apart). The flag is the frame's, so the
+// branch is uniform, and a frame without it hashes nothing.
 vec2 rt_sample_offset(uvec2 pixel) {
+    if ((pc.flags & RT_FLAG_PIXEL_JITTER) == 0u) {
+        return pc.pixel_offset;
+    }
     uvec4 words = rt_hash(uvec4(pixel, floatBitsToUint(pc.pixel_offset.x), floatBitsToUint(pc.pixel_offset.y)));
-    vec2 own = vec2(words.zw >> 8u) * (1.0 / 16777216.0) - 0.5;
-    return (pc.flags & RT_FLAG_PIXEL_JITTER) != 0u ? own : pc.pixel_offset;
+    return vec2(words.zw >> 8u) * (1.0 / 16777216.0) - 0.5;
 }
 
 // Unit direction of the primary ray through `pixel`, offset from its centre by rt_sample_offset
