@@ -576,7 +576,7 @@ fn print_sweep(all: &[SceneResult], biases: &[f32]) {
         println!(
             "| {bias:+.2} | {} | {} |",
             cells(|_, split| split.rmse),
-            cells(|scene, split| split.sd.hypot(scene.reference_noise))
+            cells(|scene, split| split.unbiased_rmse(scene.reference_noise))
         );
     }
     let best = (0..biases.len())
@@ -624,7 +624,7 @@ fn print_sweep_scenes(all: &[SceneResult], biases: &[f32]) {
             let ratios = splits
                 .iter()
                 .zip(&lowest)
-                .map(|(split, lowest)| format!("{:.3}", split.sd.hypot(scene.reference_noise) / lowest))
+                .map(|(split, lowest)| format!("{:.3}", split.unbiased_rmse(scene.reference_noise) / lowest))
                 .collect();
             print!(" {} | {} |", joined(cells), joined(ratios));
         }

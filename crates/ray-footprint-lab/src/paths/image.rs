@@ -454,6 +454,15 @@ pub struct ErrorSplit {
     pub sd: f64,
 }
 
+impl ErrorSplit {
+    /// The RMSE an unbiased render with this noise would have against a reference of noise
+    /// `reference_noise`: `sqrt(sd^2 + reference_noise^2)` (every RMSE holds the reference's
+    /// variance). Of the render that reads the texture's mean past the first hit, the floor.
+    pub fn unbiased_rmse(&self, reference_noise: f64) -> f64 {
+        self.sd.hypot(reference_noise)
+    }
+}
+
 /// The split of the module doc for renders `a` and `b` against `reference`, whose own variance
 /// is `reference_variance`.
 pub fn error_split(a: &[DVec3], b: &[DVec3], reference: &[DVec3], reference_variance: f64) -> ErrorSplit {
@@ -649,7 +658,7 @@ pub fn noise_floor_table(all: &[SceneErrors], samples: &[usize]) -> String {
         String::from("| lowest shipped rule: RMSE / mip 0's, mean over the scenes |"),
         String::from("| floor / the scene's lowest shipped RMSE: mean (smallest) |"),
     ];
-    let floor_of = |e: &SceneErrors, c: usize| e.errors[floor][c].sd.hypot(e.reference_noise);
+    let floor_of = |e: &SceneErrors, c: usize| e.errors[floor][c].unbiased_rmse(e.reference_noise);
     for c in 0..samples.len() {
         let floor_over_mip0 = all
             .iter()
