@@ -31,14 +31,22 @@
 //! (`path_cone`'s frame at least 5% faster than `path_mip0`'s, JCGT 2021 reporting about 10% from
 //! cone LOD in a GPU path tracer) is met or MISSED where the spreads allow, as the others.
 //!
+//! `--biases B,B,..` also times `path_bias` at each of those level-of-detail biases (mip levels
+//! added past the first hit, `RtPushConstants::lod_bias`), interleaved with the modes. At -20 every
+//! lookup past the first hit reads level 0, at +20 the last level, with the same cone computed at
+//! every vertex: the difference of the two frames is what the lookups past the first hit cost
+//! between their finest and their coarsest level, the most that any rule's choice of level there
+//! can save; the bench prints it beside the path goal's share of `path_mip0`'s frame.
+//!
 //! `cargo bench -p ray-footprint-lab --bench mode_costs [-- --width N --height N
-//! --samples-per-axis N --rounds N --frames N --scene NAME --texture-size N --modes LIST --csv FILE]`
+//! --samples-per-axis N --rounds N --frames N --scene NAME --texture-size N --modes LIST --biases LIST
+//! --csv FILE]`
 
 use ray_footprint::wireframe::WireframeSettings;
-use ray_footprint_lab::cli::{command_options, count_at_least, options_or_exit, positive_count};
+use ray_footprint_lab::cli::{command_options, count_at_least, lod_biases, options_or_exit, positive_count};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::RtPushConstants;
-use ray_footprint_lab::rt::{enlarged, open_device, Error, Mode, Renderer, TEXTURE_SIZE};
+use ray_footprint_lab::rt::{enlarged, open_device, Error, Mode, Renderer, Timed, TEXTURE_SIZE};
 use ray_footprint_lab::timing::{self, gpu_clocks, verdict, warm_up, Spread, Verdict};
 use shader_proptest::spirv::{self, Statistics};
 use std::fmt::Write as _;
@@ -63,6 +71,8 @@ struct Options {
     csv: Option<String>,
     texture_size: Option<u32>,
     modes: Vec<Mode>,
+    /// The biases `path_bias` is also timed at, in mip levels (none by default).
+    biases: Vec<f32>,
 }
 
 /// The defaults on a GPU and on lavapipe (a CPU implementation: a smoke run), and the most
@@ -89,7 +99,8 @@ const LAVAPIPE_DEFAULTS: Defaults = Defaults {
 };
 
 const USAGE: &str = "usage: mode_costs [--width N --height N] [--samples-per-axis N] [--rounds N (>= 8)] \
-                     [--frames N] [--scene NAME] [--texture-size N] [--modes a,b,...] [--csv FILE]";
+                     [--frames N] [--scene NAME] [--texture-size N] [--modes a,b,...] [--biases B,B,...] \
+                     [--csv FILE]";
 
 fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut options = Options {
@@ -101,6 +112,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         csv: None,
         texture_size: None,
         modes: Mode::ALL.to_vec(),
+        biases: Vec::new(),
     };
     let (mut width, mut height) = (None, None);
     for (flag, value) in command_options(args)? {
@@ -121,6 +133,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
             "--csv" => options.csv = Some(value),
             "--texture-size" => options.texture_size = Some(texture_size(&value)?),
             "--modes" => options.modes = modes(&value)?,
+            "--biases" => options.biases = lod_biases(&flag, &value)?,
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
@@ -172,11 +185,12 @@ impl From<Error> for Failure {
     }
 }
 
-/// What a run is: the texture size, the modes, the image, the samples, the frames per round, and
-/// whether verdicts are given.
+/// What a run is: the texture size, the modes and `path_bias`' biases, the image, the samples, the
+/// frames per round, and whether verdicts are given.
 struct Run {
     texture_size: Option<u32>,
     modes: Vec<Mode>,
+    biases: Vec<f32>,
     size: (u32, u32),
     samples_per_axis: u32,
     frames: usize,
@@ -188,10 +202,22 @@ struct Run {
 /// One mode's figures in one scene.
 struct Row {
     mode: Mode,
+    /// The level-of-detail bias of a row of `--biases` (`path_bias` at that bias).
+    lod_bias: Option<f32>,
     /// Round medians of the frame time, in ms.
     time: Spread,
     payload_bytes: u32,
     closest_hit: Statistics,
+}
+
+impl Row {
+    /// The mode's name, with the bias of a row of `--biases`.
+    fn label(&self) -> String {
+        match self.lod_bias {
+            Some(bias) => format!("{} at {bias:+.2}", self.mode),
+            None => self.mode.to_string(),
+        }
+    }
 }
 
 /// The push constants of each sub-pixel sample of a frame of `scene`: an N x N grid of offsets,
@@ -233,16 +259,40 @@ fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Res
         .copied()
         .map(|mode| renderer.colour_pipeline(mode))
         .collect::<Result<Vec<_>, _>>()?;
+    let biased = if run.biases.is_empty() {
+        None
+    } else {
+        Some(renderer.colour_pipeline(Mode::PathBias)?)
+    };
     let samples = samples(&renderer, scene, run);
+    let biased_samples: Vec<Vec<RtPushConstants>> = run
+        .biases
+        .iter()
+        .map(|&lod_bias| {
+            samples
+                .iter()
+                .map(|&push| RtPushConstants { lod_bias, ..push })
+                .collect()
+        })
+        .collect();
+    let mut timed: Vec<Timed<'_, '_, '_>> = pipelines
+        .iter()
+        .map(|pipeline| (pipeline, &samples[..]))
+        .collect();
+    let mut lod_biases: Vec<Option<f32>> = vec![None; pipelines.len()];
+    if let Some(biased) = &biased {
+        timed.extend(biased_samples.iter().map(|samples| (biased, &samples[..])));
+        lod_biases.extend(run.biases.iter().copied().map(Some));
+    }
     let uniforms = scene.camera.uniforms(run.size, wireframe_settings(scene));
     let warm = warm_up(run.max_warm_up_rounds, || {
         renderer
-            .time_colour_round(&pipelines, &samples, &uniforms, (run.frames, 0))
+            .time_colour_round(&timed, &uniforms, (run.frames, 0))
             .map(|medians| timing::median(&medians))
     })?;
-    let mut round_medians = vec![Vec::with_capacity(run.rounds); pipelines.len()];
+    let mut round_medians = vec![Vec::with_capacity(run.rounds); timed.len()];
     for number in 0..run.rounds {
-        let medians = renderer.time_colour_round(&pipelines, &samples, &uniforms, (run.frames, number))?;
+        let medians = renderer.time_colour_round(&timed, &uniforms, (run.frames, number))?;
         for (mode_medians, median) in round_medians.iter_mut().zip(medians) {
             mode_medians.push(median);
         }
@@ -259,14 +309,16 @@ fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Res
             format!(" (NOT settled within 2% after {} rounds)", run.max_warm_up_rounds)
         }
     );
-    let rows = pipelines
+    let rows = timed
         .iter()
         .zip(&round_medians)
-        .map(|(pipeline, medians)| {
+        .zip(lod_biases)
+        .map(|((&(pipeline, _), medians), lod_bias)| {
             let optimized =
                 spirv::optimize(pipeline.closest_hit_spirv()).map_err(|e| Failure::Error(e.to_string()))?;
             Ok(Row {
                 mode: pipeline.mode(),
+                lod_bias,
                 time: Spread::of(medians),
                 payload_bytes: pipeline.payload_bytes(),
                 closest_hit: Statistics::of(&optimized).map_err(|e| Failure::Error(e.to_string()))?,
@@ -283,7 +335,7 @@ fn verdict_text(row: &Row, baseline: &Spread, run: &Run) -> String {
     if !run.verdicts {
         return String::from("no verdict (lavapipe)");
     }
-    if row.mode == Mode::Mip0 {
+    if row.mode == Mode::Mip0 && row.lod_bias.is_none() {
         return String::from("baseline");
     }
     let percent = 100.0 * (row.time.median / baseline.median - 1.0);
@@ -303,7 +355,7 @@ fn print_table(rows: &[Row], run: &Run) {
     println!("| --- | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: |");
     for row in rows {
         let added = row.time.minus(&baseline);
-        let added = if row.mode == Mode::Mip0 {
+        let added = if row.mode == Mode::Mip0 && row.lod_bias.is_none() {
             String::from("-")
         } else {
             format!("{:+.3} ({:+.3} to {:+.3})", added.median, added.min, added.max)
@@ -311,7 +363,7 @@ fn print_table(rows: &[Row], run: &Run) {
         let hit = &row.closest_hit;
         println!(
             "| {} | {:.3} | {:.3}-{:.3} | {:.3} | {added} | {} | {} | {} | {}+{} | {} |",
-            row.mode,
+            row.label(),
             row.time.median,
             row.time.min,
             row.time.max,
@@ -332,7 +384,11 @@ fn print_goals(rows: &[Row], run: &Run) {
         return;
     }
     print_path_goal(rows);
-    let time = |mode: Mode| rows.iter().find(|row| row.mode == mode).map(|row| row.time);
+    let time = |mode: Mode| {
+        rows.iter()
+            .find(|row| row.mode == mode && row.lod_bias.is_none())
+            .map(|row| row.time)
+    };
     let (Some(mip0), Some(cone), Some(diff)) = (time(Mode::Mip0), time(Mode::Cone), time(Mode::RayDiff))
     else {
         return;
@@ -381,7 +437,11 @@ fn print_goals(rows: &[Row], run: &Run) {
 /// than `path_mip0`'s, met where the whole spread of the time saved is above it; and every other
 /// path mode's frame against `path_mip0`'s.
 fn print_path_goal(rows: &[Row]) {
-    let time = |mode: Mode| rows.iter().find(|row| row.mode == mode).map(|row| row.time);
+    let time = |mode: Mode| {
+        rows.iter()
+            .find(|row| row.mode == mode && row.lod_bias.is_none())
+            .map(|row| row.time)
+    };
     let Some(mip0) = time(Mode::PathMip0) else {
         return;
     };
@@ -392,13 +452,14 @@ fn print_path_goal(rows: &[Row]) {
         let added = row.time.minus(&mip0);
         println!(
             "{} against path_mip0: {:+.1}% ({:+.3} ms, {:+.3} to {:+.3})",
-            row.mode,
+            row.label(),
             100.0 * added.median / mip0.median,
             added.median,
             added.min,
             added.max
         );
     }
+    print_lookup_cost(rows, &mip0);
     let Some(cone) = time(Mode::PathCone) else {
         return;
     };
@@ -412,6 +473,29 @@ fn print_path_goal(rows: &[Row]) {
         added.median,
         added.min,
         added.max
+    );
+}
+
+/// Where `--biases` timed two or more biases: the frame of `path_bias` at the lowest bias less its
+/// frame at the highest, as a share of `path_mip0`'s frame (`mip0`), beside the path goal's share.
+/// At -20 and +20 that is what the lookups past the first hit cost at level 0 over the last level.
+fn print_lookup_cost(rows: &[Row], mip0: &Spread) {
+    let mut biased: Vec<&Row> = rows.iter().filter(|row| row.lod_bias.is_some()).collect();
+    biased.sort_by(|a, b| a.lod_bias.partial_cmp(&b.lod_bias).expect("finite biases"));
+    let [finest, .., coarsest] = biased[..] else {
+        return;
+    };
+    let saved = finest.time.minus(&coarsest.time);
+    println!(
+        "{} less {}: {:+.1}% of path_mip0's frame ({:+.3} ms, {:+.3} to {:+.3}); the path goal's {:.0}% is {:.3} ms",
+        finest.label(),
+        coarsest.label(),
+        100.0 * saved.median / mip0.median,
+        saved.median,
+        saved.min,
+        saved.max,
+        100.0 * PATH_GOAL,
+        PATH_GOAL * mip0.median
     );
 }
 
@@ -440,7 +524,7 @@ fn csv(scenes: &[(&str, Vec<Row>)], run: &Run) -> String {
             let _ = writeln!(
                 text,
                 "{scene},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{}",
-                row.mode,
+                row.label(),
                 row.time.median,
                 row.time.min,
                 row.time.max,
@@ -465,6 +549,7 @@ fn run(options: &Options) -> Result<(), Failure> {
     let run = Run {
         texture_size: options.texture_size,
         modes: options.modes.clone(),
+        biases: options.biases.clone(),
         size: options.size.unwrap_or(defaults.size),
         samples_per_axis: options.samples_per_axis.unwrap_or(defaults.samples_per_axis),
         frames: options.frames.unwrap_or(defaults.frames),

@@ -44,13 +44,14 @@
 use glam::DVec3;
 use ray_footprint::wireframe::WireframeSettings;
 use ray_footprint_lab::cli::{
-    command_options, example_command, image_size, options_or_exit, positive_count, sample_spread, seed,
+    command_options, example_command, image_size, lod_biases, options_or_exit, positive_count, sample_spread,
+    seed,
 };
 use ray_footprint_lab::figure::{grid, write_png, Panel, RgbaImage};
 use ray_footprint_lab::paths::image::{error_split, mean_squared_difference, ErrorSplit};
 use ray_footprint_lab::quality::{LabScene, Measure};
 use ray_footprint_lab::rt::abi::{RtPushConstants, RtUniforms, FLAG_PIXEL_JITTER};
-use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer, PATH_LOD_BIAS};
+use ray_footprint_lab::rt::{enlarged, open_device, ColourPipeline, Mode, Renderer, Timed, PATH_LOD_BIAS};
 use ray_footprint_lab::timing::{gpu_clocks, median, warm_up, Spread};
 use std::path::PathBuf;
 use std::time::Instant;
@@ -129,7 +130,7 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
                 options.texture_size = Some(size as u32);
             }
             "--crops" => options.crops = Some(PathBuf::from(value)),
-            "--biases" => options.biases = biases(&flag, &value)?,
+            "--biases" => options.biases = lod_biases(&flag, &value)?,
             "--spread" => options.sample_spread = sample_spread(&flag, &value)?,
             "--offsets" => options.pixel_offsets = pixel_offsets(&flag, &value)?,
             "--scene" if value == "all" => options.scenes = texture_scenes(LabScene::all()),
@@ -146,19 +147,6 @@ fn parse_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         }
     }
     Ok(options)
-}
-
-/// The comma-separated finite numbers of `value`, or the message that names the option.
-fn biases(flag: &str, value: &str) -> Result<Vec<f32>, String> {
-    value
-        .split(',')
-        .map(|item| match item.trim().parse::<f32>() {
-            Ok(bias) if bias.is_finite() => Ok(bias),
-            _ => Err(format!(
-                "{flag} {value}: '{item}' is not a finite number of mip levels"
-            )),
-        })
-        .collect()
 }
 
 /// `value` of the option `flag` (`--offsets`) as whether each pixel samples an offset of its own.
@@ -237,9 +225,10 @@ fn frame_times(
     uniforms: &RtUniforms,
 ) -> Result<Vec<Spread>, String> {
     let samples = std::slice::from_ref(base);
+    let timed: Vec<Timed<'_, '_, '_>> = pipelines.iter().map(|pipeline| (pipeline, samples)).collect();
     let round = |number: usize| {
         renderer
-            .time_colour_round(pipelines, samples, uniforms, (FRAMES_PER_ROUND, number))
+            .time_colour_round(&timed, uniforms, (FRAMES_PER_ROUND, number))
             .map_err(|error| error.to_string())
     };
     warm_up(MAX_WARM_UP_ROUNDS, || round(0).map(|medians| median(&medians)))?;

@@ -1,7 +1,7 @@
 //! What the lab's command-line programs (the `verify`, `gallery`, `quality`, `cost_quality`,
 //! `path_footprint` and `path_image` examples and the benches) share: answering `--help`,
-//! reporting a bad option, reading a command line's flags, a positive count, a seed and an image
-//! size, and the command that reruns an example.
+//! reporting a bad option, reading a command line's flags, a positive count, level-of-detail
+//! biases, a seed and an image size, and the command that reruns an example.
 
 use std::process::exit;
 
@@ -64,6 +64,21 @@ pub fn sample_spread(flag: &str, value: &str) -> Result<bool, String> {
     }
 }
 
+/// `value` of the option `flag` (`--biases`) as its comma-separated level-of-detail biases, each a
+/// finite number of mip levels, or the message that names the option and the first item that is
+/// not.
+pub fn lod_biases(flag: &str, value: &str) -> Result<Vec<f32>, String> {
+    value
+        .split(',')
+        .map(|item| match item.trim().parse::<f32>() {
+            Ok(bias) if bias.is_finite() => Ok(bias),
+            _ => Err(format!(
+                "{flag} {value}: '{item}' is not a finite number of mip levels"
+            )),
+        })
+        .collect()
+}
+
 /// `value` of the option `flag` as a seed (any `u64`), or the message that names both.
 pub fn seed(flag: &str, value: &str) -> Result<u64, String> {
     value
@@ -97,12 +112,21 @@ mod tests {
     use super::*;
 
     #[test]
-    fn image_sizes_and_seeds_are_read_or_named() {
+    fn image_sizes_biases_and_seeds_are_read_or_named() {
         assert_eq!(image_size("--size", "640x360"), Ok((640, 360)));
         for bad in ["640", "0x360", "640x", "x360", "-1x2"] {
             assert_eq!(
                 image_size("--size", bad),
                 Err(format!("--size must be WIDTHxHEIGHT, got '{bad}'"))
+            );
+        }
+        assert_eq!(lod_biases("--biases", "-20, 0.5,20"), Ok(vec![-20.0, 0.5, 20.0]));
+        for (bad, item) in [("1,x", "x"), ("inf", "inf"), ("1,,2", "")] {
+            assert_eq!(
+                lod_biases("--biases", bad),
+                Err(format!(
+                    "--biases {bad}: '{item}' is not a finite number of mip levels"
+                ))
             );
         }
         assert_eq!(seed("--seed", "7"), Ok(7));

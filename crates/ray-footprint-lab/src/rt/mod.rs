@@ -67,7 +67,7 @@ mod texture;
 
 pub use mode::{Mode, Payload, PATH_LOD_BIAS};
 pub use pipeline::{ray_query_source, ClosestHit, SHADER_DIR};
-pub use renderer::{open_device, ColourPipeline, Frame, Renderer, DEVICE_REQUEST};
+pub use renderer::{open_device, ColourPipeline, Frame, Renderer, Timed, DEVICE_REQUEST};
 pub use scene::{
     ground_plane, hyperbolic_paraboloid, room, torus, uv_sphere, Camera, Diagonals, Material, Mesh, Scene,
     Vertex, GLASS_CENTRE, GLASS_INDEX, GLASS_RADIUS, MATERIAL_GLASS, MATERIAL_MIRROR, MATERIAL_TEXTURED,

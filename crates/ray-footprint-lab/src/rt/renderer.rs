@@ -17,7 +17,7 @@ use std::time::{Duration, Instant};
 
 mod colour;
 
-pub use colour::ColourPipeline;
+pub use colour::{ColourPipeline, Timed};
 
 /// What the renderer asks of a device: acceleration structures and ray-tracing pipelines, and
 /// where the device has them, ray queries (the WGSL path) and anisotropic filtering.

@@ -16,6 +16,10 @@ use shader_proptest::{barrier_shader_writes, barrier_shader_writes_to_host, Owne
 use std::path::Path;
 use std::time::Duration;
 
+/// What one timed run of frames traces: a pipeline, and the push constants of each sub-pixel
+/// sample of a frame.
+pub type Timed<'a, 'r, 'g> = (&'a ColourPipeline<'r, 'g>, &'a [RtPushConstants]);
+
 /// One mode's colour-only ray-tracing pipeline over a [`Renderer`]'s scene.
 pub struct ColourPipeline<'r, 'g> {
     renderer: &'r Renderer<'g>,
@@ -99,22 +103,22 @@ impl ColourPipeline<'_, '_> {
 }
 
 impl<'g> Renderer<'g> {
-    /// Times frames of colour-only pipelines in one submission: for each `(pipeline, frames)` of
-    /// `runs` in order, `frames` frames, each tracing every sample of `samples` (the push constants
-    /// of one sub-pixel sample each, all of one image size; their `mode` is not read), with a
-    /// timestamp before and after each frame and nothing between two frames but a barrier (each
-    /// trace writes the same colours, so each waits for the one before). Returns each run's frame
-    /// times. The colours of a sample overwrite the last one's: the timing leaves out the sum a
+    /// Times frames of colour-only pipelines in one submission: for each `((pipeline, samples),
+    /// frames)` of `runs` in order, `frames` frames, each tracing every sample of `samples` (the
+    /// push constants of one sub-pixel sample each, all of one image size in every run; their
+    /// `mode` is not read), with a timestamp before and after each frame and nothing between two
+    /// frames but a barrier (each trace writes the same colours, so each waits for the one
+    /// before). Returns each run's frame times. The colours of a sample overwrite the last one's: the timing leaves out the sum a
     /// renderer would keep (a read and a write per pixel per sample). Fails with
     /// [`Error::NotSupported`] on a queue without timestamps.
     pub fn time_colour_frames(
         &self,
-        runs: &[(&ColourPipeline<'_, 'g>, usize)],
-        samples: &[RtPushConstants],
+        runs: &[(Timed<'_, '_, 'g>, usize)],
         uniforms: &RtUniforms,
     ) -> Result<Vec<Vec<Duration>>, Error> {
-        let first = samples
-            .first()
+        let first = runs
+            .iter()
+            .find_map(|((_, samples), _)| samples.first())
             .ok_or_else(|| Error::NotSupported(String::from("a frame needs a sample")))?;
         let timestamps = Timestamps::of(self.owner.gpu).map_err(Error::NotSupported)?;
         let mut target = self.target(first, uniforms, Records::StandIn)?;
@@ -124,7 +128,7 @@ impl<'g> Renderer<'g> {
             // SAFETY: recording into a command buffer in the recording state; the pool is alive.
             unsafe { device.cmd_reset_query_pool(command_buffer, pool, 0, queries.max(2) as u32) };
             let mut query = 0;
-            for &(pipeline, frames) in runs {
+            for &((pipeline, samples), frames) in runs {
                 for _ in 0..frames {
                     // SAFETY: as above; each query was reset at the start.
                     unsafe { write_timestamp(device, command_buffer, pool, query) };
@@ -150,21 +154,20 @@ impl<'g> Renderer<'g> {
 }
 
 impl<'g> Renderer<'g> {
-    /// Round `round` of an interleaved timing: `frames` frames of every pipeline of `pipelines`
-    /// in the round's order ([`round_order`]: reversed every other round), as
-    /// [`Renderer::time_colour_frames`] times them; each pipeline's median frame time in ms, in
-    /// the order of `pipelines`.
+    /// Round `round` of an interleaved timing: `frames` frames of every entry of `timed` (a
+    /// pipeline and its samples) in the round's order ([`round_order`]: reversed every other
+    /// round), as [`Renderer::time_colour_frames`] times them; each entry's median frame time in
+    /// ms, in the order of `timed`.
     pub fn time_colour_round(
         &self,
-        pipelines: &[ColourPipeline<'_, 'g>],
-        samples: &[RtPushConstants],
+        timed: &[Timed<'_, '_, 'g>],
         uniforms: &RtUniforms,
         (frames, round): (usize, usize),
     ) -> Result<Vec<f64>, Error> {
-        let order = round_order(pipelines.len(), round);
-        let runs: Vec<_> = order.iter().map(|&index| (&pipelines[index], frames)).collect();
-        let times = self.time_colour_frames(&runs, samples, uniforms)?;
-        let mut medians = vec![0.0; pipelines.len()];
+        let order = round_order(timed.len(), round);
+        let runs: Vec<_> = order.iter().map(|&index| (timed[index], frames)).collect();
+        let times = self.time_colour_frames(&runs, uniforms)?;
+        let mut medians = vec![0.0; timed.len()];
         for (&index, run_times) in order.iter().zip(&times) {
             let ms: Vec<f64> = run_times.iter().map(|t| t.as_secs_f64() * 1e3).collect();
             medians[index] = median(&ms);
