@@ -238,6 +238,20 @@ fn samples(renderer: &Renderer<'_>, scene: &LabScene, run: &Run) -> Vec<RtPushCo
         .collect()
 }
 
+/// `samples` with each of `biases` in turn as their level-of-detail bias: `path_bias`' samples at
+/// each bias of `--biases`.
+fn biased_samples(samples: &[RtPushConstants], biases: &[f32]) -> Vec<Vec<RtPushConstants>> {
+    biases
+        .iter()
+        .map(|&lod_bias| {
+            samples
+                .iter()
+                .map(|&push| RtPushConstants { lod_bias, ..push })
+                .collect()
+        })
+        .collect()
+}
+
 /// The wireframe settings of `scene`'s uniforms: its preset where it measures the wireframe.
 fn wireframe_settings(scene: &LabScene) -> WireframeSettings {
     match scene.measure {
@@ -265,24 +279,15 @@ fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Res
         Some(renderer.colour_pipeline(Mode::PathBias)?)
     };
     let samples = samples(&renderer, scene, run);
-    let biased_samples: Vec<Vec<RtPushConstants>> = run
-        .biases
-        .iter()
-        .map(|&lod_bias| {
-            samples
-                .iter()
-                .map(|&push| RtPushConstants { lod_bias, ..push })
-                .collect()
-        })
-        .collect();
+    let biased_samples = biased_samples(&samples, &run.biases);
     let mut timed: Vec<Timed<'_, '_, '_>> = pipelines
         .iter()
         .map(|pipeline| (pipeline, &samples[..]))
         .collect();
-    let mut lod_biases: Vec<Option<f32>> = vec![None; pipelines.len()];
+    let mut row_biases: Vec<Option<f32>> = vec![None; pipelines.len()];
     if let Some(biased) = &biased {
         timed.extend(biased_samples.iter().map(|samples| (biased, &samples[..])));
-        lod_biases.extend(run.biases.iter().copied().map(Some));
+        row_biases.extend(run.biases.iter().copied().map(Some));
     }
     let uniforms = scene.camera.uniforms(run.size, wireframe_settings(scene));
     let warm = warm_up(run.max_warm_up_rounds, || {
@@ -312,7 +317,7 @@ fn measure_scene(gpu: &shader_proptest::Gpu, scene: &LabScene, run: &Run) -> Res
     let rows = timed
         .iter()
         .zip(&round_medians)
-        .zip(lod_biases)
+        .zip(row_biases)
         .map(|((&(pipeline, _), medians), lod_bias)| {
             let optimized =
                 spirv::optimize(pipeline.closest_hit_spirv()).map_err(|e| Failure::Error(e.to_string()))?;
