@@ -821,9 +821,6 @@ mod tests {
         assert!(vertices > 64, "only {vertices} vertices");
     }
 
-    /// Every measured scene lets light reach the camera: a small render of each, white albedo, has
-    /// a mean above 0.05 (a scene closed by two parallel infinite planes renders black, and its
-    /// image error would be 0 for every rule).
     /// The floor looks the first vertex up at the width every rule gives it, and every later
     /// vertex at the texture's last level, its mean, however grazing the hit.
     #[test]
@@ -865,6 +862,9 @@ mod tests {
         assert!(later > 100, "only {later} vertices past the first");
     }
 
+    /// Every measured scene lets light reach the camera: a small render of each, white albedo, has
+    /// a mean above 0.05 (a scene closed by two parallel infinite planes renders black, and its
+    /// image error would be 0 for every rule).
     #[test]
     fn every_scene_is_lit() {
         for scene in crate::paths::scenes() {
