@@ -211,6 +211,11 @@ struct Row {
 }
 
 impl Row {
+    /// Whether the row times `mode` itself, not `path_bias` at a bias of `--biases`.
+    fn is_mode(&self, mode: Mode) -> bool {
+        self.mode == mode && self.lod_bias.is_none()
+    }
+
     /// The mode's name, with the bias of a row of `--biases`.
     fn label(&self) -> String {
         match self.lod_bias {
@@ -218,6 +223,11 @@ impl Row {
             None => self.mode.to_string(),
         }
     }
+}
+
+/// The frame time of `mode`'s own row of `rows`, where it was timed.
+fn mode_time(rows: &[Row], mode: Mode) -> Option<Spread> {
+    rows.iter().find(|row| row.is_mode(mode)).map(|row| row.time)
 }
 
 /// The push constants of each sub-pixel sample of a frame of `scene`: an N x N grid of offsets,
@@ -340,7 +350,7 @@ fn verdict_text(row: &Row, baseline: &Spread, run: &Run) -> String {
     if !run.verdicts {
         return String::from("no verdict (lavapipe)");
     }
-    if row.mode == Mode::Mip0 && row.lod_bias.is_none() {
+    if row.is_mode(Mode::Mip0) {
         return String::from("baseline");
     }
     let percent = 100.0 * (row.time.median / baseline.median - 1.0);
@@ -360,7 +370,7 @@ fn print_table(rows: &[Row], run: &Run) {
     println!("| --- | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: |");
     for row in rows {
         let added = row.time.minus(&baseline);
-        let added = if row.mode == Mode::Mip0 && row.lod_bias.is_none() {
+        let added = if row.is_mode(Mode::Mip0) {
             String::from("-")
         } else {
             format!("{:+.3} ({:+.3} to {:+.3})", added.median, added.min, added.max)
@@ -389,11 +399,7 @@ fn print_goals(rows: &[Row], run: &Run) {
         return;
     }
     print_path_goal(rows);
-    let time = |mode: Mode| {
-        rows.iter()
-            .find(|row| row.mode == mode && row.lod_bias.is_none())
-            .map(|row| row.time)
-    };
+    let time = |mode: Mode| mode_time(rows, mode);
     let (Some(mip0), Some(cone), Some(diff)) = (time(Mode::Mip0), time(Mode::Cone), time(Mode::RayDiff))
     else {
         return;
@@ -442,11 +448,7 @@ fn print_goals(rows: &[Row], run: &Run) {
 /// than `path_mip0`'s, met where the whole spread of the time saved is above it; and every other
 /// path mode's frame against `path_mip0`'s.
 fn print_path_goal(rows: &[Row]) {
-    let time = |mode: Mode| {
-        rows.iter()
-            .find(|row| row.mode == mode && row.lod_bias.is_none())
-            .map(|row| row.time)
-    };
+    let time = |mode: Mode| mode_time(rows, mode);
     let Some(mip0) = time(Mode::PathMip0) else {
         return;
     };
